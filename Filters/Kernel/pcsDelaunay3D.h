@@ -1,0 +1,62 @@
+// Incremental 3D Delaunay tetrahedralization (private kernel). See vtkIncrementalDelaunay3D.h
+// for the algorithm and its references.
+#ifndef pcsDelaunay3D_h
+#define pcsDelaunay3D_h
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace pcs
+{
+class Delaunay3D
+{
+public:
+  /// Progress/abort callback: receives a fraction in [0, 1]; returning false aborts.
+  using ProgressFunction = std::function<bool(double)>;
+
+  /// The infinite vertex that closes the triangulation around its convex hull.
+  static constexpr int32_t Infinite = -1;
+
+  /// Tetrahedralize the points `ids` of `xyz` (packed x,y,z triples). The referenced points
+  /// must be finite and pairwise distinct (the caller merges duplicates). Returns false when
+  /// all points are coplanar (or fewer than 4) or when the progress callback aborted; the
+  /// triangulation is then empty.
+  bool Triangulate(const double* xyz, const std::vector<int32_t>& ids,
+    const ProgressFunction& progress = ProgressFunction());
+
+  /// Number of cells, finite and infinite.
+  int64_t GetNumberOfCells() const { return static_cast<int64_t>(this->Vertices.size() / 4); }
+
+  /// Vertex j (0..3) of cell c: a point id, or Infinite. Finite cells are positively oriented
+  /// (Orient3D(v0, v1, v2, v3) > 0). In an infinite cell, the finite facet seen from the
+  /// infinite vertex has the orientation of the finite cell facets: replacing Infinite by a
+  /// point beyond the hull gives a positively oriented tetrahedron.
+  int32_t Vertex(int64_t c, int j) const { return this->Vertices[4 * c + j]; }
+
+  /// Neighbour of cell c across the facet opposite vertex j.
+  int64_t Neighbor(int64_t c, int j) const { return this->Neighbors[4 * c + j] >> 2; }
+
+  /// Index, in the neighbour across facet j of c, of the vertex opposite that facet.
+  int MirrorIndex(int64_t c, int j) const { return this->Neighbors[4 * c + j] & 3; }
+
+  bool IsInfinite(int64_t c) const
+  {
+    const int32_t* v = &this->Vertices[4 * c];
+    return v[0] < 0 || v[1] < 0 || v[2] < 0 || v[3] < 0;
+  }
+
+  /// Packed arrays: 4 vertices per cell; 4 neighbour links per cell (4 * cell + mirror index).
+  const std::vector<int32_t>& GetVertices() const { return this->Vertices; }
+
+  /// Release the memory of the triangulation.
+  void Clear();
+
+private:
+  std::vector<int32_t> Vertices;
+  std::vector<uint32_t> Neighbors;
+  friend class Delaunay3DBuilder;
+};
+} // namespace pcs
+
+#endif

@@ -24,16 +24,150 @@
 #ifndef pcsPredicates_h
 #define pcsPredicates_h
 
+#include <cmath>
+
 namespace pcs
 {
 namespace predicates
 {
 
+/// Exact signs, called when the floating-point filter cannot decide.
+int Orient3DExact(const double* a, const double* b, const double* c, const double* d);
+int InSphereExact(
+  const double* a, const double* b, const double* c, const double* d, const double* e);
+int Orient2DExact(const double* a, const double* b, const double* c);
+int InCircleExact(const double* a, const double* b, const double* c, const double* d);
+
 /// Sign (-1, 0, +1) of det[a-d; b-d; c-d] (3D points).
-int Orient3D(const double* a, const double* b, const double* c, const double* d);
+inline int Orient3D(const double* a, const double* b, const double* c, const double* d)
+{
+  const double adx = a[0] - d[0], ady = a[1] - d[1], adz = a[2] - d[2];
+  const double bdx = b[0] - d[0], bdy = b[1] - d[1], bdz = b[2] - d[2];
+  const double cdx = c[0] - d[0], cdy = c[1] - d[1], cdz = c[2] - d[2];
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double det =
+    adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
+    (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
+    (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
+  // Shewchuk's o3derrboundA = (7 + 56 eps) eps with eps = 2^-53.
+  const double bound = 7.7715611723761027e-16 * permanent;
+  if (det > bound)
+  {
+    return 1;
+  }
+  if (-det > bound)
+  {
+    return -1;
+  }
+  return Orient3DExact(a, b, c, d);
+}
 
 /// Sign of the insphere determinant (may be 0 for cospherical points).
-int InSphere(const double* a, const double* b, const double* c, const double* d, const double* e);
+inline int InSphere(
+  const double* a, const double* b, const double* c, const double* d, const double* e)
+{
+  const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
+  const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
+  const double cex = c[0] - e[0], cey = c[1] - e[1], cez = c[2] - e[2];
+  const double dex = d[0] - e[0], dey = d[1] - e[1], dez = d[2] - e[2];
+  const double aexbey = aex * bey, bexaey = bex * aey;
+  const double bexcey = bex * cey, cexbey = cex * bey;
+  const double cexdey = cex * dey, dexcey = dex * cey;
+  const double dexaey = dex * aey, aexdey = aex * dey;
+  const double aexcey = aex * cey, cexaey = cex * aey;
+  const double bexdey = bex * dey, dexbey = dex * bey;
+  const double ab = aexbey - bexaey, bc = bexcey - cexbey, cd = cexdey - dexcey;
+  const double da = dexaey - aexdey, ac = aexcey - cexaey, bd = bexdey - dexbey;
+  const double abc = aez * bc - bez * ac + cez * ab;
+  const double bcd = bez * cd - cez * bd + dez * bc;
+  const double cda = cez * da + dez * ac + aez * cd;
+  const double dab = dez * ab + aez * bd + bez * da;
+  const double alift = aex * aex + aey * aey + aez * aez;
+  const double blift = bex * bex + bey * bey + bez * bez;
+  const double clift = cex * cex + cey * cey + cez * cez;
+  const double dlift = dex * dex + dey * dey + dez * dez;
+  const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+  const double aezp = std::fabs(aez), bezp = std::fabs(bez);
+  const double cezp = std::fabs(cez), dezp = std::fabs(dez);
+  const double aexbeyp = std::fabs(aexbey), bexaeyp = std::fabs(bexaey);
+  const double bexceyp = std::fabs(bexcey), cexbeyp = std::fabs(cexbey);
+  const double cexdeyp = std::fabs(cexdey), dexceyp = std::fabs(dexcey);
+  const double dexaeyp = std::fabs(dexaey), aexdeyp = std::fabs(aexdey);
+  const double aexceyp = std::fabs(aexcey), cexaeyp = std::fabs(cexaey);
+  const double bexdeyp = std::fabs(bexdey), dexbeyp = std::fabs(dexbey);
+  const double permanent =
+    ((cexdeyp + dexceyp) * bezp + (dexbeyp + bexdeyp) * cezp + (bexceyp + cexbeyp) * dezp) *
+      alift +
+    ((dexaeyp + aexdeyp) * cezp + (aexceyp + cexaeyp) * dezp + (cexdeyp + dexceyp) * aezp) *
+      blift +
+    ((aexbeyp + bexaeyp) * dezp + (bexdeyp + dexbeyp) * aezp + (dexaeyp + aexdeyp) * bezp) *
+      clift +
+    ((bexceyp + cexbeyp) * aezp + (cexaeyp + aexceyp) * bezp + (aexbeyp + bexaeyp) * cezp) *
+      dlift;
+  // Shewchuk's isperrboundA = (16 + 224 eps) eps.
+  const double bound = 1.7763568394002532e-15 * permanent;
+  if (det > bound)
+  {
+    return 1;
+  }
+  if (-det > bound)
+  {
+    return -1;
+  }
+  return InSphereExact(a, b, c, d, e);
+}
+
+/// Sign of det[a-c; b-c] (2D points, only x and y are read).
+inline int Orient2D(const double* a, const double* b, const double* c)
+{
+  const double detleft = (a[0] - c[0]) * (b[1] - c[1]);
+  const double detright = (a[1] - c[1]) * (b[0] - c[0]);
+  const double det = detleft - detright;
+  // Shewchuk's ccwerrboundA = (3 + 16 eps) eps.
+  const double bound = 3.3306690738754716e-16 * (std::fabs(detleft) + std::fabs(detright));
+  if (det > bound)
+  {
+    return 1;
+  }
+  if (-det > bound)
+  {
+    return -1;
+  }
+  return Orient2DExact(a, b, c);
+}
+
+/// Sign of the incircle determinant (2D points; may be 0 for cocircular points).
+inline int InCircle(const double* a, const double* b, const double* c, const double* d)
+{
+  const double adx = a[0] - d[0], ady = a[1] - d[1];
+  const double bdx = b[0] - d[0], bdy = b[1] - d[1];
+  const double cdx = c[0] - d[0], cdy = c[1] - d[1];
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  const double det =
+    alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+    (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+    (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+  // Shewchuk's iccerrboundA = (10 + 96 eps) eps.
+  const double bound = 1.1102230246251577e-15 * permanent;
+  if (det > bound)
+  {
+    return 1;
+  }
+  if (-det > bound)
+  {
+    return -1;
+  }
+  return InCircleExact(a, b, c, d);
+}
 
 /// Insphere sign with symbolic perturbation: never 0 unless two of the points coincide or
 /// a,b,c,d are coplanar. Same sign convention as InSphere.
@@ -41,16 +175,10 @@ int InSphereSoS(
   const double* a, const double* b, const double* c, const double* d, const double* e);
 
 /// Side of q with respect to the circumcircle of the coplanar points a,b,c (within their
-/// plane), with symbolic perturbation: +1 inside, -1 outside. `d` is any point not coplanar
-/// with a,b,c (it only fixes the reference orientation); q must be coplanar with a,b,c.
+/// plane), with the same symbolic perturbation: +1 inside, -1 outside. `d` is any point not
+/// coplanar with a,b,c (it only fixes the reference orientation); q must be coplanar with a,b,c.
 int CoplanarInCircleSoS(
   const double* a, const double* b, const double* c, const double* d, const double* q);
-
-/// Sign of det[a-c; b-c] (2D points, only x and y are read).
-int Orient2D(const double* a, const double* b, const double* c);
-
-/// Sign of the incircle determinant (2D points; may be 0 for cocircular points).
-int InCircle(const double* a, const double* b, const double* c, const double* d);
 
 /// Incircle sign with symbolic perturbation of the lifted coordinate (lexicographic (x, y)
 /// ranks): never 0 unless two points coincide or a,b,c are collinear.

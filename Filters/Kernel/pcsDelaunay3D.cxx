@@ -1,1 +1,542 @@
-// placeholder: implementation in progress
+// Incremental 3D Delaunay tetrahedralization (private kernel). See pcsDelaunay3D.h and the class
+// documentation of vtkIncrementalDelaunay3D for the algorithm and its references.
+//
+// Bowyer-Watson insertion (paper 000, section 2): locate the new point p by a stochastic
+// visibility walk, grow the cavity of the cells in conflict with p by a breadth-first search
+// over cell adjacency, and replace it by the star of p over the cavity boundary. The cavity of a
+// Delaunay triangulation is star-shaped from p, so every new cell (a boundary facet joined to p)
+// is positively oriented without any test.
+//
+// Conflicts (all decided exactly, with symbolic perturbation):
+// - finite cell (a,b,c,d): InSphereSoS(a,b,c,d,p) > 0;
+// - infinite cell whose finite facet is (a,b,c): p strictly beyond the hull facet abc, or p in
+//   its plane and inside its (perturbed) circumcircle.
+#include "pcsDelaunay3D.h"
+
+#include "pcsPredicates.h"
+#include "pcsSpatialSort.h"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <utility>
+
+namespace pcs
+{
+namespace
+{
+constexpr uint32_t NoCell = 0xffffffffu;
+
+struct BoundaryFacet
+{
+  int32_t Vertices[4]; // vertices of the new cell (p already in Slot)
+  uint32_t Outside;    // link to the cell outside the cavity: 4 * cell + mirror index
+  int Slot;            // position of p in the new cell
+};
+
+bool Collinear(const double* a, const double* b, const double* c)
+{
+  using predicates::Orient2D;
+  if (Orient2D(a, b, c) != 0)
+  {
+    return false;
+  }
+  const double ayz[2] = { a[1], a[2] }, byz[2] = { b[1], b[2] }, cyz[2] = { c[1], c[2] };
+  if (Orient2D(ayz, byz, cyz) != 0)
+  {
+    return false;
+  }
+  const double axz[2] = { a[0], a[2] }, bxz[2] = { b[0], b[2] }, cxz[2] = { c[0], c[2] };
+  return Orient2D(axz, bxz, cxz) == 0;
+}
+} // namespace
+
+//------------------------------------------------------------------------------------------------
+class Delaunay3DBuilder
+{
+public:
+  Delaunay3DBuilder(Delaunay3D& dt, const double* xyz)
+    : V(dt.Vertices)
+    , N(dt.Neighbors)
+    , XYZ(xyz)
+  {
+  }
+
+  bool Run(std::vector<int32_t> order, const Delaunay3D::ProgressFunction& progress);
+
+private:
+  const double* P(int32_t id) const { return this->XYZ + 3 * static_cast<int64_t>(id); }
+
+  uint32_t NewCell()
+  {
+    if (!this->Free.empty())
+    {
+      const uint32_t c = this->Free.back();
+      this->Free.pop_back();
+      return c;
+    }
+    const uint32_t c = static_cast<uint32_t>(this->V.size() / 4);
+    this->V.resize(this->V.size() + 4);
+    this->N.resize(this->N.size() + 4);
+    this->State.push_back(0);
+    return c;
+  }
+
+  static int InfiniteSlot(const int32_t* v)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      if (v[k] < 0)
+      {
+        return k;
+      }
+    }
+    return -1;
+  }
+
+  bool InConflict(uint32_t c, const double* p) const;
+  uint32_t Locate(const double* p);
+  void Insert(int32_t id);
+  bool Initialize(std::vector<int32_t>& order);
+  void Link(uint32_t cell, int slot, uint32_t other, int otherSlot)
+  {
+    this->N[4 * cell + slot] = (other << 2) | static_cast<uint32_t>(otherSlot);
+    this->N[4 * other + otherSlot] = (cell << 2) | static_cast<uint32_t>(slot);
+  }
+  void Compact();
+
+  // Open-addressing table from a cavity edge (two vertex ids) to the new cell and the slot of
+  // the facet (p + that edge) waiting for its second cell.
+  void LinkAroundEdge(int32_t a, int32_t b, uint32_t cell, int slot);
+  void ClearEdgeTable();
+
+  std::vector<int32_t>& V;
+  std::vector<uint32_t>& N;
+  const double* XYZ;
+  std::vector<uint8_t> State; // 0 untested, 1 in the cavity, 2 tested and outside
+  std::vector<uint32_t> Free;
+  std::vector<uint32_t> Cavity;
+  std::vector<uint32_t> Stack;
+  std::vector<uint32_t> Outside;
+  std::vector<BoundaryFacet> Boundary;
+  std::vector<uint64_t> EdgeKeys;
+  std::vector<uint32_t> EdgeValues;
+  std::vector<uint32_t> EdgeUsed;
+  uint32_t Hint = 0;
+  uint64_t Random = 0x9E3779B97F4A7C15ull;
+};
+
+//------------------------------------------------------------------------------------------------
+bool Delaunay3DBuilder::InConflict(uint32_t c, const double* p) const
+{
+  const int32_t* v = &this->V[4 * static_cast<size_t>(c)];
+  const int inf = InfiniteSlot(v);
+  if (inf < 0)
+  {
+    return predicates::InSphereSoS(this->P(v[0]), this->P(v[1]), this->P(v[2]), this->P(v[3]), p) >
+      0;
+  }
+  const double* w[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    w[k] = k == inf ? p : this->P(v[k]);
+  }
+  const int side = predicates::Orient3D(w[0], w[1], w[2], w[3]);
+  if (side != 0)
+  {
+    return side > 0;
+  }
+  // p lies in the plane of the hull facet: in conflict when inside its circumcircle. The vertex
+  // of the finite neighbour opposite the facet fixes the reference orientation.
+  const uint32_t link = this->N[4 * static_cast<size_t>(c) + inf];
+  w[inf] = this->P(this->V[4 * static_cast<size_t>(link >> 2) + (link & 3)]);
+  return predicates::InSphereSoS(w[0], w[1], w[2], w[3], p) *
+      predicates::Orient3D(w[0], w[1], w[2], w[3]) >
+    0;
+}
+
+//------------------------------------------------------------------------------------------------
+// Stochastic visibility walk. Returns a cell in conflict with p: the finite cell that contains
+// it (p inside a closed tetrahedron and not one of its vertices is strictly inside its
+// circumsphere), or the infinite cell behind a hull facet that p sees strictly.
+uint32_t Delaunay3DBuilder::Locate(const double* p)
+{
+  uint32_t c = this->Hint;
+  {
+    const int inf = InfiniteSlot(&this->V[4 * static_cast<size_t>(c)]);
+    if (inf >= 0)
+    {
+      c = this->N[4 * static_cast<size_t>(c) + inf] >> 2;
+    }
+  }
+  uint32_t previous = NoCell;
+  for (;;)
+  {
+    const int32_t* v = &this->V[4 * static_cast<size_t>(c)];
+    if (InfiniteSlot(v) >= 0)
+    {
+      return c;
+    }
+    const double* w[4] = { this->P(v[0]), this->P(v[1]), this->P(v[2]), this->P(v[3]) };
+    this->Random ^= this->Random << 13;
+    this->Random ^= this->Random >> 7;
+    this->Random ^= this->Random << 17;
+    const int start = static_cast<int>(this->Random >> 62);
+    uint32_t next = NoCell;
+    for (int t = 0; t < 4; ++t)
+    {
+      const int j = (start + t) & 3;
+      const uint32_t n = this->N[4 * static_cast<size_t>(c) + j] >> 2;
+      if (n == previous)
+      {
+        continue;
+      }
+      const double* saved = w[j];
+      w[j] = p;
+      const int side = predicates::Orient3D(w[0], w[1], w[2], w[3]);
+      w[j] = saved;
+      if (side < 0)
+      {
+        next = n;
+        break;
+      }
+    }
+    if (next == NoCell)
+    {
+      return c;
+    }
+    previous = c;
+    c = next;
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+void Delaunay3DBuilder::LinkAroundEdge(int32_t a, int32_t b, uint32_t cell, int slot)
+{
+  const uint32_t ua = static_cast<uint32_t>(a), ub = static_cast<uint32_t>(b);
+  const uint64_t key =
+    ua < ub ? (uint64_t(ua) << 32 | ub) + 1 : (uint64_t(ub) << 32 | ua) + 1; // 0 marks empty
+  const size_t mask = this->EdgeKeys.size() - 1;
+  size_t h = static_cast<size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & mask;
+  for (;; h = (h + 1) & mask)
+  {
+    if (this->EdgeKeys[h] == key)
+    {
+      const uint32_t other = this->EdgeValues[h];
+      this->Link(cell, slot, other >> 2, static_cast<int>(other & 3));
+      return;
+    }
+    if (this->EdgeKeys[h] == 0)
+    {
+      this->EdgeKeys[h] = key;
+      this->EdgeValues[h] = (cell << 2) | static_cast<uint32_t>(slot);
+      this->EdgeUsed.push_back(static_cast<uint32_t>(h));
+      return;
+    }
+  }
+}
+
+void Delaunay3DBuilder::ClearEdgeTable()
+{
+  for (uint32_t h : this->EdgeUsed)
+  {
+    this->EdgeKeys[h] = 0;
+  }
+  this->EdgeUsed.clear();
+}
+
+//------------------------------------------------------------------------------------------------
+void Delaunay3DBuilder::Insert(int32_t id)
+{
+  const double* p = this->P(id);
+  const uint32_t seed = this->Locate(p);
+
+  this->Cavity.clear();
+  this->Outside.clear();
+  this->Boundary.clear();
+  this->State[seed] = 1;
+  this->Cavity.push_back(seed);
+  this->Stack.push_back(seed);
+  while (!this->Stack.empty())
+  {
+    const uint32_t c = this->Stack.back();
+    this->Stack.pop_back();
+    for (int j = 0; j < 4; ++j)
+    {
+      const uint32_t link = this->N[4 * static_cast<size_t>(c) + j];
+      const uint32_t n = link >> 2;
+      uint8_t& state = this->State[n];
+      if (state == 1)
+      {
+        continue;
+      }
+      if (state == 0)
+      {
+        if (this->InConflict(n, p))
+        {
+          state = 1;
+          this->Cavity.push_back(n);
+          this->Stack.push_back(n);
+          continue;
+        }
+        state = 2;
+        this->Outside.push_back(n);
+      }
+      BoundaryFacet facet;
+      std::copy_n(&this->V[4 * static_cast<size_t>(c)], 4, facet.Vertices);
+      facet.Vertices[j] = id;
+      facet.Slot = j;
+      facet.Outside = link;
+      this->Boundary.push_back(facet);
+    }
+  }
+  for (uint32_t c : this->Outside)
+  {
+    this->State[c] = 0;
+  }
+  for (uint32_t c : this->Cavity)
+  {
+    this->State[c] = 0;
+  }
+
+  // Each new cell has three facets through p, one per edge of its boundary facet; every such
+  // edge is shared by exactly two boundary facets.
+  const size_t keys = 3 * this->Boundary.size();
+  if (2 * keys > this->EdgeKeys.size())
+  {
+    size_t size = 64;
+    while (size < 2 * keys)
+    {
+      size *= 2;
+    }
+    this->EdgeKeys.assign(size, 0);
+    this->EdgeValues.resize(size);
+    this->EdgeUsed.clear();
+  }
+
+  const size_t reused = std::min(this->Cavity.size(), this->Boundary.size());
+  for (size_t i = this->Boundary.size(); i < this->Cavity.size(); ++i)
+  {
+    this->Free.push_back(this->Cavity[i]);
+  }
+  uint32_t cell = NoCell;
+  for (size_t i = 0; i < this->Boundary.size(); ++i)
+  {
+    const BoundaryFacet& facet = this->Boundary[i];
+    cell = i < reused ? this->Cavity[i] : this->NewCell();
+    std::copy_n(facet.Vertices, 4, &this->V[4 * static_cast<size_t>(cell)]);
+    this->Link(cell, facet.Slot, facet.Outside >> 2, static_cast<int>(facet.Outside & 3));
+    for (int k = 0; k < 4; ++k)
+    {
+      if (k == facet.Slot)
+      {
+        continue;
+      }
+      // The facet opposite slot k holds p and the vertices of the two remaining slots.
+      int a = -1, b = -1;
+      for (int m = 0; m < 4; ++m)
+      {
+        if (m != k && m != facet.Slot)
+        {
+          (a < 0 ? a : b) = m;
+        }
+      }
+      this->LinkAroundEdge(facet.Vertices[a], facet.Vertices[b], cell, k);
+    }
+  }
+  this->ClearEdgeTable();
+  this->Hint = cell;
+}
+
+//------------------------------------------------------------------------------------------------
+// Build the first tetrahedron from the first four affinely independent points of the order and
+// its four infinite neighbours; the points passed over are moved behind them.
+bool Delaunay3DBuilder::Initialize(std::vector<int32_t>& order)
+{
+  const size_t n = order.size();
+  if (n < 4)
+  {
+    return false;
+  }
+  size_t second = 1; // points are distinct
+  size_t third = 2;
+  while (third < n && Collinear(this->P(order[0]), this->P(order[second]), this->P(order[third])))
+  {
+    ++third;
+  }
+  if (third == n)
+  {
+    return false;
+  }
+  size_t fourth = n;
+  for (size_t i = 2; i < n; ++i)
+  {
+    if (i != third &&
+      predicates::Orient3D(this->P(order[0]), this->P(order[second]), this->P(order[third]),
+        this->P(order[i])) != 0)
+    {
+      fourth = i;
+      break;
+    }
+  }
+  if (fourth == n)
+  {
+    return false;
+  }
+  // Move the four chosen points to the front, keeping the relative order of the others.
+  std::array<int32_t, 4> first = { order[0], order[second], order[third], order[fourth] };
+  std::vector<int32_t> rest;
+  rest.reserve(n - 4);
+  for (size_t i = 1; i < n; ++i)
+  {
+    if (i != second && i != third && i != fourth)
+    {
+      rest.push_back(order[i]);
+    }
+  }
+  std::copy(first.begin(), first.end(), order.begin());
+  std::copy(rest.begin(), rest.end(), order.begin() + 4);
+
+  if (predicates::Orient3D(
+        this->P(first[0]), this->P(first[1]), this->P(first[2]), this->P(first[3])) < 0)
+  {
+    std::swap(first[0], first[1]);
+  }
+  this->V.clear();
+  this->N.clear();
+  this->State.clear();
+  this->Free.clear();
+  for (int c = 0; c < 5; ++c)
+  {
+    this->NewCell();
+  }
+  std::copy(first.begin(), first.end(), this->V.begin());
+  for (int j = 0; j < 4; ++j)
+  {
+    // Infinite cell j replaces vertex j by the infinite vertex; swapping two finite vertices
+    // gives it the orientation seen from outside the hull.
+    int32_t* v = &this->V[4 * (j + 1)];
+    std::copy(first.begin(), first.end(), v);
+    v[j] = Delaunay3D::Infinite;
+    std::swap(v[(j + 1) & 3], v[(j + 2) & 3]);
+  }
+  // Link the five cells by matching their facets.
+  std::map<std::array<int32_t, 3>, std::pair<uint32_t, int>> facets;
+  for (uint32_t c = 0; c < 5; ++c)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      std::array<int32_t, 3> key;
+      for (int m = 0, k = 0; m < 4; ++m)
+      {
+        if (m != j)
+        {
+          key[k++] = this->V[4 * c + m];
+        }
+      }
+      std::sort(key.begin(), key.end());
+      auto it = facets.find(key);
+      if (it == facets.end())
+      {
+        facets.emplace(key, std::make_pair(c, j));
+      }
+      else
+      {
+        this->Link(c, j, it->second.first, it->second.second);
+      }
+    }
+  }
+  this->Hint = 0;
+  return true;
+}
+
+//------------------------------------------------------------------------------------------------
+// Drop the cells left on the free list and renumber the others.
+void Delaunay3DBuilder::Compact()
+{
+  if (this->Free.empty())
+  {
+    return;
+  }
+  const size_t cells = this->V.size() / 4;
+  std::vector<uint32_t> index(cells, 0);
+  for (uint32_t c : this->Free)
+  {
+    index[c] = NoCell;
+  }
+  uint32_t next = 0;
+  for (size_t c = 0; c < cells; ++c)
+  {
+    if (index[c] != NoCell)
+    {
+      index[c] = next++;
+    }
+  }
+  for (size_t c = 0; c < cells; ++c)
+  {
+    const uint32_t to = index[c];
+    if (to == NoCell)
+    {
+      continue;
+    }
+    for (int j = 0; j < 4; ++j)
+    {
+      const uint32_t link = this->N[4 * c + j];
+      this->V[4 * static_cast<size_t>(to) + j] = this->V[4 * c + j];
+      this->N[4 * static_cast<size_t>(to) + j] = (index[link >> 2] << 2) | (link & 3);
+    }
+  }
+  this->V.resize(4 * static_cast<size_t>(next));
+  this->N.resize(4 * static_cast<size_t>(next));
+  this->V.shrink_to_fit();
+  this->N.shrink_to_fit();
+  this->Free.clear();
+}
+
+//------------------------------------------------------------------------------------------------
+bool Delaunay3DBuilder::Run(std::vector<int32_t> order, const Delaunay3D::ProgressFunction& progress)
+{
+  BRIOHilbertOrder(this->XYZ, 3, order);
+  if (!this->Initialize(order))
+  {
+    return false;
+  }
+  const size_t n = order.size();
+  // About 6.5 cells per point in a uniform cloud, plus the infinite cells.
+  this->V.reserve(4 * (7 * n + 64));
+  this->N.reserve(4 * (7 * n + 64));
+  this->State.reserve(7 * n + 64);
+  const size_t step = std::max<size_t>(n / 100, 1000);
+  for (size_t i = 4; i < n; ++i)
+  {
+    if (i % step == 0 && progress && !progress(static_cast<double>(i) / n))
+    {
+      return false;
+    }
+    this->Insert(order[i]);
+  }
+  this->State = std::vector<uint8_t>();
+  this->Compact();
+  return true;
+}
+
+//------------------------------------------------------------------------------------------------
+bool Delaunay3D::Triangulate(
+  const double* xyz, const std::vector<int32_t>& ids, const ProgressFunction& progress)
+{
+  this->Clear();
+  Delaunay3DBuilder builder(*this, xyz);
+  if (!builder.Run(ids, progress))
+  {
+    this->Clear();
+    return false;
+  }
+  return true;
+}
+
+void Delaunay3D::Clear()
+{
+  this->Vertices = std::vector<int32_t>();
+  this->Neighbors = std::vector<uint32_t>();
+}
+} // namespace pcs

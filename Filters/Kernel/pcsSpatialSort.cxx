@@ -1,1 +1,160 @@
-// placeholder: implementation in progress
+// Spatially coherent insertion order (private kernel). See pcsSpatialSort.h.
+//
+// Each point gets a Hilbert index on a 2^21 grid per axis over the bounding box of the
+// referenced points (63 bits in 3D, 42 bits in 2D). The index is computed with Skilling's
+// transpose formulation ("Programming the Hilbert curve", AIP Conf. Proc. 707, 2004): the grid
+// coordinates are turned into the transposed Hilbert index by undoing the rotations level by
+// level and Gray-encoding the result; the bits are then interleaved into one integer key. Sorting
+// by key gives the curve order.
+#include "pcsSpatialSort.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <utility>
+
+namespace pcs
+{
+namespace
+{
+constexpr int BitsPerAxis = 21;
+
+uint64_t HilbertKey(uint32_t* x, int dim)
+{
+  const uint32_t top = 1u << (BitsPerAxis - 1);
+  // Undo the rotations (inverse of the curve's recursive construction).
+  for (uint32_t q = top; q > 1; q >>= 1)
+  {
+    const uint32_t lower = q - 1;
+    for (int i = 0; i < dim; ++i)
+    {
+      if (x[i] & q)
+      {
+        x[0] ^= lower;
+      }
+      else
+      {
+        const uint32_t t = (x[0] ^ x[i]) & lower;
+        x[0] ^= t;
+        x[i] ^= t;
+      }
+    }
+  }
+  // Gray encode.
+  for (int i = 1; i < dim; ++i)
+  {
+    x[i] ^= x[i - 1];
+  }
+  uint32_t t = 0;
+  for (uint32_t q = top; q > 1; q >>= 1)
+  {
+    if (x[dim - 1] & q)
+    {
+      t ^= q - 1;
+    }
+  }
+  for (int i = 0; i < dim; ++i)
+  {
+    x[i] ^= t;
+  }
+  // Interleave: most significant bit of axis 0 first.
+  uint64_t key = 0;
+  for (int b = BitsPerAxis - 1; b >= 0; --b)
+  {
+    for (int i = 0; i < dim; ++i)
+    {
+      key = (key << 1) | ((x[i] >> b) & 1u);
+    }
+  }
+  return key;
+}
+
+// Keys of the points `begin..end` (in that order) over their own bounding box.
+void ComputeKeys(const double* coords, int dim, const int32_t* begin, const int32_t* end,
+  std::vector<std::pair<uint64_t, int32_t>>& keyed)
+{
+  double lo[3] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+    std::numeric_limits<double>::max() };
+  double hi[3] = { -lo[0], -lo[1], -lo[2] };
+  for (const int32_t* it = begin; it != end; ++it)
+  {
+    const double* p = coords + static_cast<int64_t>(dim) * *it;
+    for (int i = 0; i < dim; ++i)
+    {
+      lo[i] = std::min(lo[i], p[i]);
+      hi[i] = std::max(hi[i], p[i]);
+    }
+  }
+  // One common scale for all axes keeps the curve's cells cubic (a flat cloud stays local).
+  double extent = 0.0;
+  for (int i = 0; i < dim; ++i)
+  {
+    extent = std::max(extent, hi[i] - lo[i]);
+  }
+  const double cells = static_cast<double>((1u << BitsPerAxis) - 1);
+  const double scale = extent > 0.0 && std::isfinite(extent) ? cells / extent : 0.0;
+
+  keyed.clear();
+  keyed.reserve(end - begin);
+  for (const int32_t* it = begin; it != end; ++it)
+  {
+    const double* p = coords + static_cast<int64_t>(dim) * *it;
+    uint32_t x[3] = { 0, 0, 0 };
+    for (int i = 0; i < dim; ++i)
+    {
+      const double g = (p[i] - lo[i]) * scale;
+      x[i] = static_cast<uint32_t>(std::min(std::max(g, 0.0), cells));
+    }
+    keyed.emplace_back(HilbertKey(x, dim), *it);
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------------------------
+void HilbertSort(const double* coords, int dim, int32_t* begin, int32_t* end)
+{
+  if (end - begin < 2)
+  {
+    return;
+  }
+  std::vector<std::pair<uint64_t, int32_t>> keyed;
+  ComputeKeys(coords, dim, begin, end, keyed);
+  std::sort(keyed.begin(), keyed.end());
+  for (const auto& k : keyed)
+  {
+    *begin++ = k.second;
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+void BRIOHilbertOrder(const double* coords, int dim, std::vector<int32_t>& ids, unsigned int seed,
+  int32_t minimumRoundSize)
+{
+  const int64_t n = static_cast<int64_t>(ids.size());
+  if (n < 2)
+  {
+    return;
+  }
+  // Keys over the bounding box of the whole set, so that every round follows the same curve.
+  std::vector<std::pair<uint64_t, int32_t>> keyed;
+  ComputeKeys(coords, dim, ids.data(), ids.data() + n, keyed);
+
+  std::mt19937_64 rng(seed);
+  std::shuffle(keyed.begin(), keyed.end(), rng);
+
+  // Rounds: [0, n0) [n0, n1) ... [n_k, n) where each round is half of what precedes its end.
+  const int64_t minimum = std::max<int64_t>(minimumRoundSize, 1);
+  int64_t end = n;
+  while (end > 0)
+  {
+    const int64_t begin = end > minimum ? end / 2 : 0;
+    std::sort(keyed.begin() + begin, keyed.begin() + end);
+    end = begin;
+  }
+  for (int64_t i = 0; i < n; ++i)
+  {
+    ids[i] = keyed[i].second;
+  }
+}
+} // namespace pcs

@@ -34,6 +34,11 @@ struct BoundaryFacet
   int Slot;            // position of p in the new cell
 };
 
+bool SamePoint(const double* a, const double* b)
+{
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
 bool Collinear(const double* a, const double* b, const double* c)
 {
   using predicates::Orient2D;
@@ -58,6 +63,7 @@ public:
   Delaunay3DBuilder(Delaunay3D& dt, const double* xyz)
     : V(dt.Vertices)
     , N(dt.Neighbors)
+    , Duplicates(dt.Duplicates)
     , XYZ(xyz)
   {
   }
@@ -112,6 +118,7 @@ private:
 
   std::vector<int32_t>& V;
   std::vector<uint32_t>& N;
+  std::vector<std::pair<int32_t, int32_t>>& Duplicates;
   const double* XYZ;
   std::vector<uint8_t> State; // 0 untested, 1 in the cavity, 2 tested and outside
   std::vector<uint32_t> Free;
@@ -250,6 +257,16 @@ void Delaunay3DBuilder::Insert(int32_t id)
 {
   const double* p = this->P(id);
   const uint32_t seed = this->Locate(p);
+  // A point equal to a vertex stops the walk in a finite cell of that vertex.
+  const int32_t* sv = &this->V[4 * static_cast<size_t>(seed)];
+  for (int k = 0; k < 4; ++k)
+  {
+    if (sv[k] >= 0 && SamePoint(this->P(sv[k]), p))
+    {
+      this->Duplicates.emplace_back(id, sv[k]);
+      return;
+    }
+  }
 
   this->Cavity.clear();
   this->Outside.clear();
@@ -358,9 +375,19 @@ bool Delaunay3DBuilder::Initialize(std::vector<int32_t>& order)
   {
     return false;
   }
-  size_t second = 1; // points are distinct
-  size_t third = 2;
-  while (third < n && Collinear(this->P(order[0]), this->P(order[second]), this->P(order[third])))
+  size_t second = 1;
+  while (second < n && SamePoint(this->P(order[0]), this->P(order[second])))
+  {
+    ++second;
+  }
+  if (second == n)
+  {
+    return false;
+  }
+  size_t third = 1;
+  while (third < n &&
+    (third == second ||
+      Collinear(this->P(order[0]), this->P(order[second]), this->P(order[third]))))
   {
     ++third;
   }
@@ -369,9 +396,9 @@ bool Delaunay3DBuilder::Initialize(std::vector<int32_t>& order)
     return false;
   }
   size_t fourth = n;
-  for (size_t i = 2; i < n; ++i)
+  for (size_t i = 1; i < n; ++i)
   {
-    if (i != third &&
+    if (i != second && i != third &&
       predicates::Orient3D(this->P(order[0]), this->P(order[second]), this->P(order[third]),
         this->P(order[i])) != 0)
     {
@@ -538,5 +565,6 @@ void Delaunay3D::Clear()
 {
   this->Vertices = std::vector<int32_t>();
   this->Neighbors = std::vector<uint32_t>();
+  this->Duplicates.clear();
 }
 } // namespace pcs

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace pcs
@@ -19,8 +20,9 @@ public:
   static constexpr int32_t Infinite = -1;
 
   /// Tetrahedralize the points `ids` of `xyz` (packed x,y,z triples). The referenced points
-  /// must be finite and pairwise distinct (the caller merges duplicates). Returns false when
-  /// all points are coplanar (or fewer than 4) or when the progress callback aborted; the
+  /// must be finite. A point equal to one already inserted is not inserted again: it is listed in
+  /// GetDuplicates() with the vertex that represents it. Returns false when all points are
+  /// coplanar (or fewer than 4 distinct points) or when the progress callback aborted; the
   /// triangulation is then empty.
   bool Triangulate(const double* xyz, const std::vector<int32_t>& ids,
     const ProgressFunction& progress = ProgressFunction());
@@ -49,12 +51,16 @@ public:
   /// Packed arrays: 4 vertices per cell; 4 neighbour links per cell (4 * cell + mirror index).
   const std::vector<int32_t>& GetVertices() const { return this->Vertices; }
 
+  /// Points found equal to an inserted vertex: (point id, vertex id) pairs.
+  const std::vector<std::pair<int32_t, int32_t>>& GetDuplicates() const { return this->Duplicates; }
+
   /// Release the memory of the triangulation.
   void Clear();
 
 private:
   std::vector<int32_t> Vertices;
   std::vector<uint32_t> Neighbors;
+  std::vector<std::pair<int32_t, int32_t>> Duplicates;
   friend class Delaunay3DBuilder;
 };
 } // namespace pcs

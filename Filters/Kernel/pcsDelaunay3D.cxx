@@ -26,6 +26,7 @@ namespace pcs
 namespace
 {
 constexpr uint32_t NoCell = 0xffffffffu;
+constexpr size_t MaximumMatrixVertices = 96;
 
 struct BoundaryFacet
 {
@@ -129,6 +130,10 @@ private:
   std::vector<uint64_t> EdgeKeys;
   std::vector<uint32_t> EdgeValues;
   std::vector<uint32_t> EdgeUsed;
+  std::vector<int32_t> LocalIndex; // per point: number in the current cavity boundary, or -1
+  int32_t InfiniteLocalIndex = -1;
+  std::vector<int32_t> LocalVertices;
+  std::vector<uint32_t> EdgeMatrix;
   uint32_t Hint = 0;
   uint64_t Random = 0x9E3779B97F4A7C15ull;
 };
@@ -336,6 +341,31 @@ void Delaunay3DBuilder::Insert(int32_t id)
   {
     this->Free.push_back(this->Cavity[i]);
   }
+  // Small cavities (the usual case) pair the edges through a matrix indexed by local vertex
+  // numbers; large ones through the hash table.
+  size_t local = 0;
+  for (const BoundaryFacet& facet : this->Boundary)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const int32_t v = facet.Vertices[k];
+      int32_t& index = v < 0 ? this->InfiniteLocalIndex : this->LocalIndex[v];
+      if (k != facet.Slot && index < 0)
+      {
+        index = static_cast<int32_t>(local++);
+        this->LocalVertices.push_back(v);
+      }
+    }
+  }
+  const bool useMatrix = local <= MaximumMatrixVertices;
+  if (useMatrix)
+  {
+    this->EdgeMatrix.assign(local * local, NoCell);
+  }
+  auto localIndex = [this](int32_t v) {
+    return static_cast<size_t>(v < 0 ? this->InfiniteLocalIndex : this->LocalIndex[v]);
+  };
+
   uint32_t cell = NoCell;
   for (size_t i = 0; i < this->Boundary.size(); ++i)
   {
@@ -358,10 +388,33 @@ void Delaunay3DBuilder::Insert(int32_t id)
           (a < 0 ? a : b) = m;
         }
       }
-      this->LinkAroundEdge(facet.Vertices[a], facet.Vertices[b], cell, k);
+      if (!useMatrix)
+      {
+        this->LinkAroundEdge(facet.Vertices[a], facet.Vertices[b], cell, k);
+        continue;
+      }
+      size_t la = localIndex(facet.Vertices[a]), lb = localIndex(facet.Vertices[b]);
+      if (la > lb)
+      {
+        std::swap(la, lb);
+      }
+      uint32_t& entry = this->EdgeMatrix[la * local + lb];
+      if (entry == NoCell)
+      {
+        entry = (cell << 2) | static_cast<uint32_t>(k);
+      }
+      else
+      {
+        this->Link(cell, k, entry >> 2, static_cast<int>(entry & 3));
+      }
     }
   }
   this->ClearEdgeTable();
+  for (int32_t v : this->LocalVertices)
+  {
+    (v < 0 ? this->InfiniteLocalIndex : this->LocalIndex[v]) = -1;
+  }
+  this->LocalVertices.clear();
   this->Hint = cell;
 }
 
@@ -524,26 +577,61 @@ void Delaunay3DBuilder::Compact()
 bool Delaunay3DBuilder::Run(std::vector<int32_t> order, const Delaunay3D::ProgressFunction& progress)
 {
   BRIOHilbertOrder(this->XYZ, 3, order);
-  if (!this->Initialize(order))
+  // Work on a copy of the coordinates laid out in insertion order: consecutive insertions then
+  // touch nearby memory. Vertex numbers are positions in that copy until the end.
+  const size_t n = order.size();
+  std::vector<double> coordinates(3 * n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    std::copy_n(this->XYZ + 3 * static_cast<int64_t>(order[i]), 3, &coordinates[3 * i]);
+  }
+  const double* original = this->XYZ;
+  this->XYZ = coordinates.data();
+  std::vector<int32_t> insertion(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    insertion[i] = static_cast<int32_t>(i);
+  }
+  this->LocalIndex.assign(n, -1);
+  const bool initialized = this->Initialize(insertion);
+  if (initialized)
+  {
+    // About 6.5 cells per point in a uniform cloud, plus the infinite cells.
+    this->V.reserve(4 * (7 * n + 64));
+    this->N.reserve(4 * (7 * n + 64));
+    this->State.reserve(7 * n + 64);
+    const size_t step = std::max<size_t>(n / 100, 1000);
+    for (size_t i = 4; i < n; ++i)
+    {
+      if (i % step == 0 && progress && !progress(static_cast<double>(i) / n))
+      {
+        this->XYZ = original;
+        return false;
+      }
+      this->Insert(insertion[i]);
+    }
+  }
+  this->XYZ = original;
+  if (!initialized)
   {
     return false;
   }
-  const size_t n = order.size();
-  // About 6.5 cells per point in a uniform cloud, plus the infinite cells.
-  this->V.reserve(4 * (7 * n + 64));
-  this->N.reserve(4 * (7 * n + 64));
-  this->State.reserve(7 * n + 64);
-  const size_t step = std::max<size_t>(n / 100, 1000);
-  for (size_t i = 4; i < n; ++i)
-  {
-    if (i % step == 0 && progress && !progress(static_cast<double>(i) / n))
-    {
-      return false;
-    }
-    this->Insert(order[i]);
-  }
   this->State = std::vector<uint8_t>();
+  this->LocalIndex = std::vector<int32_t>();
   this->Compact();
+  // Back to the caller's point ids.
+  for (int32_t& v : this->V)
+  {
+    if (v >= 0)
+    {
+      v = order[v];
+    }
+  }
+  for (auto& duplicate : this->Duplicates)
+  {
+    duplicate.first = order[duplicate.first];
+    duplicate.second = order[duplicate.second];
+  }
   return true;
 }
 

@@ -1,29 +1,633 @@
-// placeholder implementation (being written): compiles, produces empty outputs.
 #include "vtkIncrementalDelaunay3D.h"
 
+#include "pcsDelaunay2D.h"
+#include "pcsDelaunay3D.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPointSet.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkStaticPointLocator.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
 
 vtkStandardNewMacro(vtkIncrementalDelaunay3D);
 
+namespace
+{
+// Cells are addressed with 32-bit links (4 * cell + mirror), which bounds the cell count by
+// 2^30, about 150 million points for a 3D triangulation.
+constexpr vtkIdType MaximumNumberOfPoints = 150000000;
+
+// Finite vertex triple of the hull facet of an infinite cell, ordered so that its normal
+// (right-hand rule) points out of the hull. The kernel's infinite cells, with the infinite
+// vertex replaced by a point beyond the facet, have Orient3D > 0: the increasing-slot triple
+// then faces outwards when the infinite slot is even, inwards when it is odd.
+void OutwardHullTriangle(const int32_t* v, vtkIdType triangle[3])
+{
+  int k = 0;
+  int infinite = 0;
+  for (int j = 0; j < 4; ++j)
+  {
+    if (v[j] < 0)
+    {
+      infinite = j;
+    }
+    else
+    {
+      triangle[k++] = v[j];
+    }
+  }
+  if (infinite % 2 == 1)
+  {
+    std::swap(triangle[1], triangle[2]);
+  }
+}
+
+// Circumcentre of a tetrahedron (returns false when it is flat in floating point).
+bool TetraCircumcenter(const double* a, const double* b, const double* c, const double* d,
+  double center[3], double& radius)
+{
+  double ba[3], ca[3], da[3];
+  vtkMath::Subtract(b, a, ba);
+  vtkMath::Subtract(c, a, ca);
+  vtkMath::Subtract(d, a, da);
+  double cxd[3], dxb[3], bxc[3];
+  vtkMath::Cross(ca, da, cxd);
+  vtkMath::Cross(da, ba, dxb);
+  vtkMath::Cross(ba, ca, bxc);
+  const double denominator = 2.0 * vtkMath::Dot(ba, cxd);
+  if (denominator == 0.0)
+  {
+    center[0] = center[1] = center[2] = std::numeric_limits<double>::quiet_NaN();
+    radius = std::numeric_limits<double>::infinity();
+    return false;
+  }
+  const double lb = vtkMath::Dot(ba, ba), lc = vtkMath::Dot(ca, ca), ld = vtkMath::Dot(da, da);
+  double offset[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    offset[i] = (lb * cxd[i] + lc * dxb[i] + ld * bxc[i]) / denominator;
+    center[i] = a[i] + offset[i];
+  }
+  radius = vtkMath::Norm(offset);
+  return true;
+}
+
+// Circumcentre of a triangle in 2D coordinates.
+bool TriangleCircumcenter2D(
+  const double* a, const double* b, const double* c, double center[2], double& radius)
+{
+  const double bx = b[0] - a[0], by = b[1] - a[1];
+  const double cx = c[0] - a[0], cy = c[1] - a[1];
+  const double denominator = 2.0 * (bx * cy - by * cx);
+  if (denominator == 0.0)
+  {
+    center[0] = center[1] = std::numeric_limits<double>::quiet_NaN();
+    radius = std::numeric_limits<double>::infinity();
+    return false;
+  }
+  const double lb = bx * bx + by * by, lc = cx * cx + cy * cy;
+  const double ux = (cy * lb - by * lc) / denominator;
+  const double uy = (bx * lc - cx * lb) / denominator;
+  center[0] = a[0] + ux;
+  center[1] = a[1] + uy;
+  radius = std::sqrt(ux * ux + uy * uy);
+  return true;
+}
+
+vtkSmartPointer<vtkCellArray> MakeCellArray(const std::vector<int32_t>& connectivity, int size)
+{
+  const vtkIdType cells = static_cast<vtkIdType>(connectivity.size()) / size;
+  vtkNew<vtkTypeInt32Array> offsets;
+  offsets->SetNumberOfValues(cells + 1);
+  for (vtkIdType c = 0; c <= cells; ++c)
+  {
+    offsets->SetValue(c, static_cast<int32_t>(size * c));
+  }
+  vtkNew<vtkTypeInt32Array> ids;
+  ids->SetNumberOfValues(static_cast<vtkIdType>(connectivity.size()));
+  std::copy(connectivity.begin(), connectivity.end(), ids->GetPointer(0));
+  auto array = vtkSmartPointer<vtkCellArray>::New();
+  array->SetData(offsets, ids);
+  return array;
+}
+
+void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
+{
+  vtkNew<vtkIdTypeArray> array;
+  array->SetName(name);
+  array->SetNumberOfValues(1);
+  array->SetValue(0, value);
+  fd->AddArray(array);
+}
+
+// Orthonormal frame of the projection plane: origin and two in-plane axes.
+struct ProjectionFrame
+{
+  double Origin[3] = { 0, 0, 0 };
+  double U[3] = { 1, 0, 0 };
+  double V[3] = { 0, 1, 0 };
+
+  void Project(const double* p, double* uv) const
+  {
+    const double d[3] = { p[0] - this->Origin[0], p[1] - this->Origin[1], p[2] - this->Origin[2] };
+    uv[0] = vtkMath::Dot(d, this->U);
+    uv[1] = vtkMath::Dot(d, this->V);
+  }
+  void Lift(const double* uv, double* p) const
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      p[i] = this->Origin[i] + uv[0] * this->U[i] + uv[1] * this->V[i];
+    }
+  }
+};
+
+// Least-squares plane through the points `ids`: centroid and the two principal axes of largest
+// variance, oriented so that U x V is the normal of smallest variance (right-handed).
+ProjectionFrame BestFitFrame(const double* xyz, const std::vector<int32_t>& ids)
+{
+  ProjectionFrame frame;
+  if (ids.empty())
+  {
+    return frame;
+  }
+  double centroid[3] = { 0, 0, 0 };
+  for (int32_t id : ids)
+  {
+    vtkMath::Add(centroid, xyz + 3 * static_cast<int64_t>(id), centroid);
+  }
+  vtkMath::MultiplyScalar(centroid, 1.0 / ids.size());
+  double covariance[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
+  for (int32_t id : ids)
+  {
+    double d[3];
+    vtkMath::Subtract(xyz + 3 * static_cast<int64_t>(id), centroid, d);
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        covariance[i][j] += d[i] * d[j];
+      }
+    }
+  }
+  double* rows[3] = { covariance[0], covariance[1], covariance[2] };
+  double eigenvalues[3], vectorStorage[3][3];
+  double* vectors[3] = { vectorStorage[0], vectorStorage[1], vectorStorage[2] };
+  vtkMath::Jacobi(rows, eigenvalues, vectors); // sorted by decreasing eigenvalue; columns
+  for (int i = 0; i < 3; ++i)
+  {
+    frame.Origin[i] = centroid[i];
+    frame.U[i] = vectors[i][0];
+    frame.V[i] = vectors[i][1];
+  }
+  return frame;
+}
+
+//------------------------------------------------------------------------------------------------
+// Exact duplicates of the projected coordinates: sort by (u, v, id) and map each point to the
+// first of its group.
+void MergeExactDuplicates2D(
+  const double* uv, std::vector<int32_t>& ids, vtkIdTypeArray* representative)
+{
+  std::vector<int32_t> sorted(ids);
+  vtkSMPTools::Sort(sorted.begin(), sorted.end(), [uv](int32_t a, int32_t b) {
+    const double* pa = uv + 2 * static_cast<int64_t>(a);
+    const double* pb = uv + 2 * static_cast<int64_t>(b);
+    if (pa[0] != pb[0])
+    {
+      return pa[0] < pb[0];
+    }
+    if (pa[1] != pb[1])
+    {
+      return pa[1] < pb[1];
+    }
+    return a < b;
+  });
+  bool merged = false;
+  for (size_t i = 1, first = 0; i < sorted.size(); ++i)
+  {
+    const double* p = uv + 2 * static_cast<int64_t>(sorted[i]);
+    const double* q = uv + 2 * static_cast<int64_t>(sorted[first]);
+    if (p[0] == q[0] && p[1] == q[1])
+    {
+      representative->SetValue(sorted[i], sorted[first]);
+      merged = true;
+    }
+    else
+    {
+      first = i;
+    }
+  }
+  if (merged)
+  {
+    ids.erase(std::remove_if(ids.begin(), ids.end(),
+                [representative](int32_t id) { return representative->GetValue(id) != id; }),
+      ids.end());
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+// Greedy merge in input order: a point not yet merged is kept and absorbs every unmerged point
+// within Tolerance of it (vtkStaticPointLocator radius queries).
+void MergeWithinTolerance(double tolerance, const double* coords, int dim,
+  std::vector<int32_t>& ids, vtkIdTypeArray* representative)
+{
+  vtkNew<vtkPoints> kept;
+  kept->SetDataTypeToDouble();
+  kept->SetNumberOfPoints(static_cast<vtkIdType>(ids.size()));
+  for (size_t i = 0; i < ids.size(); ++i)
+  {
+    const double* p = coords + dim * static_cast<int64_t>(ids[i]);
+    kept->SetPoint(static_cast<vtkIdType>(i), p[0], p[1], dim == 3 ? p[2] : 0.0);
+  }
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(kept);
+  vtkNew<vtkStaticPointLocator> locator;
+  locator->SetDataSet(cloud);
+  locator->BuildLocator();
+
+  std::vector<char> merged(ids.size(), 0);
+  std::vector<int32_t> survivors;
+  survivors.reserve(ids.size());
+  vtkNew<vtkIdList> near;
+  for (size_t i = 0; i < ids.size(); ++i)
+  {
+    if (merged[i])
+    {
+      continue;
+    }
+    survivors.push_back(ids[i]);
+    double p[3];
+    kept->GetPoint(static_cast<vtkIdType>(i), p);
+    locator->FindPointsWithinRadius(tolerance, p, near);
+    for (vtkIdType k = 0; k < near->GetNumberOfIds(); ++k)
+    {
+      const vtkIdType j = near->GetId(k);
+      if (static_cast<size_t>(j) != i && !merged[j])
+      {
+        merged[j] = 1;
+        representative->SetValue(ids[j], ids[i]);
+      }
+    }
+  }
+  ids.swap(survivors);
+}
+
+//------------------------------------------------------------------------------------------------
+void BuildVoronoi3D(const double* xyz, const pcs::Delaunay3D& dt,
+  const std::vector<int32_t>& finiteIndex, int32_t numberOfFinite, vtkPolyData* voronoi);
+
+vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
+  const std::vector<int32_t>& ids, const pcs::Delaunay3D::ProgressFunction& progress,
+  vtkIdTypeArray* representative, vtkPolyData* surface, vtkUnstructuredGrid* cells,
+  vtkPolyData* voronoi)
+{
+  pcs::Delaunay3D dt;
+  if (!dt.Triangulate(xyz, ids, progress))
+  {
+    if (!self->GetAbortExecute())
+    {
+      vtkWarningWithObjectMacro(self, "Fewer than 4 distinct non-coplanar points among the "
+          << ids.size() << " usable point(s): no tetrahedra are produced.");
+    }
+    return 0;
+  }
+  for (const auto& duplicate : dt.GetDuplicates())
+  {
+    representative->SetValue(duplicate.first, duplicate.second);
+  }
+
+  const int64_t numberOfKernelCells = dt.GetNumberOfCells();
+  std::vector<int32_t> finiteIndex(numberOfKernelCells, -1);
+  int32_t numberOfFinite = 0;
+  int64_t numberOfHull = 0;
+  for (int64_t c = 0; c < numberOfKernelCells; ++c)
+  {
+    if (dt.IsInfinite(c))
+    {
+      ++numberOfHull;
+    }
+    else
+    {
+      finiteIndex[c] = numberOfFinite++;
+    }
+  }
+
+  // Hull triangles, oriented outwards.
+  vtkNew<vtkCellArray> hull;
+  hull->AllocateExact(numberOfHull, 3 * numberOfHull);
+  for (int64_t c = 0; c < numberOfKernelCells; ++c)
+  {
+    if (dt.IsInfinite(c))
+    {
+      vtkIdType triangle[3];
+      OutwardHullTriangle(&dt.GetVertices()[4 * c], triangle);
+      hull->InsertNextCell(3, triangle);
+    }
+  }
+  surface->SetPolys(hull);
+
+  if (self->GetGenerateVoronoi())
+  {
+    BuildVoronoi3D(xyz, dt, finiteIndex, numberOfFinite, voronoi);
+  }
+  if (self->GetGenerateTetrahedra())
+  {
+    // VTK orders a tetrahedron so that (p1 - p0) x (p2 - p0) points towards p3, the opposite of
+    // the kernel's Orient3D > 0 convention: swap the first two vertices.
+    std::vector<int32_t> connectivity(4 * static_cast<size_t>(numberOfFinite));
+    for (int64_t c = 0; c < numberOfKernelCells; ++c)
+    {
+      const int32_t f = finiteIndex[c];
+      if (f >= 0)
+      {
+        int32_t* t = &connectivity[4 * static_cast<size_t>(f)];
+        t[0] = dt.Vertex(c, 1);
+        t[1] = dt.Vertex(c, 0);
+        t[2] = dt.Vertex(c, 2);
+        t[3] = dt.Vertex(c, 3);
+      }
+    }
+    dt.Clear();
+    std::vector<int32_t>().swap(finiteIndex);
+
+    vtkNew<vtkDoubleArray> radius;
+    radius->SetName("Circumradius");
+    radius->SetNumberOfValues(numberOfFinite);
+    vtkSMPTools::For(0, numberOfFinite, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType f = begin; f < end; ++f)
+      {
+        const int32_t* t = &connectivity[4 * f];
+        double center[3], r;
+        TetraCircumcenter(xyz + 3 * static_cast<int64_t>(t[0]), xyz + 3 * static_cast<int64_t>(t[1]),
+          xyz + 3 * static_cast<int64_t>(t[2]), xyz + 3 * static_cast<int64_t>(t[3]), center, r);
+        radius->SetValue(f, r);
+      }
+    });
+    vtkSmartPointer<vtkCellArray> tetra = MakeCellArray(connectivity, 4);
+    std::vector<int32_t>().swap(connectivity);
+    cells->SetCells(VTK_TETRA, tetra);
+    cells->GetCellData()->AddArray(radius);
+  }
+  return numberOfFinite;
+}
+
+//------------------------------------------------------------------------------------------------
+// Voronoi diagram (paper 002, section 2.1): vertices are the circumcentres of the finite
+// tetrahedra; each facet shared by two finite tetrahedra gives a segment, each hull facet a ray
+// along its outward normal, cut at one bounding-box diagonal.
+void BuildVoronoi3D(const double* xyz, const pcs::Delaunay3D& dt,
+  const std::vector<int32_t>& finiteIndex, int32_t numberOfFinite, vtkPolyData* voronoi)
+{
+  const int64_t numberOfKernelCells = dt.GetNumberOfCells();
+  auto P = [xyz](int32_t id) { return xyz + 3 * static_cast<int64_t>(id); };
+  vtkNew<vtkPoints> vertices;
+  vertices->SetDataTypeToDouble();
+  vertices->SetNumberOfPoints(numberOfFinite);
+  std::vector<double> radii(numberOfFinite);
+  double bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (int64_t c = 0; c < numberOfKernelCells; ++c)
+  {
+    const int32_t f = finiteIndex[c];
+    if (f < 0)
+    {
+      continue;
+    }
+    double center[3];
+    TetraCircumcenter(P(dt.Vertex(c, 0)), P(dt.Vertex(c, 1)), P(dt.Vertex(c, 2)),
+      P(dt.Vertex(c, 3)), center, radii[f]);
+    vertices->SetPoint(f, center);
+    for (int j = 0; j < 4; ++j)
+    {
+      const double* p = P(dt.Vertex(c, j));
+      for (int i = 0; i < 3; ++i)
+      {
+        bounds[2 * i] = std::min(bounds[2 * i], p[i]);
+        bounds[2 * i + 1] = std::max(bounds[2 * i + 1], p[i]);
+      }
+    }
+  }
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+
+  vtkNew<vtkCellArray> edges;
+  vtkNew<vtkUnsignedCharArray> unbounded;
+  unbounded->SetName("Unbounded");
+  for (int64_t c = 0; c < numberOfKernelCells; ++c)
+  {
+    const int32_t f = finiteIndex[c];
+    if (f < 0)
+    {
+      continue;
+    }
+    for (int j = 0; j < 4; ++j)
+    {
+      const int64_t n = dt.Neighbor(c, j);
+      const int32_t g = finiteIndex[n];
+      if (g >= 0)
+      {
+        if (f < g)
+        {
+          const vtkIdType segment[2] = { f, g };
+          edges->InsertNextCell(2, segment);
+          unbounded->InsertNextValue(0);
+        }
+        continue;
+      }
+      // Hull facet opposite vertex j: the ray leaves along the normal pointing away from it.
+      const double* a = P(dt.Vertex(c, (j + 1) & 3));
+      const double* b = P(dt.Vertex(c, (j + 2) & 3));
+      const double* d = P(dt.Vertex(c, (j + 3) & 3));
+      const double* opposite = P(dt.Vertex(c, j));
+      double ab[3], ad[3], normal[3], ao[3];
+      vtkMath::Subtract(b, a, ab);
+      vtkMath::Subtract(d, a, ad);
+      vtkMath::Cross(ab, ad, normal);
+      vtkMath::Subtract(opposite, a, ao);
+      if (vtkMath::Dot(normal, ao) > 0)
+      {
+        vtkMath::MultiplyScalar(normal, -1.0);
+      }
+      vtkMath::Normalize(normal);
+      double start[3], end[3];
+      vertices->GetPoint(f, start);
+      for (int i = 0; i < 3; ++i)
+      {
+        end[i] = start[i] + diagonal * normal[i];
+      }
+      const vtkIdType endId = vertices->InsertNextPoint(end);
+      radii.push_back(std::numeric_limits<double>::quiet_NaN());
+      const vtkIdType ray[2] = { f, endId };
+      edges->InsertNextCell(2, ray);
+      unbounded->InsertNextValue(1);
+    }
+  }
+  vtkNew<vtkDoubleArray> radius;
+  radius->SetName("Circumradius");
+  radius->SetNumberOfValues(static_cast<vtkIdType>(radii.size()));
+  std::copy(radii.begin(), radii.end(), radius->GetPointer(0));
+  voronoi->SetPoints(vertices);
+  voronoi->SetLines(edges);
+  voronoi->GetPointData()->AddArray(radius);
+  voronoi->GetCellData()->AddArray(unbounded);
+}
+
+//------------------------------------------------------------------------------------------------
+vtkIdType Triangulate2D(vtkIncrementalDelaunay3D* self, const double* uv,
+  const ProjectionFrame& frame, const std::vector<int32_t>& ids,
+  const pcs::Delaunay2D::ProgressFunction& progress, vtkPolyData* surface,
+  vtkUnstructuredGrid* cells, vtkPolyData* voronoi)
+{
+  pcs::Delaunay2D dt;
+  if (!dt.Triangulate(uv, ids, progress))
+  {
+    if (!self->GetAbortExecute())
+    {
+      vtkWarningWithObjectMacro(self, "Fewer than 3 distinct non-collinear projected points among the "
+          << ids.size() << " usable point(s): no triangles are produced.");
+    }
+    return 0;
+  }
+  const std::vector<int32_t>& triangles = dt.GetTriangles();
+  const vtkIdType numberOfTriangles = static_cast<vtkIdType>(triangles.size() / 3);
+
+  vtkSmartPointer<vtkCellArray> polys = MakeCellArray(triangles, 3);
+  surface->SetPolys(polys);
+
+  std::vector<double> centers(2 * static_cast<size_t>(numberOfTriangles));
+  std::vector<double> radii(numberOfTriangles);
+  auto Q = [uv](int32_t id) { return uv + 2 * static_cast<int64_t>(id); };
+  vtkSMPTools::For(0, numberOfTriangles, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType t = begin; t < end; ++t)
+    {
+      TriangleCircumcenter2D(Q(triangles[3 * t]), Q(triangles[3 * t + 1]),
+        Q(triangles[3 * t + 2]), &centers[2 * t], radii[t]);
+    }
+  });
+
+  if (self->GetGenerateTetrahedra())
+  {
+    vtkNew<vtkDoubleArray> radius;
+    radius->SetName("Circumradius");
+    radius->SetNumberOfValues(numberOfTriangles);
+    std::copy(radii.begin(), radii.end(), radius->GetPointer(0));
+    cells->SetCells(VTK_TRIANGLE, polys);
+    cells->GetCellData()->AddArray(radius);
+  }
+
+  if (self->GetGenerateVoronoi())
+  {
+    // The 2D Voronoi diagram, in the projection plane.
+    const std::vector<int32_t>& neighbors = dt.GetNeighbors();
+    double bounds[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    for (int32_t id : ids)
+    {
+      bounds[0] = std::min(bounds[0], Q(id)[0]);
+      bounds[1] = std::max(bounds[1], Q(id)[0]);
+      bounds[2] = std::min(bounds[2], Q(id)[1]);
+      bounds[3] = std::max(bounds[3], Q(id)[1]);
+    }
+    const double diagonal =
+      std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+        (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]));
+    vtkNew<vtkPoints> vertices;
+    vertices->SetDataTypeToDouble();
+    vertices->SetNumberOfPoints(numberOfTriangles);
+    for (vtkIdType t = 0; t < numberOfTriangles; ++t)
+    {
+      double p[3];
+      frame.Lift(&centers[2 * t], p);
+      vertices->SetPoint(t, p);
+    }
+    vtkNew<vtkCellArray> edges;
+    vtkNew<vtkUnsignedCharArray> unbounded;
+    unbounded->SetName("Unbounded");
+    for (vtkIdType t = 0; t < numberOfTriangles; ++t)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        const int32_t n = neighbors[3 * t + i];
+        if (n >= 0)
+        {
+          if (t < n)
+          {
+            const vtkIdType segment[2] = { t, n };
+            edges->InsertNextCell(2, segment);
+            unbounded->InsertNextValue(0);
+          }
+          continue;
+        }
+        // Hull edge opposite vertex i: the ray leaves along the outward normal of the edge.
+        const double* a = Q(triangles[3 * t + (i + 1) % 3]);
+        const double* b = Q(triangles[3 * t + (i + 2) % 3]);
+        double normal[2] = { b[1] - a[1], a[0] - b[0] }; // right of a->b: outside for CCW
+        const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1]);
+        double endUV[2] = { centers[2 * t] + diagonal * normal[0] / length,
+          centers[2 * t + 1] + diagonal * normal[1] / length };
+        double end[3];
+        frame.Lift(endUV, end);
+        const vtkIdType endId = vertices->InsertNextPoint(end);
+        radii.push_back(std::numeric_limits<double>::quiet_NaN());
+        const vtkIdType ray[2] = { t, endId };
+        edges->InsertNextCell(2, ray);
+        unbounded->InsertNextValue(1);
+      }
+    }
+    vtkNew<vtkDoubleArray> radius;
+    radius->SetName("Circumradius");
+    radius->SetNumberOfValues(static_cast<vtkIdType>(radii.size()));
+    std::copy(radii.begin(), radii.end(), radius->GetPointer(0));
+    voronoi->SetPoints(vertices);
+    voronoi->SetLines(edges);
+    voronoi->GetPointData()->AddArray(radius);
+    voronoi->GetCellData()->AddArray(unbounded);
+  }
+  return numberOfTriangles;
+}
+} // namespace
+
+//------------------------------------------------------------------------------------------------
 vtkIncrementalDelaunay3D::vtkIncrementalDelaunay3D()
 {
   this->SetNumberOfOutputPorts(3);
 }
+
 vtkIncrementalDelaunay3D::~vtkIncrementalDelaunay3D() = default;
 
 vtkPolyData* vtkIncrementalDelaunay3D::GetSurfaceOutput()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(0));
 }
+
 vtkUnstructuredGrid* vtkIncrementalDelaunay3D::GetTetrahedraOutput()
 {
   return vtkUnstructuredGrid::SafeDownCast(this->GetOutputDataObject(1));
 }
+
 vtkPolyData* vtkIncrementalDelaunay3D::GetVoronoiOutput()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(2));
@@ -41,13 +645,178 @@ int vtkIncrementalDelaunay3D::FillOutputPortInformation(int port, vtkInformation
   return 1;
 }
 
+//------------------------------------------------------------------------------------------------
 int vtkIncrementalDelaunay3D::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector*)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  return 1;
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPolyData* surface = vtkPolyData::GetData(outputVector, 0);
+  vtkUnstructuredGrid* cells = vtkUnstructuredGrid::GetData(outputVector, 1);
+  vtkPolyData* voronoi = vtkPolyData::GetData(outputVector, 2);
+  if (!input || !surface || !cells || !voronoi)
+  {
+    vtkErrorMacro("Missing input or output data object.");
+    return 0;
+  }
+  this->NumberOfInputPoints = 0;
+  this->NumberOfDuplicatePoints = 0;
+  this->NumberOfSkippedPoints = 0;
+  this->NumberOfCells = 0;
+
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  this->NumberOfInputPoints = numberOfPoints;
+
+  // Every output keeps all input points (and their data) so point ids refer to the input.
+  vtkNew<vtkIdTypeArray> representative;
+  representative->SetName("RepresentativeId");
+  representative->SetNumberOfValues(numberOfPoints);
+  if (numberOfPoints > 0)
+  {
+    surface->SetPoints(input->GetPoints());
+    surface->GetPointData()->PassData(input->GetPointData());
+    surface->GetPointData()->AddArray(representative);
+  }
+  auto finish = [&]() {
+    vtkFieldData* fd = surface->GetFieldData();
+    AddCount(fd, "NumberOfInputPoints", this->NumberOfInputPoints);
+    AddCount(fd, "NumberOfDuplicatePoints", this->NumberOfDuplicatePoints);
+    AddCount(fd, "NumberOfSkippedPoints", this->NumberOfSkippedPoints);
+    AddCount(fd, this->Dimension == 3 ? "NumberOfTetrahedra" : "NumberOfTriangles",
+      this->NumberOfCells);
+    if (this->GenerateTetrahedra && numberOfPoints > 0)
+    {
+      cells->SetPoints(surface->GetPoints());
+      cells->GetPointData()->ShallowCopy(surface->GetPointData());
+      cells->GetFieldData()->ShallowCopy(fd);
+    }
+    return 1;
+  };
+
+  if (numberOfPoints == 0)
+  {
+    vtkWarningMacro("The input has no points: the outputs are empty.");
+    return finish();
+  }
+  if (numberOfPoints > MaximumNumberOfPoints)
+  {
+    vtkErrorMacro("The input has " << numberOfPoints << " points; at most "
+                                   << MaximumNumberOfPoints << " are supported.");
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    {
+      representative->SetValue(i, -1);
+    }
+    return finish();
+  }
+
+  // Coordinates as doubles; non-finite points are skipped (RepresentativeId -1).
+  std::vector<double> xyz(3 * static_cast<size_t>(numberOfPoints));
+  vtkPoints* points = input->GetPoints();
+  vtkSMPTools::For(0, numberOfPoints, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      points->GetPoint(i, &xyz[3 * i]);
+    }
+  });
+  std::vector<int32_t> ids;
+  ids.reserve(numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    const double* p = &xyz[3 * i];
+    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
+    {
+      ids.push_back(static_cast<int32_t>(i));
+      representative->SetValue(i, i);
+    }
+    else
+    {
+      representative->SetValue(i, -1);
+      ++this->NumberOfSkippedPoints;
+    }
+  }
+  if (this->NumberOfSkippedPoints > 0)
+  {
+    vtkWarningMacro("Skipped " << this->NumberOfSkippedPoints
+                               << " point(s) with NaN or infinite coordinates.");
+  }
+  this->UpdateProgress(0.05);
+
+  // The triangulated coordinates: the points themselves in 3D, their projection in 2.5D.
+  ProjectionFrame frame;
+  std::vector<double> uv;
+  if (this->Dimension == 2)
+  {
+    if (this->ProjectionPlane == BEST_FIT_PLANE)
+    {
+      frame = BestFitFrame(xyz.data(), ids);
+    }
+    uv.resize(2 * static_cast<size_t>(numberOfPoints), 0.0);
+    for (int32_t id : ids)
+    {
+      frame.Project(&xyz[3 * static_cast<size_t>(id)], &uv[2 * static_cast<size_t>(id)]);
+    }
+    MergeExactDuplicates2D(uv.data(), ids, representative);
+  }
+  if (this->Tolerance > 0.0)
+  {
+    MergeWithinTolerance(this->Tolerance, this->Dimension == 2 ? uv.data() : xyz.data(),
+      this->Dimension, ids, representative);
+  }
+
+  const double progressBegin = 0.1, progressEnd = 0.85;
+  auto progress = [this, progressBegin, progressEnd](double fraction) {
+    this->UpdateProgress(progressBegin + (progressEnd - progressBegin) * fraction);
+    return !this->GetAbortExecute();
+  };
+
+  if (this->Dimension == 3)
+  {
+    this->NumberOfCells =
+      Triangulate3D(this, xyz.data(), ids, progress, representative, surface, cells, voronoi);
+  }
+  else
+  {
+    this->NumberOfCells =
+      Triangulate2D(this, uv.data(), frame, ids, progress, surface, cells, voronoi);
+  }
+
+  // Chains of merges (an exact duplicate of a point merged within Tolerance) end at the point
+  // kept in the triangulation.
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    vtkIdType r = representative->GetValue(i);
+    while (r >= 0 && representative->GetValue(r) != r)
+    {
+      r = representative->GetValue(r);
+    }
+    representative->SetValue(i, r);
+    if (r >= 0 && r != i)
+    {
+      ++this->NumberOfDuplicatePoints;
+    }
+  }
+  if (this->NumberOfDuplicatePoints > 0)
+  {
+    vtkWarningMacro("Merged " << this->NumberOfDuplicatePoints
+                              << " duplicate point(s) into the point they coincide with"
+                              << (this->Tolerance > 0 ? " (within Tolerance)." : ".")
+                              << " See the point data array RepresentativeId.");
+  }
+  this->UpdateProgress(1.0);
+  return finish();
 }
 
+//------------------------------------------------------------------------------------------------
 void vtkIncrementalDelaunay3D::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Dimension: " << this->Dimension << "\n";
+  os << indent << "ProjectionPlane: "
+     << (this->ProjectionPlane == XY_PLANE ? "XY_PLANE" : "BEST_FIT_PLANE") << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "GenerateTetrahedra: " << this->GenerateTetrahedra << "\n";
+  os << indent << "GenerateVoronoi: " << this->GenerateVoronoi << "\n";
+  os << indent << "NumberOfInputPoints: " << this->NumberOfInputPoints << "\n";
+  os << indent << "NumberOfDuplicatePoints: " << this->NumberOfDuplicatePoints << "\n";
+  os << indent << "NumberOfSkippedPoints: " << this->NumberOfSkippedPoints << "\n";
+  os << indent << "NumberOfCells: " << this->NumberOfCells << "\n";
 }

@@ -343,7 +343,7 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
     if (dt.IsInfinite(c))
     {
       vtkIdType triangle[3];
-      OutwardHullTriangle(&dt.GetVertices()[4 * c], triangle);
+      OutwardHullTriangle(dt.CellVertices(c), triangle);
       hull->InsertNextCell(3, triangle);
     }
   }

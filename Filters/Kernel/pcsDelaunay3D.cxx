@@ -62,8 +62,7 @@ class Delaunay3DBuilder
 {
 public:
   Delaunay3DBuilder(Delaunay3D& dt, const double* xyz)
-    : V(dt.Vertices)
-    , N(dt.Neighbors)
+    : Cells(dt.Cells)
     , Duplicates(dt.Duplicates)
     , XYZ(xyz)
   {
@@ -82,9 +81,8 @@ private:
       this->Free.pop_back();
       return c;
     }
-    const uint32_t c = static_cast<uint32_t>(this->V.size() / 4);
-    this->V.resize(this->V.size() + 4);
-    this->N.resize(this->N.size() + 4);
+    const uint32_t c = static_cast<uint32_t>(this->Cells.size());
+    this->Cells.emplace_back();
     this->State.push_back(0);
     return c;
   }
@@ -107,8 +105,8 @@ private:
   bool Initialize(std::vector<int32_t>& order);
   void Link(uint32_t cell, int slot, uint32_t other, int otherSlot)
   {
-    this->N[4 * cell + slot] = (other << 2) | static_cast<uint32_t>(otherSlot);
-    this->N[4 * other + otherSlot] = (cell << 2) | static_cast<uint32_t>(slot);
+    this->Cells[cell].Neighbors[slot] = (other << 2) | static_cast<uint32_t>(otherSlot);
+    this->Cells[other].Neighbors[otherSlot] = (cell << 2) | static_cast<uint32_t>(slot);
   }
   void Compact();
 
@@ -117,8 +115,7 @@ private:
   void LinkAroundEdge(int32_t a, int32_t b, uint32_t cell, int slot);
   void ClearEdgeTable();
 
-  std::vector<int32_t>& V;
-  std::vector<uint32_t>& N;
+  std::vector<Delaunay3D::Cell>& Cells;
   std::vector<std::pair<int32_t, int32_t>>& Duplicates;
   const double* XYZ;
   std::vector<uint8_t> State; // 0 untested, 1 in the cavity, 2 tested and outside
@@ -141,7 +138,7 @@ private:
 //------------------------------------------------------------------------------------------------
 bool Delaunay3DBuilder::InConflict(uint32_t c, const double* p) const
 {
-  const int32_t* v = &this->V[4 * static_cast<size_t>(c)];
+  const int32_t* v = this->Cells[c].Vertices;
   const int inf = InfiniteSlot(v);
   if (inf < 0)
   {
@@ -160,8 +157,8 @@ bool Delaunay3DBuilder::InConflict(uint32_t c, const double* p) const
   }
   // p lies in the plane of the hull facet: in conflict when inside its circumcircle. The vertex
   // of the finite neighbour opposite the facet fixes the reference orientation.
-  const uint32_t link = this->N[4 * static_cast<size_t>(c) + inf];
-  w[inf] = this->P(this->V[4 * static_cast<size_t>(link >> 2) + (link & 3)]);
+  const uint32_t link = this->Cells[c].Neighbors[inf];
+  w[inf] = this->P(this->Cells[link >> 2].Vertices[link & 3]);
   return predicates::InSphereSoS(w[0], w[1], w[2], w[3], p) *
       predicates::Orient3D(w[0], w[1], w[2], w[3]) >
     0;
@@ -175,16 +172,16 @@ uint32_t Delaunay3DBuilder::Locate(const double* p)
 {
   uint32_t c = this->Hint;
   {
-    const int inf = InfiniteSlot(&this->V[4 * static_cast<size_t>(c)]);
+    const int inf = InfiniteSlot(this->Cells[c].Vertices);
     if (inf >= 0)
     {
-      c = this->N[4 * static_cast<size_t>(c) + inf] >> 2;
+      c = this->Cells[c].Neighbors[inf] >> 2;
     }
   }
   uint32_t previous = NoCell;
   for (;;)
   {
-    const int32_t* v = &this->V[4 * static_cast<size_t>(c)];
+    const int32_t* v = this->Cells[c].Vertices;
     if (InfiniteSlot(v) >= 0)
     {
       return c;
@@ -198,7 +195,7 @@ uint32_t Delaunay3DBuilder::Locate(const double* p)
     for (int t = 0; t < 4; ++t)
     {
       const int j = (start + t) & 3;
-      const uint32_t n = this->N[4 * static_cast<size_t>(c) + j] >> 2;
+      const uint32_t n = this->Cells[c].Neighbors[j] >> 2;
       if (n == previous)
       {
         continue;
@@ -263,7 +260,7 @@ void Delaunay3DBuilder::Insert(int32_t id)
   const double* p = this->P(id);
   const uint32_t seed = this->Locate(p);
   // A point equal to a vertex stops the walk in a finite cell of that vertex.
-  const int32_t* sv = &this->V[4 * static_cast<size_t>(seed)];
+  const int32_t* sv = this->Cells[seed].Vertices;
   for (int k = 0; k < 4; ++k)
   {
     if (sv[k] >= 0 && SamePoint(this->P(sv[k]), p))
@@ -285,7 +282,7 @@ void Delaunay3DBuilder::Insert(int32_t id)
     this->Stack.pop_back();
     for (int j = 0; j < 4; ++j)
     {
-      const uint32_t link = this->N[4 * static_cast<size_t>(c) + j];
+      const uint32_t link = this->Cells[c].Neighbors[j];
       const uint32_t n = link >> 2;
       uint8_t& state = this->State[n];
       if (state == 1)
@@ -304,12 +301,15 @@ void Delaunay3DBuilder::Insert(int32_t id)
         state = 2;
         this->Outside.push_back(n);
       }
-      BoundaryFacet facet;
-      std::copy_n(&this->V[4 * static_cast<size_t>(c)], 4, facet.Vertices);
-      facet.Vertices[j] = id;
+      this->Boundary.emplace_back();
+      BoundaryFacet& facet = this->Boundary.back();
+      const int32_t* cv = this->Cells[c].Vertices;
+      for (int k = 0; k < 4; ++k)
+      {
+        facet.Vertices[k] = k == j ? id : cv[k];
+      }
       facet.Slot = j;
       facet.Outside = link;
-      this->Boundary.push_back(facet);
     }
   }
   for (uint32_t c : this->Outside)
@@ -371,7 +371,7 @@ void Delaunay3DBuilder::Insert(int32_t id)
   {
     const BoundaryFacet& facet = this->Boundary[i];
     cell = i < reused ? this->Cavity[i] : this->NewCell();
-    std::copy_n(facet.Vertices, 4, &this->V[4 * static_cast<size_t>(cell)]);
+    std::copy_n(facet.Vertices, 4, this->Cells[cell].Vertices);
     this->Link(cell, facet.Slot, facet.Outside >> 2, static_cast<int>(facet.Outside & 3));
     for (int k = 0; k < 4; ++k)
     {
@@ -482,20 +482,19 @@ bool Delaunay3DBuilder::Initialize(std::vector<int32_t>& order)
   {
     std::swap(first[0], first[1]);
   }
-  this->V.clear();
-  this->N.clear();
+  this->Cells.clear();
   this->State.clear();
   this->Free.clear();
   for (int c = 0; c < 5; ++c)
   {
     this->NewCell();
   }
-  std::copy(first.begin(), first.end(), this->V.begin());
+  std::copy(first.begin(), first.end(), this->Cells[0].Vertices);
   for (int j = 0; j < 4; ++j)
   {
     // Infinite cell j replaces vertex j by the infinite vertex; swapping two finite vertices
     // gives it the orientation seen from outside the hull.
-    int32_t* v = &this->V[4 * (j + 1)];
+    int32_t* v = this->Cells[j + 1].Vertices;
     std::copy(first.begin(), first.end(), v);
     v[j] = Delaunay3D::Infinite;
     std::swap(v[(j + 1) & 3], v[(j + 2) & 3]);
@@ -511,7 +510,7 @@ bool Delaunay3DBuilder::Initialize(std::vector<int32_t>& order)
       {
         if (m != j)
         {
-          key[k++] = this->V[4 * c + m];
+          key[k++] = this->Cells[c].Vertices[m];
         }
       }
       std::sort(key.begin(), key.end());
@@ -538,7 +537,7 @@ void Delaunay3DBuilder::Compact()
   {
     return;
   }
-  const size_t cells = this->V.size() / 4;
+  const size_t cells = this->Cells.size();
   std::vector<uint32_t> index(cells, 0);
   for (uint32_t c : this->Free)
   {
@@ -559,17 +558,15 @@ void Delaunay3DBuilder::Compact()
     {
       continue;
     }
+    Delaunay3D::Cell cell = this->Cells[c];
     for (int j = 0; j < 4; ++j)
     {
-      const uint32_t link = this->N[4 * c + j];
-      this->V[4 * static_cast<size_t>(to) + j] = this->V[4 * c + j];
-      this->N[4 * static_cast<size_t>(to) + j] = (index[link >> 2] << 2) | (link & 3);
+      cell.Neighbors[j] = (index[cell.Neighbors[j] >> 2] << 2) | (cell.Neighbors[j] & 3);
     }
+    this->Cells[to] = cell;
   }
-  this->V.resize(4 * static_cast<size_t>(next));
-  this->N.resize(4 * static_cast<size_t>(next));
-  this->V.shrink_to_fit();
-  this->N.shrink_to_fit();
+  this->Cells.resize(next);
+  this->Cells.shrink_to_fit();
   this->Free.clear();
 }
 
@@ -597,8 +594,7 @@ bool Delaunay3DBuilder::Run(std::vector<int32_t> order, const Delaunay3D::Progre
   if (initialized)
   {
     // About 6.5 cells per point in a uniform cloud, plus the infinite cells.
-    this->V.reserve(4 * (7 * n + 64));
-    this->N.reserve(4 * (7 * n + 64));
+    this->Cells.reserve(7 * n + 64);
     this->State.reserve(7 * n + 64);
     const size_t step = std::max<size_t>(n / 100, 1000);
     for (size_t i = 4; i < n; ++i)
@@ -620,11 +616,14 @@ bool Delaunay3DBuilder::Run(std::vector<int32_t> order, const Delaunay3D::Progre
   this->LocalIndex = std::vector<int32_t>();
   this->Compact();
   // Back to the caller's point ids.
-  for (int32_t& v : this->V)
+  for (Delaunay3D::Cell& cell : this->Cells)
   {
-    if (v >= 0)
+    for (int32_t& v : cell.Vertices)
     {
-      v = order[v];
+      if (v >= 0)
+      {
+        v = order[v];
+      }
     }
   }
   for (auto& duplicate : this->Duplicates)
@@ -651,8 +650,7 @@ bool Delaunay3D::Triangulate(
 
 void Delaunay3D::Clear()
 {
-  this->Vertices = std::vector<int32_t>();
-  this->Neighbors = std::vector<uint32_t>();
+  this->Cells = std::vector<Cell>();
   this->Duplicates.clear();
 }
 } // namespace pcs

@@ -28,28 +28,28 @@ public:
     const ProgressFunction& progress = ProgressFunction());
 
   /// Number of cells, finite and infinite.
-  int64_t GetNumberOfCells() const { return static_cast<int64_t>(this->Vertices.size() / 4); }
+  int64_t GetNumberOfCells() const { return static_cast<int64_t>(this->Cells.size()); }
 
   /// Vertex j (0..3) of cell c: a point id, or Infinite. Finite cells are positively oriented
   /// (Orient3D(v0, v1, v2, v3) > 0). In an infinite cell, the finite facet seen from the
   /// infinite vertex has the orientation of the finite cell facets: replacing Infinite by a
   /// point beyond the hull gives a positively oriented tetrahedron.
-  int32_t Vertex(int64_t c, int j) const { return this->Vertices[4 * c + j]; }
+  int32_t Vertex(int64_t c, int j) const { return this->Cells[c].Vertices[j]; }
+
+  /// The four vertices of cell c.
+  const int32_t* CellVertices(int64_t c) const { return this->Cells[c].Vertices; }
 
   /// Neighbour of cell c across the facet opposite vertex j.
-  int64_t Neighbor(int64_t c, int j) const { return this->Neighbors[4 * c + j] >> 2; }
+  int64_t Neighbor(int64_t c, int j) const { return this->Cells[c].Neighbors[j] >> 2; }
 
   /// Index, in the neighbour across facet j of c, of the vertex opposite that facet.
-  int MirrorIndex(int64_t c, int j) const { return this->Neighbors[4 * c + j] & 3; }
+  int MirrorIndex(int64_t c, int j) const { return this->Cells[c].Neighbors[j] & 3; }
 
   bool IsInfinite(int64_t c) const
   {
-    const int32_t* v = &this->Vertices[4 * c];
+    const int32_t* v = this->Cells[c].Vertices;
     return v[0] < 0 || v[1] < 0 || v[2] < 0 || v[3] < 0;
   }
-
-  /// Packed arrays: 4 vertices per cell; 4 neighbour links per cell (4 * cell + mirror index).
-  const std::vector<int32_t>& GetVertices() const { return this->Vertices; }
 
   /// Points found equal to an inserted vertex: (point id, vertex id) pairs.
   const std::vector<std::pair<int32_t, int32_t>>& GetDuplicates() const { return this->Duplicates; }
@@ -58,8 +58,13 @@ public:
   void Clear();
 
 private:
-  std::vector<int32_t> Vertices;
-  std::vector<uint32_t> Neighbors;
+  // One 32-byte record per cell (vertices and links side by side: one cache line visit).
+  struct Cell
+  {
+    int32_t Vertices[4];
+    uint32_t Neighbors[4]; // 4 * neighbour cell + mirror index
+  };
+  std::vector<Cell> Cells;
   std::vector<std::pair<int32_t, int32_t>> Duplicates;
   friend class Delaunay3DBuilder;
 };

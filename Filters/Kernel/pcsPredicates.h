@@ -38,6 +38,18 @@ int InSphereExact(
 int Orient2DExact(const double* a, const double* b, const double* c);
 int InCircleExact(const double* a, const double* b, const double* c, const double* d);
 
+/// Largest magnitude of four finite doubles.
+inline double MaxAbs4(double a, double b, double c, double d)
+{
+  a = std::fabs(a);
+  b = std::fabs(b);
+  c = std::fabs(c);
+  d = std::fabs(d);
+  const double ab = a > b ? a : b;
+  const double cd = c > d ? c : d;
+  return ab > cd ? ab : cd;
+}
+
 /// Sign (-1, 0, +1) of det[a-d; b-d; c-d] (3D points).
 inline int Orient3D(const double* a, const double* b, const double* c, const double* d)
 {
@@ -90,6 +102,20 @@ inline int InSphere(
   const double clift = cex * cex + cey * cey + cez * cez;
   const double dlift = dex * dex + dey * dey + dez * dez;
   const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+  {
+    // Cheaper bound first: each of the 24 products of the permanent below is at most
+    // mx * my * mz * (mx^2 + my^2 + mz^2), with m* the largest difference magnitude per axis;
+    // the factor 1 + 2^-40 covers the rounding of this product.
+    const double mx = MaxAbs4(aex, bex, cex, dex);
+    const double my = MaxAbs4(aey, bey, cey, dey);
+    const double mz = MaxAbs4(aez, bez, cez, dez);
+    const double coarse = 24.0 * 1.7763568394002532e-15 * (1.0 + 9.0949470177292824e-13) *
+      (mx * my * mz) * (mx * mx + my * my + mz * mz);
+    if (std::fabs(det) > coarse)
+    {
+      return det > 0 ? 1 : -1;
+    }
+  }
   const double aezp = std::fabs(aez), bezp = std::fabs(bez);
   const double cezp = std::fabs(cez), dezp = std::fabs(dez);
   const double aexbeyp = std::fabs(aexbey), bexaeyp = std::fabs(bexaey);

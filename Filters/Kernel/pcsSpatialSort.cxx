@@ -1,7 +1,7 @@
 // Spatially coherent insertion order (private kernel). See pcsSpatialSort.h.
 //
-// Each point gets a Hilbert index on a 2^21 grid per axis over the bounding box of the
-// referenced points (63 bits in 3D, 42 bits in 2D). The index is computed with Skilling's
+// Each point gets a Hilbert index on a 2^16 grid per axis over the bounding box of the
+// referenced points (48 bits in 3D, 32 bits in 2D). The index is computed with Skilling's
 // transpose formulation ("Programming the Hilbert curve", AIP Conf. Proc. 707, 2004): the grid
 // coordinates are turned into the transposed Hilbert index by undoing the rotations level by
 // level and Gray-encoding the result; the bits are then interleaved into one integer key. Sorting
@@ -18,7 +18,28 @@ namespace pcs
 {
 namespace
 {
-constexpr int BitsPerAxis = 21;
+// 16 levels (65536 cells per axis) separate far more points than a triangulation holds near
+// any one cell; finer levels would only cost time.
+constexpr int BitsPerAxis = 16;
+
+// Spread the 16 low bits of v so that bit i moves to bit dim * i.
+uint64_t Spread(uint32_t v, int dim)
+{
+  uint64_t x = v & 0xffffu;
+  if (dim == 2)
+  {
+    x = (x | (x << 8)) & 0x00ff00ffull;
+    x = (x | (x << 4)) & 0x0f0f0f0full;
+    x = (x | (x << 2)) & 0x33333333ull;
+    x = (x | (x << 1)) & 0x55555555ull;
+    return x;
+  }
+  x = (x | (x << 16)) & 0x0000ff0000ffull;
+  x = (x | (x << 8)) & 0x00f00f00f00full;
+  x = (x | (x << 4)) & 0x0c30c30c30c3ull;
+  x = (x | (x << 2)) & 0x249249249249ull;
+  return x;
+}
 
 uint64_t HilbertKey(uint32_t* x, int dim)
 {
@@ -58,14 +79,11 @@ uint64_t HilbertKey(uint32_t* x, int dim)
   {
     x[i] ^= t;
   }
-  // Interleave: most significant bit of axis 0 first.
+  // Interleave: at every level, axis 0 gives the most significant bit.
   uint64_t key = 0;
-  for (int b = BitsPerAxis - 1; b >= 0; --b)
+  for (int i = 0; i < dim; ++i)
   {
-    for (int i = 0; i < dim; ++i)
-    {
-      key = (key << 1) | ((x[i] >> b) & 1u);
-    }
+    key |= Spread(x[i], dim) << (dim - 1 - i);
   }
   return key;
 }

@@ -1,0 +1,91 @@
+// Helpers shared by the C++ tests of PointCloudSurface (not part of the library).
+#ifndef pcsTestUtilities_h
+#define pcsTestUtilities_h
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <vector>
+
+namespace pcstest
+{
+#define PCS_CHECK(condition, message)                                                              \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(condition))                                                                              \
+    {                                                                                              \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #condition " -- " << message  \
+                << std::endl;                                                                      \
+      return false;                                                                                \
+    }                                                                                              \
+  } while (false)
+
+/// A point cloud (vertices only) from packed x, y, z coordinates.
+inline vtkSmartPointer<vtkPolyData> MakeCloud(const std::vector<double>& xyz)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(xyz.size() / 3));
+  for (size_t i = 0; i < xyz.size() / 3; ++i)
+  {
+    points->SetPoint(static_cast<vtkIdType>(i), &xyz[3 * i]);
+  }
+  auto cloud = vtkSmartPointer<vtkPolyData>::New();
+  cloud->SetPoints(points);
+  return cloud;
+}
+
+/// Uniform random points in the unit cube.
+inline std::vector<double> UniformCube(int n, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> xyz(3 * static_cast<size_t>(n));
+  for (double& c : xyz)
+  {
+    c = u(rng);
+  }
+  return xyz;
+}
+
+/// Cells of a data set as fixed-size id tuples (N = 3 or 4).
+template <int N, typename DataSetT>
+std::vector<std::array<vtkIdType, N>> CellTuples(DataSetT* data)
+{
+  std::vector<std::array<vtkIdType, N>> cells;
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    data->GetCellPoints(c, npts, pts);
+    std::array<vtkIdType, N> t;
+    for (int i = 0; i < N; ++i)
+    {
+      t[i] = i < npts ? pts[i] : -1;
+    }
+    cells.push_back(t);
+  }
+  return cells;
+}
+
+inline vtkIdType FieldCount(vtkDataObject* data, const char* name)
+{
+  vtkDataArray* array = data->GetFieldData()->GetArray(name);
+  return array ? static_cast<vtkIdType>(array->GetTuple1(0)) : -1;
+}
+} // namespace pcstest
+
+#endif

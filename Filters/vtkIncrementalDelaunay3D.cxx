@@ -357,37 +357,46 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
   {
     // VTK orders a tetrahedron so that (p1 - p0) x (p2 - p0) points towards p3, the opposite of
     // the kernel's Orient3D > 0 convention: swap the first two vertices.
-    std::vector<int32_t> connectivity(4 * static_cast<size_t>(numberOfFinite));
+    vtkNew<vtkTypeInt32Array> connectivity;
+    connectivity->SetNumberOfValues(4 * static_cast<vtkIdType>(numberOfFinite));
+    int32_t* ids = connectivity->GetPointer(0);
     for (int64_t c = 0; c < numberOfKernelCells; ++c)
     {
       const int32_t f = finiteIndex[c];
       if (f >= 0)
       {
-        int32_t* t = &connectivity[4 * static_cast<size_t>(f)];
-        t[0] = dt.Vertex(c, 1);
-        t[1] = dt.Vertex(c, 0);
-        t[2] = dt.Vertex(c, 2);
-        t[3] = dt.Vertex(c, 3);
+        const int32_t* v = dt.CellVertices(c);
+        int32_t* t = ids + 4 * static_cast<size_t>(f);
+        t[0] = v[1];
+        t[1] = v[0];
+        t[2] = v[2];
+        t[3] = v[3];
       }
     }
     dt.Clear();
     std::vector<int32_t>().swap(finiteIndex);
 
+    vtkNew<vtkTypeInt32Array> offsets;
+    offsets->SetNumberOfValues(static_cast<vtkIdType>(numberOfFinite) + 1);
+    int32_t* offset = offsets->GetPointer(0);
     vtkNew<vtkDoubleArray> radius;
     radius->SetName("Circumradius");
     radius->SetNumberOfValues(numberOfFinite);
+    double* radii = radius->GetPointer(0);
+    offset[numberOfFinite] = 4 * numberOfFinite;
     vtkSMPTools::For(0, numberOfFinite, [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType f = begin; f < end; ++f)
       {
-        const int32_t* t = &connectivity[4 * f];
-        double center[3], r;
+        const int32_t* t = ids + 4 * f;
+        double center[3];
         TetraCircumcenter(xyz + 3 * static_cast<int64_t>(t[0]), xyz + 3 * static_cast<int64_t>(t[1]),
-          xyz + 3 * static_cast<int64_t>(t[2]), xyz + 3 * static_cast<int64_t>(t[3]), center, r);
-        radius->SetValue(f, r);
+          xyz + 3 * static_cast<int64_t>(t[2]), xyz + 3 * static_cast<int64_t>(t[3]), center,
+          radii[f]);
+        offset[f] = static_cast<int32_t>(4 * f);
       }
     });
-    vtkSmartPointer<vtkCellArray> tetra = MakeCellArray(connectivity, 4);
-    std::vector<int32_t>().swap(connectivity);
+    vtkNew<vtkCellArray> tetra;
+    tetra->SetData(offsets, connectivity);
     cells->SetCells(VTK_TETRA, tetra);
     cells->GetCellData()->AddArray(radius);
   }

@@ -5,8 +5,10 @@
 // transpose formulation ("Programming the Hilbert curve", AIP Conf. Proc. 707, 2004): the grid
 // coordinates are turned into the transposed Hilbert index by undoing the rotations level by
 // level and Gray-encoding the result; the bits are then interleaved into one integer key. Sorting
-// by key gives the curve order.
+// by key gives the curve order. Keys and sorts run in parallel (vtkSMPTools).
 #include "pcsSpatialSort.h"
+
+#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>
@@ -113,19 +115,22 @@ void ComputeKeys(const double* coords, int dim, const int32_t* begin, const int3
   const double cells = static_cast<double>((1u << BitsPerAxis) - 1);
   const double scale = extent > 0.0 && std::isfinite(extent) ? cells / extent : 0.0;
 
-  keyed.clear();
-  keyed.reserve(end - begin);
-  for (const int32_t* it = begin; it != end; ++it)
-  {
-    const double* p = coords + static_cast<int64_t>(dim) * *it;
-    uint32_t x[3] = { 0, 0, 0 };
-    for (int i = 0; i < dim; ++i)
+  const int64_t count = end - begin;
+  keyed.resize(count);
+  vtkSMPTools::For(0, count, 4096, [&](int64_t first, int64_t last) {
+    for (int64_t i = first; i < last; ++i)
     {
-      const double g = (p[i] - lo[i]) * scale;
-      x[i] = static_cast<uint32_t>(std::min(std::max(g, 0.0), cells));
+      const int32_t id = begin[i];
+      const double* p = coords + static_cast<int64_t>(dim) * id;
+      uint32_t x[3] = { 0, 0, 0 };
+      for (int k = 0; k < dim; ++k)
+      {
+        const double g = (p[k] - lo[k]) * scale;
+        x[k] = static_cast<uint32_t>(std::min(std::max(g, 0.0), cells));
+      }
+      keyed[i] = std::make_pair(HilbertKey(x, dim), id);
     }
-    keyed.emplace_back(HilbertKey(x, dim), *it);
-  }
+  });
 }
 } // namespace
 
@@ -138,7 +143,7 @@ void HilbertSort(const double* coords, int dim, int32_t* begin, int32_t* end)
   }
   std::vector<std::pair<uint64_t, int32_t>> keyed;
   ComputeKeys(coords, dim, begin, end, keyed);
-  std::sort(keyed.begin(), keyed.end());
+  vtkSMPTools::Sort(keyed.begin(), keyed.end());
   for (const auto& k : keyed)
   {
     *begin++ = k.second;
@@ -161,13 +166,13 @@ void BRIOHilbertOrder(const double* coords, int dim, std::vector<int32_t>& ids, 
   std::mt19937_64 rng(seed);
   std::shuffle(keyed.begin(), keyed.end(), rng);
 
-  // Rounds: [0, n0) [n0, n1) ... [n_k, n) where each round is half of what precedes its end.
+  // Rounds: [0, n0) [n0, n1) ... [n_k, n), each holding 7/8 of the points up to its end.
   const int64_t minimum = std::max<int64_t>(minimumRoundSize, 1);
   int64_t end = n;
   while (end > 0)
   {
-    const int64_t begin = end > minimum ? end / 2 : 0;
-    std::sort(keyed.begin() + begin, keyed.begin() + end);
+    const int64_t begin = end > minimum ? end / 8 : 0;
+    vtkSMPTools::Sort(keyed.begin() + begin, keyed.begin() + end);
     end = begin;
   }
   for (int64_t i = 0; i < n; ++i)

@@ -720,12 +720,19 @@ int vtkIncrementalDelaunay3D::RequestData(
   // Coordinates as doubles; non-finite points are skipped (RepresentativeId -1).
   std::vector<double> xyz(3 * static_cast<size_t>(numberOfPoints));
   vtkPoints* points = input->GetPoints();
-  vtkSMPTools::For(0, numberOfPoints, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      points->GetPoint(i, &xyz[3 * i]);
-    }
-  });
+  if (auto* doubles = vtkDoubleArray::SafeDownCast(points->GetData()))
+  {
+    std::copy_n(doubles->GetPointer(0), xyz.size(), xyz.data());
+  }
+  else
+  {
+    vtkSMPTools::For(0, numberOfPoints, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        points->GetPoint(i, &xyz[3 * i]);
+      }
+    });
+  }
   std::vector<int32_t> ids;
   ids.reserve(numberOfPoints);
   for (vtkIdType i = 0; i < numberOfPoints; ++i)

@@ -32,7 +32,17 @@ struct BoundaryFacet
 {
   int32_t Vertices[4]; // vertices of the new cell (p already in Slot)
   uint32_t Outside;    // link to the cell outside the cavity: 4 * cell + mirror index
-  int Slot;            // position of p in the new cell
+  int16_t Slot;        // position of p in the new cell
+  uint16_t Local[4];   // cavity-boundary numbers of the vertices (not of p)
+};
+
+// For p in slot s, the facet of the new cell opposite slot k != s holds p and the vertices of
+// slots EdgeSlots[s][k][0] and EdgeSlots[s][k][1].
+constexpr int8_t EdgeSlots[4][4][2] = {
+  { { -1, -1 }, { 2, 3 }, { 1, 3 }, { 1, 2 } },
+  { { 2, 3 }, { -1, -1 }, { 0, 3 }, { 0, 2 } },
+  { { 1, 3 }, { 0, 3 }, { -1, -1 }, { 0, 1 } },
+  { { 1, 2 }, { 0, 2 }, { 0, 1 }, { -1, -1 } },
 };
 
 bool SamePoint(const double* a, const double* b)
@@ -308,7 +318,7 @@ void Delaunay3DBuilder::Insert(int32_t id)
       {
         facet.Vertices[k] = k == j ? id : cv[k];
       }
-      facet.Slot = j;
+      facet.Slot = static_cast<int16_t>(j);
       facet.Outside = link;
     }
   }
@@ -344,17 +354,22 @@ void Delaunay3DBuilder::Insert(int32_t id)
   // Small cavities (the usual case) pair the edges through a matrix indexed by local vertex
   // numbers; large ones through the hash table.
   size_t local = 0;
-  for (const BoundaryFacet& facet : this->Boundary)
+  for (BoundaryFacet& facet : this->Boundary)
   {
     for (int k = 0; k < 4; ++k)
     {
+      if (k == facet.Slot)
+      {
+        continue;
+      }
       const int32_t v = facet.Vertices[k];
       int32_t& index = v < 0 ? this->InfiniteLocalIndex : this->LocalIndex[v];
-      if (k != facet.Slot && index < 0)
+      if (index < 0)
       {
         index = static_cast<int32_t>(local++);
         this->LocalVertices.push_back(v);
       }
+      facet.Local[k] = static_cast<uint16_t>(index);
     }
   }
   const bool useMatrix = local <= MaximumMatrixVertices;
@@ -362,9 +377,6 @@ void Delaunay3DBuilder::Insert(int32_t id)
   {
     this->EdgeMatrix.assign(local * local, NoCell);
   }
-  auto localIndex = [this](int32_t v) {
-    return static_cast<size_t>(v < 0 ? this->InfiniteLocalIndex : this->LocalIndex[v]);
-  };
 
   uint32_t cell = NoCell;
   for (size_t i = 0; i < this->Boundary.size(); ++i)
@@ -379,21 +391,13 @@ void Delaunay3DBuilder::Insert(int32_t id)
       {
         continue;
       }
-      // The facet opposite slot k holds p and the vertices of the two remaining slots.
-      int a = -1, b = -1;
-      for (int m = 0; m < 4; ++m)
-      {
-        if (m != k && m != facet.Slot)
-        {
-          (a < 0 ? a : b) = m;
-        }
-      }
+      const int a = EdgeSlots[facet.Slot][k][0], b = EdgeSlots[facet.Slot][k][1];
       if (!useMatrix)
       {
         this->LinkAroundEdge(facet.Vertices[a], facet.Vertices[b], cell, k);
         continue;
       }
-      size_t la = localIndex(facet.Vertices[a]), lb = localIndex(facet.Vertices[b]);
+      size_t la = facet.Local[a], lb = facet.Local[b];
       if (la > lb)
       {
         std::swap(la, lb);

@@ -64,36 +64,6 @@ void OutwardHullTriangle(const int32_t* v, vtkIdType triangle[3])
   }
 }
 
-// Circumcentre of a tetrahedron (returns false when it is flat in floating point).
-bool TetraCircumcenter(const double* a, const double* b, const double* c, const double* d,
-  double center[3], double& radius)
-{
-  double ba[3], ca[3], da[3];
-  vtkMath::Subtract(b, a, ba);
-  vtkMath::Subtract(c, a, ca);
-  vtkMath::Subtract(d, a, da);
-  double cxd[3], dxb[3], bxc[3];
-  vtkMath::Cross(ca, da, cxd);
-  vtkMath::Cross(da, ba, dxb);
-  vtkMath::Cross(ba, ca, bxc);
-  const double denominator = 2.0 * vtkMath::Dot(ba, cxd);
-  if (denominator == 0.0)
-  {
-    center[0] = center[1] = center[2] = std::numeric_limits<double>::quiet_NaN();
-    radius = std::numeric_limits<double>::infinity();
-    return false;
-  }
-  const double lb = vtkMath::Dot(ba, ba), lc = vtkMath::Dot(ca, ca), ld = vtkMath::Dot(da, da);
-  double offset[3];
-  for (int i = 0; i < 3; ++i)
-  {
-    offset[i] = (lb * cxd[i] + lc * dxb[i] + ld * bxc[i]) / denominator;
-    center[i] = a[i] + offset[i];
-  }
-  radius = vtkMath::Norm(offset);
-  return true;
-}
-
 // Circumcentre of a triangle in 2D coordinates.
 bool TriangleCircumcenter2D(
   const double* a, const double* b, const double* c, double center[2], double& radius)
@@ -206,31 +176,30 @@ ProjectionFrame BestFitFrame(const double* xyz, const std::vector<int32_t>& ids)
 }
 
 //------------------------------------------------------------------------------------------------
-// Exact duplicates of the projected coordinates: sort by (u, v, id) and map each point to the
-// first of its group.
-void MergeExactDuplicates2D(
-  const double* uv, std::vector<int32_t>& ids, vtkIdTypeArray* representative)
+// Exact duplicates (dim = 2: of the projected coordinates): sort lexicographically, ties by id,
+// and map each point to the first of its group.
+void MergeExactDuplicates(
+  const double* coords, int dim, std::vector<int32_t>& ids, vtkIdTypeArray* representative)
 {
   std::vector<int32_t> sorted(ids);
-  vtkSMPTools::Sort(sorted.begin(), sorted.end(), [uv](int32_t a, int32_t b) {
-    const double* pa = uv + 2 * static_cast<int64_t>(a);
-    const double* pb = uv + 2 * static_cast<int64_t>(b);
-    if (pa[0] != pb[0])
+  vtkSMPTools::Sort(sorted.begin(), sorted.end(), [coords, dim](int32_t a, int32_t b) {
+    const double* pa = coords + dim * static_cast<int64_t>(a);
+    const double* pb = coords + dim * static_cast<int64_t>(b);
+    for (int i = 0; i < dim; ++i)
     {
-      return pa[0] < pb[0];
-    }
-    if (pa[1] != pb[1])
-    {
-      return pa[1] < pb[1];
+      if (pa[i] != pb[i])
+      {
+        return pa[i] < pb[i];
+      }
     }
     return a < b;
   });
   bool merged = false;
   for (size_t i = 1, first = 0; i < sorted.size(); ++i)
   {
-    const double* p = uv + 2 * static_cast<int64_t>(sorted[i]);
-    const double* q = uv + 2 * static_cast<int64_t>(sorted[first]);
-    if (p[0] == q[0] && p[1] == q[1])
+    const double* p = coords + dim * static_cast<int64_t>(sorted[i]);
+    const double* q = coords + dim * static_cast<int64_t>(sorted[first]);
+    if (std::equal(p, p + dim, q))
     {
       representative->SetValue(sorted[i], sorted[first]);
       merged = true;
@@ -309,6 +278,9 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
   {
     if (!self->GetAbortExecute())
     {
+      // The kernel reports duplicates only when it triangulates: count them here.
+      std::vector<int32_t> remaining(ids);
+      MergeExactDuplicates(xyz, 3, remaining, representative);
       vtkWarningWithObjectMacro(self, "Fewer than 4 distinct non-coplanar points among the "
           << ids.size() << " usable point(s): no tetrahedra are produced.");
     }
@@ -360,6 +332,13 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
     vtkNew<vtkTypeInt32Array> connectivity;
     connectivity->SetNumberOfValues(4 * static_cast<vtkIdType>(numberOfFinite));
     int32_t* ids = connectivity->GetPointer(0);
+    vtkNew<vtkTypeInt32Array> offsets;
+    offsets->SetNumberOfValues(static_cast<vtkIdType>(numberOfFinite) + 1);
+    int32_t* offset = offsets->GetPointer(0);
+    vtkNew<vtkDoubleArray> radius;
+    radius->SetName("Circumradius");
+    radius->SetNumberOfValues(numberOfFinite);
+    double* radii = radius->GetPointer(0);
     for (int64_t c = 0; c < numberOfKernelCells; ++c)
     {
       const int32_t f = finiteIndex[c];
@@ -371,30 +350,22 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
         t[1] = v[0];
         t[2] = v[2];
         t[3] = v[3];
+        offset[f] = 4 * f;
       }
     }
+    offset[numberOfFinite] = 4 * numberOfFinite;
     dt.Clear();
     std::vector<int32_t>().swap(finiteIndex);
-
-    vtkNew<vtkTypeInt32Array> offsets;
-    offsets->SetNumberOfValues(static_cast<vtkIdType>(numberOfFinite) + 1);
-    int32_t* offset = offsets->GetPointer(0);
-    vtkNew<vtkDoubleArray> radius;
-    radius->SetName("Circumradius");
-    radius->SetNumberOfValues(numberOfFinite);
-    double* radii = radius->GetPointer(0);
-    offset[numberOfFinite] = 4 * numberOfFinite;
     vtkSMPTools::For(0, numberOfFinite, [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType f = begin; f < end; ++f)
       {
         const int32_t* t = ids + 4 * f;
-        double center[3];
-        TetraCircumcenter(xyz + 3 * static_cast<int64_t>(t[0]), xyz + 3 * static_cast<int64_t>(t[1]),
-          xyz + 3 * static_cast<int64_t>(t[2]), xyz + 3 * static_cast<int64_t>(t[3]), center,
-          radii[f]);
-        offset[f] = static_cast<int32_t>(4 * f);
+        radii[f] = pcs::Delaunay3D::Circumradius(xyz + 3 * static_cast<int64_t>(t[0]),
+          xyz + 3 * static_cast<int64_t>(t[1]), xyz + 3 * static_cast<int64_t>(t[2]),
+          xyz + 3 * static_cast<int64_t>(t[3]));
       }
     });
+
     vtkNew<vtkCellArray> tetra;
     tetra->SetData(offsets, connectivity);
     cells->SetCells(VTK_TETRA, tetra);
@@ -426,7 +397,7 @@ void BuildVoronoi3D(const double* xyz, const pcs::Delaunay3D& dt,
       continue;
     }
     double center[3];
-    TetraCircumcenter(P(dt.Vertex(c, 0)), P(dt.Vertex(c, 1)), P(dt.Vertex(c, 2)),
+    pcs::Delaunay3D::Circumsphere(P(dt.Vertex(c, 0)), P(dt.Vertex(c, 1)), P(dt.Vertex(c, 2)),
       P(dt.Vertex(c, 3)), center, radii[f]);
     vertices->SetPoint(f, center);
     for (int j = 0; j < 4; ++j)
@@ -770,7 +741,7 @@ int vtkIncrementalDelaunay3D::RequestData(
     {
       frame.Project(&xyz[3 * static_cast<size_t>(id)], &uv[2 * static_cast<size_t>(id)]);
     }
-    MergeExactDuplicates2D(uv.data(), ids, representative);
+    MergeExactDuplicates(uv.data(), 2, ids, representative);
   }
   if (this->Tolerance > 0.0)
   {

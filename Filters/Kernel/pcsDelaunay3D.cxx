@@ -18,6 +18,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -636,6 +638,60 @@ bool Delaunay3DBuilder::Run(std::vector<int32_t> order, const Delaunay3D::Progre
     duplicate.second = order[duplicate.second];
   }
   return true;
+}
+
+//------------------------------------------------------------------------------------------------
+void Delaunay3D::Circumsphere(const double* a, const double* b, const double* c, const double* d,
+  double center[3], double& radius)
+{
+  double offset[3];
+  radius = CircumsphereOffset(a, b, c, d, offset);
+  for (int i = 0; i < 3; ++i)
+  {
+    center[i] = a[i] + offset[i];
+  }
+}
+
+double Delaunay3D::Circumradius(const double* a, const double* b, const double* c, const double* d)
+{
+  double offset[3];
+  return CircumsphereOffset(a, b, c, d, offset);
+}
+
+// Centre minus a, from the three edge vectors at a; returns the radius.
+double Delaunay3D::CircumsphereOffset(
+  const double* a, const double* b, const double* c, const double* d, double offset[3])
+{
+  double ba[3], ca[3], da[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    ba[i] = b[i] - a[i];
+    ca[i] = c[i] - a[i];
+    da[i] = d[i] - a[i];
+  }
+  const double cxd[3] = { ca[1] * da[2] - ca[2] * da[1], ca[2] * da[0] - ca[0] * da[2],
+    ca[0] * da[1] - ca[1] * da[0] };
+  const double dxb[3] = { da[1] * ba[2] - da[2] * ba[1], da[2] * ba[0] - da[0] * ba[2],
+    da[0] * ba[1] - da[1] * ba[0] };
+  const double bxc[3] = { ba[1] * ca[2] - ba[2] * ca[1], ba[2] * ca[0] - ba[0] * ca[2],
+    ba[0] * ca[1] - ba[1] * ca[0] };
+  const double denominator = 2.0 * (ba[0] * cxd[0] + ba[1] * cxd[1] + ba[2] * cxd[2]);
+  if (denominator == 0.0)
+  {
+    offset[0] = offset[1] = offset[2] = std::numeric_limits<double>::quiet_NaN();
+    return std::numeric_limits<double>::infinity();
+  }
+  const double lb = ba[0] * ba[0] + ba[1] * ba[1] + ba[2] * ba[2];
+  const double lc = ca[0] * ca[0] + ca[1] * ca[1] + ca[2] * ca[2];
+  const double ld = da[0] * da[0] + da[1] * da[1] + da[2] * da[2];
+  const double inverse = 1.0 / denominator;
+  double squared = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    offset[i] = (lb * cxd[i] + lc * dxb[i] + ld * bxc[i]) * inverse;
+    squared += offset[i] * offset[i];
+  }
+  return std::sqrt(squared);
 }
 
 //------------------------------------------------------------------------------------------------

@@ -27,6 +27,14 @@ public:
   bool Triangulate(const double* xyz, const std::vector<int32_t>& ids,
     const ProgressFunction& progress = ProgressFunction());
 
+  /// Circumcentre and circumradius of the tetrahedron abcd (NaN centre and infinite radius when
+  /// it is flat in floating point).
+  static void Circumsphere(const double* a, const double* b, const double* c, const double* d,
+    double center[3], double& radius);
+
+  /// Circumradius only (+inf when flat in floating point).
+  static double Circumradius(const double* a, const double* b, const double* c, const double* d);
+
   /// Number of cells, finite and infinite.
   int64_t GetNumberOfCells() const { return static_cast<int64_t>(this->Cells.size()); }
 
@@ -58,6 +66,9 @@ public:
   void Clear();
 
 private:
+  static double CircumsphereOffset(
+    const double* a, const double* b, const double* c, const double* d, double offset[3]);
+
   // One 32-byte record per cell (vertices and links side by side: one cache line visit).
   struct Cell
   {

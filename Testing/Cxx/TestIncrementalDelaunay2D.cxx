@@ -15,6 +15,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -90,15 +91,40 @@ bool CompareWithPeers()
   std::cout << "terrain 2e4: ours " << ours.size() << ", vtkDelaunay2D " << theirs.size()
             << ", CGAL " << reference.size() << std::endl;
   PCS_CHECK(ours == reference, "2.5D triangles differ from CGAL");
-  // vtkDelaunay2D starts from a finite bounding triangulation, so it misses some thin triangles
-  // along the convex hull; every triangle it does produce must be ours.
-  size_t missing = 0;
+  // vtkDelaunay2D is not an exact Delaunay triangulation: it starts from a finite bounding
+  // triangulation (so it misses thin triangles along the convex hull) and decides in floating
+  // point. So its triangles cannot all equal ours; instead every one of its triangles that is not
+  // ours must be wrong, i.e. have an input point strictly inside its circumcircle (exact
+  // predicate), and it must agree with ours on almost everything.
+  auto Q = [&xyz](vtkIdType i) { return Point2(xyz[3 * i], xyz[3 * i + 1]); };
+  size_t missing = 0, common = 0;
   for (const auto& t : theirs)
   {
-    missing += ours.count(t) ? 0 : 1;
+    if (ours.count(t))
+    {
+      ++common;
+      continue;
+    }
+    ++missing;
+    Point2 a = Q(t[0]), b = Q(t[1]), c = Q(t[2]);
+    if (CGAL::orientation(a, b, c) == CGAL::RIGHT_TURN)
+    {
+      std::swap(b, c);
+    }
+    bool witness = false;
+    for (size_t i = 0; i < xyz.size() / 3 && !witness; ++i)
+    {
+      witness = CGAL::side_of_oriented_circle(a, b, c, Q(static_cast<vtkIdType>(i))) ==
+        CGAL::ON_POSITIVE_SIDE;
+    }
+    PCS_CHECK(witness,
+      "vtkDelaunay2D triangle (" << t[0] << ", " << t[1] << ", " << t[2]
+                                 << ") is Delaunay but not in the 2.5D triangulation");
   }
-  std::cout << "vtkDelaunay2D triangles not in ours: " << missing << std::endl;
-  PCS_CHECK(missing == 0, "a vtkDelaunay2D triangle is not in the 2.5D triangulation");
+  std::cout << "vtkDelaunay2D: " << common << " triangles in common, " << missing
+            << " not Delaunay (a point strictly inside the circumcircle), "
+            << ours.size() - common << " of ours missing" << std::endl;
+  PCS_CHECK(common >= 0.99 * ours.size(), "vtkDelaunay2D agrees on less than 99 %");
   return true;
 }
 
@@ -120,6 +146,19 @@ bool CheckGrid()
   delaunay->SetDimension(2);
   delaunay->Update();
   PCS_CHECK(delaunay->GetNumberOfDuplicatePoints() == 1, "projected duplicate merged");
+  {
+    vtkDataArray* representative =
+      delaunay->GetSurfaceOutput()->GetPointData()->GetArray("RepresentativeId");
+    const vtkIdType last = static_cast<vtkIdType>(xyz.size() / 3) - 1;
+    PCS_CHECK(representative->GetTuple1(last) == 5 * g + 7,
+      "the projected duplicate is represented by the grid point (5, 7)");
+    for (vtkIdType i = 0; i < last; ++i)
+    {
+      PCS_CHECK(representative->GetTuple1(i) == i, "grid point " << i << " represents itself");
+    }
+    PCS_CHECK(pcstest::FieldCount(delaunay->GetSurfaceOutput(), "NumberOfDuplicatePoints") == 1,
+      "field data duplicate count");
+  }
   const auto triangles = pcstest::CellTuples<3>(delaunay->GetSurfaceOutput());
   const int n = g * g, h = 4 * (g - 1);
   PCS_CHECK(static_cast<int>(triangles.size()) == 2 * n - 2 - h,
@@ -157,6 +196,35 @@ bool CheckGrid()
     PCS_CHECK(used[i], "grid point " << i << " unused");
   }
   PCS_CHECK(std::fabs(area - (g - 1) * (g - 1)) < 1e-9, "grid area " << area);
+
+  // The grid is massively cocircular: the triangulation is fixed by the symbolic perturbation,
+  // which depends on the points only, so a permuted input gives the same triangles.
+  std::vector<vtkIdType> permutation(n);
+  for (int i = 0; i < n; ++i)
+  {
+    permutation[i] = i;
+  }
+  std::shuffle(permutation.begin(), permutation.end(), std::mt19937_64(99));
+  std::vector<double> permuted(3 * static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i)
+  {
+    std::copy(&xyz[3 * permutation[i]], &xyz[3 * permutation[i]] + 3, &permuted[3 * i]);
+  }
+  vtkNew<vtkIncrementalDelaunay3D> shuffled;
+  shuffled->SetInputData(pcstest::MakeCloud(permuted));
+  shuffled->SetDimension(2);
+  shuffled->Update();
+  TriangleSet mapped;
+  for (auto t : pcstest::CellTuples<3>(shuffled->GetSurfaceOutput()))
+  {
+    for (vtkIdType& id : t)
+    {
+      id = permutation[id];
+    }
+    std::sort(t.begin(), t.end());
+    mapped.insert(t);
+  }
+  PCS_CHECK(mapped == Sorted(triangles), "the grid triangulation depends on the input order");
   return true;
 }
 

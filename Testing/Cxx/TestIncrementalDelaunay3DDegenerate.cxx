@@ -1,7 +1,9 @@
-// Degenerate inputs (cospherical grid, points on a sphere, duplicates, coplanar layers, a large
-// offset): every distinct point is a vertex, every tetrahedron has positive volume, every
-// interior facet is locally Delaunay and the volumes sum to the hull volume. Signs are checked
-// with CGAL's exact predicates; the hull volume comes from CGAL::convex_hull_3.
+// Degenerate inputs (cospherical grid, points on a sphere, duplicates, coplanar layers and
+// collinear lines, a large offset): every distinct point is a vertex, every tetrahedron has
+// positive volume, every interior facet is locally Delaunay, the boundary facets are the hull
+// output (oriented outwards), V - E + F - T = 1, the volumes sum to the hull volume, and the
+// result does not depend on the input order. Signs are checked with CGAL's exact predicates;
+// the hull volume comes from CGAL::convex_hull_3.
 #include "vtkIncrementalDelaunay3D.h"
 
 #include "pcsCGALReference.h"
@@ -11,8 +13,10 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <map>
+#include <set>
 
 namespace
 {
@@ -182,6 +186,56 @@ bool CheckTriangulation(const std::vector<double>& xyz, vtkIdType expectedDuplic
             << ")" << std::endl;
   return true;
 }
+// The header promises an output independent of the insertion order: cospherical ties are
+// broken by a perturbation that depends on the points only. A permuted input (which changes the
+// insertion order) must give the same tetrahedra and hull, up to the renumbering.
+bool CheckOrderIndependence(const std::vector<double>& xyz, unsigned seed, const char* label)
+{
+  const size_t n = xyz.size() / 3;
+  std::vector<vtkIdType> permutation(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    permutation[i] = static_cast<vtkIdType>(i);
+  }
+  std::shuffle(permutation.begin(), permutation.end(), std::mt19937_64(seed));
+  std::vector<double> permuted(xyz.size());
+  for (size_t i = 0; i < n; ++i)
+  {
+    std::copy(&xyz[3 * permutation[i]], &xyz[3 * permutation[i]] + 3, &permuted[3 * i]);
+  }
+  auto Run = [](const std::vector<double>& points, const std::vector<vtkIdType>* map,
+               std::set<std::array<vtkIdType, 4>>& tets, std::set<std::array<vtkIdType, 3>>& hull) {
+    vtkNew<vtkIncrementalDelaunay3D> delaunay;
+    delaunay->SetInputData(pcstest::MakeCloud(points));
+    delaunay->Update();
+    for (auto t : pcstest::CellTuples<4>(delaunay->GetTetrahedraOutput()))
+    {
+      for (vtkIdType& id : t)
+      {
+        id = map ? (*map)[id] : id;
+      }
+      std::sort(t.begin(), t.end());
+      tets.insert(t);
+    }
+    for (auto t : pcstest::CellTuples<3>(delaunay->GetSurfaceOutput()))
+    {
+      for (vtkIdType& id : t)
+      {
+        id = map ? (*map)[id] : id;
+      }
+      std::sort(t.begin(), t.end());
+      hull.insert(t);
+    }
+  };
+  std::set<std::array<vtkIdType, 4>> tets, permutedTets;
+  std::set<std::array<vtkIdType, 3>> hull, permutedHull;
+  Run(xyz, nullptr, tets, hull);
+  Run(permuted, &permutation, permutedTets, permutedHull);
+  PCS_CHECK(!tets.empty(), label << ": tetrahedra");
+  PCS_CHECK(tets == permutedTets, label << ": the tetrahedra depend on the input order");
+  PCS_CHECK(hull == permutedHull, label << ": the hull depends on the input order");
+  return true;
+}
 } // namespace
 
 int TestIncrementalDelaunay3DDegenerate(int, char*[])
@@ -198,6 +252,7 @@ int TestIncrementalDelaunay3DDegenerate(int, char*[])
           xyz.insert(xyz.end(), { double(i), double(j), double(k) });
         }
     ok = CheckTriangulation(xyz, 0, 11.0 * 11.0 * 11.0, "grid 12^3") && ok;
+    ok = CheckOrderIndependence(xyz, 1, "grid 12^3 permuted") && ok;
   }
   { // 2000 points on the unit sphere (cospherical up to rounding) and its centre.
     std::normal_distribution<double> g;
@@ -210,6 +265,7 @@ int TestIncrementalDelaunay3DDegenerate(int, char*[])
     }
     xyz.insert(xyz.end(), { 0.0, 0.0, 0.0 });
     ok = CheckTriangulation(xyz, 0, 0, "sphere 2000") && ok;
+    ok = CheckOrderIndependence(xyz, 2, "sphere 2000 permuted") && ok;
   }
   { // 5000 random points and 500 exact duplicates of some of them, shuffled.
     std::vector<double> base = pcstest::UniformCube(5000, 3);
@@ -248,9 +304,12 @@ int TestIncrementalDelaunay3DDegenerate(int, char*[])
     }
     for (int i = 0; i <= 20; ++i)
     {
-      xyz.insert(xyz.end(), { 0.05 * i, 0.0, 0.0 });
+      xyz.insert(xyz.end(), { 0.05 * i, 0.0, 0.0 });          // on an edge of the hull
+      xyz.insert(xyz.end(), { 0.25, 0.025 * i + 0.25, 0.5 }); // inside a layer
+      xyz.insert(xyz.end(), { 0.5, 0.5, 0.05 * i });          // across all layers
     }
-    ok = CheckTriangulation(xyz, 0, 0, "coplanar layers") && ok;
+    ok = CheckTriangulation(xyz, 0, 0, "coplanar layers and lines") && ok;
+    ok = CheckOrderIndependence(xyz, 3, "coplanar layers and lines permuted") && ok;
   }
   { // Large offset, tiny extent: the floating-point filter fails often, exact arithmetic decides.
     std::uniform_real_distribution<double> u(0.0, 1e-3);

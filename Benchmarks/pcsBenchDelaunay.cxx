@@ -1,7 +1,11 @@
 // One Delaunay construction per process, timed, with the process's peak memory:
-//   pcsBenchDelaunay <ours|vtk|cgal> <uniform:N | surface:N | file.xyz | file.off>
+//   pcsBenchDelaunay <ours|kernel|vtk|cgal> <uniform:N | surface:N | file.xyz | file.off>
+// ours: the vtkIncrementalDelaunay3D filter (tetrahedra output on); kernel: its triangulation
+// kernel alone (no VTK arrays).
 // prints one JSON line. One method per process, so getrusage's peak RSS is the method's own.
 #include "vtkIncrementalDelaunay3D.h"
+
+#include "pcsDelaunay3D.h"
 
 #include "vtkDelaunay3D.h"
 #include "vtkNew.h"
@@ -113,7 +117,23 @@ int main(int argc, char* argv[])
   double seconds = 0.0;
   using Clock = std::chrono::steady_clock;
 
-  if (method == "cgal")
+  if (method == "kernel")
+  {
+    std::vector<int32_t> ids(n);
+    for (long i = 0; i < n; ++i)
+    {
+      ids[i] = static_cast<int32_t>(i);
+    }
+    pcs::Delaunay3D dt;
+    const auto start = Clock::now();
+    dt.Triangulate(xyz.data(), ids);
+    seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    for (int64_t c = 0; c < dt.GetNumberOfCells(); ++c)
+    {
+      cells += dt.IsInfinite(c) ? 0 : 1;
+    }
+  }
+  else if (method == "cgal")
   {
     using K = CGAL::Exact_predicates_inexact_constructions_kernel;
     std::vector<K::Point_3> points;

@@ -1,0 +1,159 @@
+/**
+ * @class   vtkReconstructionQuality
+ * @brief   topological and geometric quality measures of a reconstructed triangle mesh,
+ *          optionally against a reference surface or the original point cloud.
+ *
+ * vtkReconstructionQuality analyses the triangles of a vtkPolyData (input port 0) -- typically
+ * the output of a surface reconstruction filter, whose points may include cloud points that no
+ * triangle uses -- and, when a reference is connected to input port 1, the distance between the
+ * mesh and that reference. The output is a shallow copy of the input mesh with the measures
+ * added as cell, point and field data; the input is never modified.
+ *
+ * Definitions. The analysed triangles are the polygons with exactly 3 point ids. A triangle
+ * whose ids are not distinct ("collapsed") is counted as degenerate and takes no part in the
+ * topology; every other triangle, including zero-area and duplicate triangles, does. An edge is
+ * an unordered pair of point ids; its valence is the number of triangles that have it.
+ * Point data:
+ * - `Used`: 1 when the point is a vertex of a triangle (collapsed ones included), else 0.
+ * - `NonManifoldVertex`: 1 when the triangles around the point do not form a single fan -- the
+ *   triangles incident to the point, linked when they share an edge at the point, form more than
+ *   one connected component -- or when the point is on a non-manifold edge; else 0.
+ * - `DistanceToReference` (with a reference, ComputeDistances on): unsigned distance from the
+ *   point to the reference (see below); NaN for unused points.
+ * Cell data (one value per cell of the mesh; -1 or NaN for cells that are not analysed:
+ * vertices, lines, strips, polygons with another point count, collapsed triangles for the edge
+ * counts):
+ * - `NonManifoldEdge`: number of the triangle's edges of valence > 2 (0 to 3).
+ * - `BoundaryEdge`: number of the triangle's edges of valence 1 (0 to 3).
+ * - `MinAngle`: smallest interior angle of the triangle in degrees (0 for degenerate ones).
+ * Field data (one tuple each):
+ * - `NumberOfTriangles` (3-point polygons), `NumberOfUsedPoints`, `Coverage` (used points /
+ *   input points, 0 without points).
+ * - `NumberOfNonManifoldEdges` (valence > 2), `NumberOfNonManifoldVertices`,
+ *   `NumberOfBoundaryEdges` (valence 1).
+ * - `NumberOfBoundaryLoops`: closed loops of boundary edges. A loop is walked from a boundary
+ *   edge: at its end vertex the next boundary edge is found by turning around the vertex through
+ *   the fan of triangles linked by valence-2 edges (so that two holes touching at a vertex are
+ *   two loops, whatever the triangle orientation). A walk that meets a non-manifold edge is an
+ *   open chain and is not counted.
+ * - `NumberOfConnectedComponents`: components of the triangles linked through shared edges
+ *   (triangles touching only at a vertex are in different components).
+ * - `EulerCharacteristic`: V - E + F of the non-collapsed triangles (V: their distinct vertices,
+ *   E: their distinct edges, F: their number, duplicates included).
+ * - `Genus`: when the mesh is closed (no boundary edge), manifold (no non-manifold edge or
+ *   vertex) and every component is orientable, the sum of the genera of its components,
+ *   (2 C - EulerCharacteristic) / 2 with C components (for one component the usual
+ *   (2 - chi) / 2); otherwise -1.
+ * - `OrientationConsistency`: fraction of the valence-2 edges whose two triangles traverse the
+ *   edge in opposite directions (1 when the mesh has no valence-2 edge).
+ * - `NumberOfDegenerateTriangles`: triangles with a repeated point id or zero area (decided
+ *   exactly: the three points are collinear, by exact orientation predicates).
+ * - `NumberOfDuplicateTriangles`: triangles with the same point-id set as an earlier triangle
+ *   (a pair counts 1).
+ * - `MinAngleP1`: 1st percentile (nearest rank) of the per-triangle MinAngle (NaN without
+ *   triangles).
+ *
+ * Distances (input port 1 connected and ComputeDistances on). The reference is a surface when it
+ * has triangle cells (VTK_TRIANGLE or 3-point polygons), otherwise a cloud (all its points).
+ * Each side is sampled deterministically: its vertices (for the mesh its used points, for a
+ * reference surface the points of its triangles, for a cloud all its points) plus
+ * SamplesPerTriangle points in every triangle, the first the centroid, the others the R2
+ * low-discrepancy sequence (Roberts, 2018) folded into the triangle. The distance from a sample
+ * to a surface is the distance to the closest of its triangles of non-zero area
+ * (vtkStaticCellLocator); to a cloud, or to a surface without such triangles, the distance to
+ * the nearest point (vtkStaticPointLocator).
+ * - `AccuracyMean`, `AccuracyMax`: mean and maximum over the mesh samples of the distance to the
+ *   reference (unweighted mean: every triangle gets the same number of samples).
+ * - `CompletenessMean`, `CompletenessMax`: the same from the reference samples to the mesh.
+ * - `Hausdorff`: max(AccuracyMax, CompletenessMax), the sampled symmetric Hausdorff distance.
+ * - `MeanSpacing`: mean nearest-neighbour distance of the cloud: the mesh's used points when the
+ *   reference is a surface, the reference's points when it is a cloud (exact duplicates are
+ *   skipped when looking for the nearest neighbour).
+ * - `AccuracyMeanOverSpacing`, `AccuracyMaxOverSpacing`, `CompletenessMeanOverSpacing`,
+ *   `CompletenessMaxOverSpacing`, `HausdorffOverSpacing`: the distances divided by MeanSpacing
+ *   (NaN when the spacing is 0 or undefined).
+ * When one side is empty the distances are NaN (with a warning).
+ *
+ * Cost: the topology is O(T log T) for T triangles (one sort of the 3T half-edges), the fans
+ * O(sum of vertex degrees); memory about 120 bytes per triangle. The distance queries run in
+ * parallel with vtkSMPTools::For: each thread uses its own vtkGenericCell with the thread-safe
+ * vtkAbstractCellLocator::FindClosestPoint(x, closest, cell, cellId, subId, dist2) overload of
+ * VTK 9.2, and vtkStaticPointLocator's queries are thread safe once built; the per-sample
+ * distances are stored and reduced in sample order, so results do not depend on the SMP backend
+ * or the thread count.
+ *
+ * @warning
+ * Polygons with more or fewer than 3 points and triangle strips are ignored (not triangulated),
+ * with a warning; vertex and line cells are ignored silently. Triangles with out-of-range point
+ * ids are ignored with a warning. An input without points or without triangles gives a warning
+ * and a valid output with zero counts. The measures are computed on the data each process holds:
+ * under MPI every rank analyses its own piece.
+ *
+ * @sa
+ * vtkIncrementalDelaunay3D vtkMeshQuality vtkFeatureEdges vtkDistancePolyDataFilter
+ * vtkStaticCellLocator vtkStaticPointLocator
+ */
+
+#ifndef vtkReconstructionQuality_h
+#define vtkReconstructionQuality_h
+
+#include "vtkPointCloudSurfaceFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class vtkAlgorithmOutput;
+class vtkDataObject;
+
+class VTKPOINTCLOUDSURFACEFILTERS_EXPORT vtkReconstructionQuality : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkReconstructionQuality* New();
+  vtkTypeMacro(vtkReconstructionQuality, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The optional reference (input port 1): a vtkPointSet that is either a surface (its triangle
+   * cells are used) or a point cloud (no triangle cells: its points are used). Equivalent to
+   * SetInputConnection(1, output) / SetInputData(1, data); nullptr disconnects it.
+   */
+  void SetReferenceConnection(vtkAlgorithmOutput* output);
+  void SetReferenceData(vtkDataObject* data);
+  ///@}
+
+  ///@{
+  /**
+   * Number of sample points per triangle, besides the vertices, for the accuracy and
+   * completeness distances (the first is the centroid, the others follow the R2 sequence).
+   * Default 3; range [0, 100]. 0 samples the vertices only.
+   */
+  vtkSetClampMacro(SamplesPerTriangle, int, 0, 100);
+  vtkGetMacro(SamplesPerTriangle, int);
+  ///@}
+
+  ///@{
+  /**
+   * Compute the distances to the reference (point data DistanceToReference, field data
+   * Accuracy*, Completeness*, Hausdorff*, MeanSpacing). Default on. Only matters when a
+   * reference is connected to input port 1.
+   */
+  vtkSetMacro(ComputeDistances, bool);
+  vtkGetMacro(ComputeDistances, bool);
+  vtkBooleanMacro(ComputeDistances, bool);
+  ///@}
+
+protected:
+  vtkReconstructionQuality();
+  ~vtkReconstructionQuality() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int SamplesPerTriangle = 3;
+  bool ComputeDistances = true;
+
+private:
+  vtkReconstructionQuality(const vtkReconstructionQuality&) = delete;
+  void operator=(const vtkReconstructionQuality&) = delete;
+};
+
+#endif

@@ -32,10 +32,11 @@
  * - `NumberOfNonManifoldEdges` (valence > 2), `NumberOfNonManifoldVertices`,
  *   `NumberOfBoundaryEdges` (valence 1).
  * - `NumberOfBoundaryLoops`: closed loops of boundary edges. A loop is walked from a boundary
- *   edge: at its end vertex the next boundary edge is found by turning around the vertex through
- *   the fan of triangles linked by valence-2 edges (so that two holes touching at a vertex are
- *   two loops, whatever the triangle orientation). A walk that meets a non-manifold edge is an
- *   open chain and is not counted.
+ *   edge: at its end point the next boundary edge is found by turning around the point through
+ *   the fan of triangles linked by valence-2 edges, whatever the triangle orientation. The loops
+ *   are thus those of the surface obtained by splitting every non-manifold point into one copy
+ *   per fan: two disks touching at a point have 2 loops, two holes of one sheet touching at a
+ *   corner form 1 loop. A walk that meets a non-manifold edge is an open chain, not counted.
  * - `NumberOfConnectedComponents`: components of the triangles linked through shared edges
  *   (triangles touching only at a vertex are in different components).
  * - `EulerCharacteristic`: V - E + F of the non-collapsed triangles (V: their distinct vertices,
@@ -75,12 +76,13 @@
  * When one side is empty the distances are NaN (with a warning).
  *
  * Cost: the topology is O(T log T) for T triangles (one sort of the 3T half-edges), the fans
- * O(sum of vertex degrees); memory about 120 bytes per triangle. The distance queries run in
- * parallel with vtkSMPTools::For: each thread uses its own vtkGenericCell with the thread-safe
- * vtkAbstractCellLocator::FindClosestPoint(x, closest, cell, cellId, subId, dist2) overload of
- * VTK 9.2, and vtkStaticPointLocator's queries are thread safe once built; the per-sample
- * distances are stored and reduced in sample order, so results do not depend on the SMP backend
- * or the thread count.
+ * O(sum of point degrees); peak memory about 250 bytes per triangle, plus 8 bytes per distance
+ * sample. The fans and the distance queries run in parallel with vtkSMPTools::For: each thread
+ * uses its own vtkGenericCell with the vtkAbstractCellLocator::FindClosestPoint(x, closest,
+ * cell, cellId, subId, dist2) overload that VTK 9.2 documents as thread safe (the locator's
+ * cells are built beforehand), and vtkStaticPointLocator's queries are thread safe once built.
+ * The per-sample distances are stored and reduced in sample order, so the results do not depend
+ * on the SMP backend or the thread count (tested: Sequential and STDThread agree bit for bit).
  *
  * @warning
  * Polygons with more or fewer than 3 points and triangle strips are ignored (not triangulated),

@@ -144,6 +144,8 @@ private:
   std::vector<int32_t> LocalVertices;
   std::vector<uint32_t> EdgeMatrix;
   uint32_t Hint = 0;
+  double StaticInSphereBound = 0.0; // static filters from the extent of all points
+  double StaticOrientBound = 0.0;
   uint64_t Random = 0x9E3779B97F4A7C15ull;
 };
 
@@ -154,8 +156,9 @@ bool Delaunay3DBuilder::InConflict(uint32_t c, const double* p) const
   const int inf = InfiniteSlot(v);
   if (inf < 0)
   {
-    return predicates::InSphereSoS(this->P(v[0]), this->P(v[1]), this->P(v[2]), this->P(v[3]), p) >
-      0;
+    const double *a = this->P(v[0]), *b = this->P(v[1]), *c = this->P(v[2]), *d = this->P(v[3]);
+    const int side = predicates::InSphere(a, b, c, d, p, this->StaticInSphereBound);
+    return (side != 0 ? side : predicates::InSphereSoS(a, b, c, d, p)) > 0;
   }
   const double* w[4];
   for (int k = 0; k < 4; ++k)
@@ -214,7 +217,7 @@ uint32_t Delaunay3DBuilder::Locate(const double* p)
       }
       const double* saved = w[j];
       w[j] = p;
-      const int side = predicates::Orient3D(w[0], w[1], w[2], w[3]);
+      const int side = predicates::Orient3D(w[0], w[1], w[2], w[3], this->StaticOrientBound);
       w[j] = saved;
       if (side < 0)
       {
@@ -590,6 +593,21 @@ bool Delaunay3DBuilder::Run(std::vector<int32_t> order, const Delaunay3D::Progre
   }
   const double* original = this->XYZ;
   this->XYZ = coordinates.data();
+  {
+    double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
+    for (size_t i = 0; i < n; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const double x = coordinates[3 * i + k];
+        lo[k] = i == 0 ? x : std::min(lo[k], x);
+        hi[k] = i == 0 ? x : std::max(hi[k], x);
+      }
+    }
+    const double extent = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
+    this->StaticInSphereBound = predicates::InSphereStaticBound(extent);
+    this->StaticOrientBound = predicates::Orient3DStaticBound(extent);
+  }
   std::vector<int32_t> insertion(n);
   for (size_t i = 0; i < n; ++i)
   {

@@ -51,7 +51,9 @@ inline double MaxAbs4(double a, double b, double c, double d)
 }
 
 /// Sign (-1, 0, +1) of det[a-d; b-d; c-d] (3D points).
-inline int Orient3D(const double* a, const double* b, const double* c, const double* d)
+/// `staticBound`: as for InSphere, Orient3DStaticBound(E) for differences at most E; 0 disables.
+inline int Orient3D(
+  const double* a, const double* b, const double* c, const double* d, double staticBound = 0.0)
 {
   const double adx = a[0] - d[0], ady = a[1] - d[1], adz = a[2] - d[2];
   const double bdx = b[0] - d[0], bdy = b[1] - d[1], bdz = b[2] - d[2];
@@ -61,6 +63,10 @@ inline int Orient3D(const double* a, const double* b, const double* c, const dou
   const double adxbdy = adx * bdy, bdxady = bdx * ady;
   const double det =
     adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+  if (staticBound > 0.0 && std::fabs(det) > staticBound)
+  {
+    return det > 0 ? 1 : -1;
+  }
   const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
     (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
     (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
@@ -78,8 +84,13 @@ inline int Orient3D(const double* a, const double* b, const double* c, const dou
 }
 
 /// Sign of the insphere determinant (may be 0 for cospherical points).
-inline int InSphere(
-  const double* a, const double* b, const double* c, const double* d, const double* e)
+///
+/// `staticBound` (optional) is a static filter for callers that know a bound E on every
+/// coordinate difference (e.g. the extent of the bounding box of all points): pass
+/// InSphereStaticBound(E) and a determinant larger than it in magnitude is decided without the
+/// per-call bounds below. 0 (the default) disables it.
+inline int InSphere(const double* a, const double* b, const double* c, const double* d,
+  const double* e, double staticBound = 0.0)
 {
   const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
   const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
@@ -102,6 +113,10 @@ inline int InSphere(
   const double clift = cex * cex + cey * cey + cez * cez;
   const double dlift = dex * dex + dey * dey + dez * dez;
   const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+  if (staticBound > 0.0 && std::fabs(det) > staticBound)
+  {
+    return det > 0 ? 1 : -1;
+  }
   {
     // Cheaper bound first: each of the 24 products of the permanent below is at most
     // mx * my * mz * (mx^2 + my^2 + mz^2), with m* the largest difference magnitude per axis;
@@ -144,6 +159,26 @@ inline int InSphere(
     return -1;
   }
   return InSphereExact(a, b, c, d, e);
+}
+
+/// The static orientation bound for coordinate differences at most `extent` in magnitude: each
+/// of the 6 products of the permanent is at most extent^3 (0 when it under/overflows).
+inline double Orient3DStaticBound(double extent)
+{
+  const double bound =
+    6.0 * 7.7715611723761027e-16 * (1.0 + 9.0949470177292824e-13) * (extent * extent * extent);
+  return std::isfinite(bound) && bound >= 1e-290 ? bound : 0.0;
+}
+
+/// The static insphere bound for coordinate differences at most `extent` in magnitude: the
+/// semi-static bound of InSphere with mx = my = mz = extent (0 when it underflows or overflows,
+/// which disables the static filter).
+inline double InSphereStaticBound(double extent)
+{
+  const double e2 = extent * extent;
+  const double bound =
+    24.0 * 1.7763568394002532e-15 * (1.0 + 9.0949470177292824e-13) * (e2 * extent) * (3.0 * e2);
+  return std::isfinite(bound) && bound >= 1e-290 ? bound : 0.0;
 }
 
 /// Sign of det[a-c; b-c] (2D points, only x and y are read).

@@ -274,6 +274,7 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
   vtkPolyData* voronoi)
 {
   pcs::Delaunay3D dt;
+  dt.SetComputeCircumradii(self->GetGenerateTetrahedra());
   if (!dt.Triangulate(xyz, ids, progress))
   {
     if (!self->GetAbortExecute())
@@ -351,20 +352,12 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
         t[2] = v[2];
         t[3] = v[3];
         offset[f] = 4 * f;
+        radii[f] = dt.GetCircumradii()[c];
       }
     }
     offset[numberOfFinite] = 4 * numberOfFinite;
     dt.Clear();
     std::vector<int32_t>().swap(finiteIndex);
-    vtkSMPTools::For(0, numberOfFinite, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType f = begin; f < end; ++f)
-      {
-        const int32_t* t = ids + 4 * f;
-        radii[f] = pcs::Delaunay3D::Circumradius(xyz + 3 * static_cast<int64_t>(t[0]),
-          xyz + 3 * static_cast<int64_t>(t[1]), xyz + 3 * static_cast<int64_t>(t[2]),
-          xyz + 3 * static_cast<int64_t>(t[3]));
-      }
-    });
 
     vtkNew<vtkCellArray> tetra;
     tetra->SetData(offsets, connectivity);

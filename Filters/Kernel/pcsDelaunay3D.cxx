@@ -74,7 +74,8 @@ class Delaunay3DBuilder
 {
 public:
   Delaunay3DBuilder(Delaunay3D& dt, const double* xyz)
-    : Cells(dt.Cells)
+    : Owner(dt)
+    , Cells(dt.Cells)
     , Duplicates(dt.Duplicates)
     , XYZ(xyz)
   {
@@ -127,6 +128,7 @@ private:
   void LinkAroundEdge(int32_t a, int32_t b, uint32_t cell, int slot);
   void ClearEdgeTable();
 
+  Delaunay3D& Owner;
   std::vector<Delaunay3D::Cell>& Cells;
   std::vector<std::pair<int32_t, int32_t>>& Duplicates;
   const double* XYZ;
@@ -639,6 +641,21 @@ bool Delaunay3DBuilder::Run(std::vector<int32_t> order, const Delaunay3D::Progre
   this->State = std::vector<uint8_t>();
   this->LocalIndex = std::vector<int32_t>();
   this->Compact();
+  if (this->Owner.ComputeCircumradii)
+  {
+    std::vector<double>& radii = this->Owner.Circumradii;
+    radii.resize(this->Cells.size());
+    const double* xyz = coordinates.data();
+    for (size_t c = 0; c < this->Cells.size(); ++c)
+    {
+      const int32_t* v = this->Cells[c].Vertices;
+      radii[c] = InfiniteSlot(v) >= 0
+        ? std::numeric_limits<double>::infinity()
+        : Delaunay3D::Circumradius(xyz + 3 * static_cast<size_t>(v[0]),
+            xyz + 3 * static_cast<size_t>(v[1]), xyz + 3 * static_cast<size_t>(v[2]),
+            xyz + 3 * static_cast<size_t>(v[3]));
+    }
+  }
   // Back to the caller's point ids.
   for (Delaunay3D::Cell& cell : this->Cells)
   {
@@ -729,6 +746,7 @@ bool Delaunay3D::Triangulate(
 void Delaunay3D::Clear()
 {
   this->Cells = std::vector<Cell>();
+  this->Circumradii = std::vector<double>();
   this->Duplicates.clear();
 }
 } // namespace pcs

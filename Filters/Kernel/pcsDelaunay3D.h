@@ -27,6 +27,14 @@ public:
   bool Triangulate(const double* xyz, const std::vector<int32_t>& ids,
     const ProgressFunction& progress = ProgressFunction());
 
+  /// Also compute the circumradius of every finite cell during Triangulate (GetCircumradii): the
+  /// coordinates are then still laid out in insertion order, so the four vertices of a cell are
+  /// close in memory. Default off.
+  void SetComputeCircumradii(bool compute) { this->ComputeCircumradii = compute; }
+
+  /// Circumradius of each cell (+inf for infinite cells), when requested.
+  const std::vector<double>& GetCircumradii() const { return this->Circumradii; }
+
   /// Circumcentre and circumradius of the tetrahedron abcd (NaN centre and infinite radius when
   /// it is flat in floating point).
   static void Circumsphere(const double* a, const double* b, const double* c, const double* d,
@@ -77,6 +85,8 @@ private:
   };
   std::vector<Cell> Cells;
   std::vector<std::pair<int32_t, int32_t>> Duplicates;
+  std::vector<double> Circumradii;
+  bool ComputeCircumradii = false;
   friend class Delaunay3DBuilder;
 };
 } // namespace pcs

@@ -16,8 +16,6 @@
 #include "pcsPredicates.h"
 #include "pcsSpatialSort.h"
 
-#include "vtkSMPTools.h"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -648,18 +646,15 @@ bool Delaunay3DBuilder::Run(std::vector<int32_t> order, const Delaunay3D::Progre
     std::vector<double>& radii = this->Owner.Circumradii;
     radii.resize(this->Cells.size());
     const double* xyz = coordinates.data();
-    const std::vector<Delaunay3D::Cell>& cells = this->Cells;
-    vtkSMPTools::For(0, static_cast<int64_t>(cells.size()), [&](int64_t begin, int64_t end) {
-      for (int64_t c = begin; c < end; ++c)
-      {
-        const int32_t* v = cells[c].Vertices;
-        radii[c] = InfiniteSlot(v) >= 0
-          ? std::numeric_limits<double>::infinity()
-          : Delaunay3D::Circumradius(xyz + 3 * static_cast<size_t>(v[0]),
-              xyz + 3 * static_cast<size_t>(v[1]), xyz + 3 * static_cast<size_t>(v[2]),
-              xyz + 3 * static_cast<size_t>(v[3]));
-      }
-    });
+    for (size_t c = 0; c < this->Cells.size(); ++c)
+    {
+      const int32_t* v = this->Cells[c].Vertices;
+      radii[c] = InfiniteSlot(v) >= 0
+        ? std::numeric_limits<double>::infinity()
+        : Delaunay3D::Circumradius(xyz + 3 * static_cast<size_t>(v[0]),
+            xyz + 3 * static_cast<size_t>(v[1]), xyz + 3 * static_cast<size_t>(v[2]),
+            xyz + 3 * static_cast<size_t>(v[3]));
+    }
   }
   // Back to the caller's point ids.
   for (Delaunay3D::Cell& cell : this->Cells)

@@ -265,6 +265,39 @@ void MergeWithinTolerance(double tolerance, const double* coords, int dim,
 }
 
 //------------------------------------------------------------------------------------------------
+// The exact predicates assume that their products neither overflow nor underflow (degree 5 for
+// insphere). Coordinates far from 1 in magnitude are therefore scaled by a power of two, which
+// is exact, before triangulation: returns the exponent k (coordinates times 2^k), 0 when the
+// largest magnitude is already within [2^-60, 2^60].
+int PredicateSafeExponent(const double* coords, int dim, const std::vector<int32_t>& ids)
+{
+  double largest = 0.0;
+  for (int32_t id : ids)
+  {
+    for (int i = 0; i < dim; ++i)
+    {
+      largest = std::max(largest, std::fabs(coords[dim * static_cast<int64_t>(id) + i]));
+    }
+  }
+  if (largest == 0.0 || (largest <= std::ldexp(1.0, 60) && largest >= std::ldexp(1.0, -60)))
+  {
+    return 0;
+  }
+  int exponent;
+  std::frexp(largest, &exponent);
+  return -exponent; // largest * 2^-exponent is in [0.5, 1)
+}
+
+std::vector<double> ScaledCopy(const double* coords, size_t count, int exponent)
+{
+  std::vector<double> scaled(coords, coords + count);
+  for (double& c : scaled)
+  {
+    c = std::ldexp(c, exponent);
+  }
+  return scaled;
+}
+
 void BuildVoronoi3D(const double* xyz, const pcs::Delaunay3D& dt,
   const std::vector<int32_t>& finiteIndex, int32_t numberOfFinite, vtkPolyData* voronoi);
 
@@ -275,7 +308,13 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
 {
   pcs::Delaunay3D dt;
   dt.SetComputeCircumradii(self->GetGenerateTetrahedra());
-  if (!dt.Triangulate(xyz, ids, progress))
+  const int exponent = PredicateSafeExponent(xyz, 3, ids);
+  std::vector<double> scaled;
+  if (exponent != 0)
+  {
+    scaled = ScaledCopy(xyz, 3 * static_cast<size_t>(representative->GetNumberOfValues()), exponent);
+  }
+  if (!dt.Triangulate(exponent != 0 ? scaled.data() : xyz, ids, progress))
   {
     if (!self->GetAbortExecute())
     {
@@ -352,7 +391,7 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
         t[2] = v[2];
         t[3] = v[3];
         offset[f] = 4 * f;
-        radii[f] = dt.GetCircumradii()[c];
+        radii[f] = std::ldexp(dt.GetCircumradii()[c], -exponent);
       }
     }
     offset[numberOfFinite] = 4 * numberOfFinite;
@@ -476,7 +515,18 @@ vtkIdType Triangulate2D(vtkIncrementalDelaunay3D* self, const double* uv,
   vtkUnstructuredGrid* cells, vtkPolyData* voronoi)
 {
   pcs::Delaunay2D dt;
-  if (!dt.Triangulate(uv, ids, progress))
+  const int exponent = PredicateSafeExponent(uv, 2, ids);
+  std::vector<double> scaled;
+  if (exponent != 0)
+  {
+    size_t count = 0;
+    for (int32_t id : ids)
+    {
+      count = std::max(count, 2 * static_cast<size_t>(id) + 2);
+    }
+    scaled = ScaledCopy(uv, count, exponent);
+  }
+  if (!dt.Triangulate(exponent != 0 ? scaled.data() : uv, ids, progress))
   {
     if (!self->GetAbortExecute())
     {

@@ -363,7 +363,24 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
 
   if (self->GetGenerateVoronoi())
   {
-    BuildVoronoi3D(xyz, dt, finiteIndex, numberOfFinite, voronoi);
+    // On the scaled coordinates (no overflow in the circumcentres), then back to input units.
+    BuildVoronoi3D(exponent != 0 ? scaled.data() : xyz, dt, finiteIndex, numberOfFinite, voronoi);
+    if (exponent != 0)
+    {
+      vtkPoints* vertices = voronoi->GetPoints();
+      for (vtkIdType i = 0; i < vertices->GetNumberOfPoints(); ++i)
+      {
+        double p[3];
+        vertices->GetPoint(i, p);
+        vertices->SetPoint(i, std::ldexp(p[0], -exponent), std::ldexp(p[1], -exponent),
+          std::ldexp(p[2], -exponent));
+      }
+      vtkDataArray* radius = voronoi->GetPointData()->GetArray("Circumradius");
+      for (vtkIdType i = 0; i < radius->GetNumberOfTuples(); ++i)
+      {
+        radius->SetTuple1(i, std::ldexp(radius->GetTuple1(i), -exponent));
+      }
+    }
   }
   if (self->GetGenerateTetrahedra())
   {

@@ -54,4 +54,24 @@ for dimension in (3, 2):
             worst = max(abs(math.ldexp(r, -exponent) / r0 - 1.0)
                         for r, r0 in zip(sorted(scaled_radii), sorted(radii)) if r0 > 0)
             failed = failed or worst > 1e-9
+
+
+def voronoi_vertices(coordinates):
+    delaunay = vtkIncrementalDelaunay3D()
+    delaunay.SetInputData(cloud(coordinates))
+    delaunay.GenerateVoronoiOn()
+    delaunay.Update()
+    diagram = delaunay.GetOutputDataObject(2)
+    return [diagram.GetPoint(i) for i in range(diagram.GetNumberOfPoints())]
+
+
+# The Voronoi vertices of the scaled cloud are the scaled vertices (no overflow on the way).
+reference = voronoi_vertices(base[:300])
+for exponent in (700, -700):
+    scaled = voronoi_vertices([tuple(math.ldexp(c, exponent) for c in p) for p in base[:300]])
+    same = len(scaled) == len(reference) and all(
+        math.ldexp(q[k], -exponent) == p[k] for p, q in zip(reference, scaled) for k in range(3))
+    print("Voronoi, scale 2^%d: %d vertices, equal after unscaling: %s"
+          % (exponent, len(scaled), same))
+    failed = failed or not same
 sys.exit(1 if failed else 0)

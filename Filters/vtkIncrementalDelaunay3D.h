@@ -28,7 +28,9 @@
  * keeps every input point id; the point data array `RepresentativeId` names the input point that
  * represents each point in the triangulation, and a warning states the count). A positive
  * Tolerance also merges points closer than Tolerance. Points with NaN or infinite coordinates
- * are skipped and counted (their `RepresentativeId` is -1).
+ * are skipped and counted (their `RepresentativeId` is -1). Coordinates beyond 2^60 or below
+ * 2^-60 in magnitude are scaled internally by a power of two (an exact operation) so that the
+ * exact arithmetic never overflows or underflows; all outputs are in the input's units.
  *
  * 2.5D mode (paper 002, sections 2.2 and 3.1): with Dimension = 2 the points are projected onto
  * the x-y plane (or their least-squares plane, see ProjectionPlane), triangulated by

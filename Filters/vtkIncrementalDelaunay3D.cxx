@@ -332,20 +332,8 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
   }
 
   const int64_t numberOfKernelCells = dt.GetNumberOfCells();
-  std::vector<int32_t> finiteIndex(numberOfKernelCells, -1);
-  int32_t numberOfFinite = 0;
-  int64_t numberOfHull = 0;
-  for (int64_t c = 0; c < numberOfKernelCells; ++c)
-  {
-    if (dt.IsInfinite(c))
-    {
-      ++numberOfHull;
-    }
-    else
-    {
-      finiteIndex[c] = numberOfFinite++;
-    }
-  }
+  const int32_t numberOfFinite = static_cast<int32_t>(dt.GetNumberOfFiniteCells());
+  const int64_t numberOfHull = numberOfKernelCells - numberOfFinite;
 
   // Hull triangles, oriented outwards.
   vtkNew<vtkCellArray> hull;
@@ -364,6 +352,15 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
   if (self->GetGenerateVoronoi())
   {
     // On the scaled coordinates (no overflow in the circumcentres), then back to input units.
+    // Finite cells are numbered in kernel cell order, as in the tetrahedra output.
+    std::vector<int32_t> finiteIndex(numberOfKernelCells, -1);
+    for (int64_t c = 0, f = 0; c < numberOfKernelCells; ++c)
+    {
+      if (!dt.IsInfinite(c))
+      {
+        finiteIndex[c] = static_cast<int32_t>(f++);
+      }
+    }
     BuildVoronoi3D(exponent != 0 ? scaled.data() : xyz, dt, finiteIndex, numberOfFinite, voronoi);
     if (exponent != 0)
     {
@@ -392,28 +389,34 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
     vtkNew<vtkTypeInt32Array> offsets;
     offsets->SetNumberOfValues(static_cast<vtkIdType>(numberOfFinite) + 1);
     int32_t* offset = offsets->GetPointer(0);
-    vtkNew<vtkDoubleArray> radius;
-    radius->SetName("Circumradius");
-    radius->SetNumberOfValues(numberOfFinite);
-    double* radii = radius->GetPointer(0);
-    for (int64_t c = 0; c < numberOfKernelCells; ++c)
+    for (int64_t c = 0, f = 0; c < numberOfKernelCells; ++c)
     {
-      const int32_t f = finiteIndex[c];
-      if (f >= 0)
+      if (!dt.IsInfinite(c))
       {
         const int32_t* v = dt.CellVertices(c);
-        int32_t* t = ids + 4 * static_cast<size_t>(f);
+        int32_t* t = ids + 4 * f;
         t[0] = v[1];
         t[1] = v[0];
         t[2] = v[2];
         t[3] = v[3];
-        offset[f] = 4 * f;
-        radii[f] = std::ldexp(dt.GetCircumradii()[c], -exponent);
+        offset[f] = static_cast<int32_t>(4 * f);
+        ++f;
       }
     }
     offset[numberOfFinite] = 4 * numberOfFinite;
+    // The kernel's radii are in the same (finite cell) order: adopt its buffer.
+    vtkNew<vtkDoubleArray> radius;
+    radius->SetName("Circumradius");
+    double* radii = dt.ReleaseCircumradii();
+    radius->SetArray(radii, numberOfFinite, 0, vtkAbstractArray::VTK_DATA_ARRAY_FREE);
+    if (exponent != 0)
+    {
+      for (int32_t f = 0; f < numberOfFinite; ++f)
+      {
+        radii[f] = std::ldexp(radii[f], -exponent);
+      }
+    }
     dt.Clear();
-    std::vector<int32_t>().swap(finiteIndex);
 
     vtkNew<vtkCellArray> tetra;
     tetra->SetData(offsets, connectivity);

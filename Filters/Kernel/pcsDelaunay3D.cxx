@@ -21,6 +21,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <new>
 #include <utility>
 
 namespace pcs
@@ -577,7 +578,12 @@ void Delaunay3DBuilder::Compact()
     this->Cells[to] = cell;
   }
   this->Cells.resize(next);
-  this->Cells.shrink_to_fit();
+  // Shrinking copies every cell: worth it only when much of the capacity is unused (after a
+  // reallocation beyond the initial reservation).
+  if (this->Cells.capacity() > this->Cells.size() + this->Cells.size() / 4)
+  {
+    this->Cells.shrink_to_fit();
+  }
   this->Free.clear();
 }
 
@@ -641,19 +647,31 @@ bool Delaunay3DBuilder::Run(std::vector<int32_t> order, const Delaunay3D::Progre
   this->State = std::vector<uint8_t>();
   this->LocalIndex = std::vector<int32_t>();
   this->Compact();
+  int64_t finite = 0;
+  for (const Delaunay3D::Cell& cell : this->Cells)
+  {
+    finite += InfiniteSlot(cell.Vertices) < 0 ? 1 : 0;
+  }
+  this->Owner.NumberOfFiniteCells = finite;
   if (this->Owner.ComputeCircumradii)
   {
-    std::vector<double>& radii = this->Owner.Circumradii;
-    radii.resize(this->Cells.size());
-    const double* xyz = coordinates.data();
-    for (size_t c = 0; c < this->Cells.size(); ++c)
+    // malloc: the caller may adopt the buffer (ReleaseCircumradii) without a copy.
+    double* radii = static_cast<double*>(std::malloc(sizeof(double) * std::max<int64_t>(finite, 1)));
+    if (!radii)
     {
-      const int32_t* v = this->Cells[c].Vertices;
-      radii[c] = InfiniteSlot(v) >= 0
-        ? std::numeric_limits<double>::infinity()
-        : Delaunay3D::Circumradius(xyz + 3 * static_cast<size_t>(v[0]),
-            xyz + 3 * static_cast<size_t>(v[1]), xyz + 3 * static_cast<size_t>(v[2]),
-            xyz + 3 * static_cast<size_t>(v[3]));
+      throw std::bad_alloc();
+    }
+    this->Owner.Circumradii.reset(radii);
+    const double* xyz = coordinates.data();
+    for (const Delaunay3D::Cell& cell : this->Cells)
+    {
+      const int32_t* v = cell.Vertices;
+      if (InfiniteSlot(v) < 0)
+      {
+        *radii++ = Delaunay3D::Circumradius(xyz + 3 * static_cast<size_t>(v[0]),
+          xyz + 3 * static_cast<size_t>(v[1]), xyz + 3 * static_cast<size_t>(v[2]),
+          xyz + 3 * static_cast<size_t>(v[3]));
+      }
     }
   }
   // Back to the caller's point ids.
@@ -687,10 +705,25 @@ void Delaunay3D::Circumsphere(const double* a, const double* b, const double* c,
   }
 }
 
+// Radius only: |N| / |2 det| with N the numerator vector of CircumsphereOffset (no division
+// per component; this runs once per tetrahedron of the output).
 double Delaunay3D::Circumradius(const double* a, const double* b, const double* c, const double* d)
 {
-  double offset[3];
-  return CircumsphereOffset(a, b, c, d, offset);
+  const double bx = b[0] - a[0], by = b[1] - a[1], bz = b[2] - a[2];
+  const double cx = c[0] - a[0], cy = c[1] - a[1], cz = c[2] - a[2];
+  const double dx = d[0] - a[0], dy = d[1] - a[1], dz = d[2] - a[2];
+  const double cdx = cy * dz - cz * dy, cdy = cz * dx - cx * dz, cdz = cx * dy - cy * dx;
+  const double dbx = dy * bz - dz * by, dby = dz * bx - dx * bz, dbz = dx * by - dy * bx;
+  const double bcx = by * cz - bz * cy, bcy = bz * cx - bx * cz, bcz = bx * cy - by * cx;
+  const double determinant = bx * cdx + by * cdy + bz * cdz;
+  const double lb = bx * bx + by * by + bz * bz;
+  const double lc = cx * cx + cy * cy + cz * cz;
+  const double ld = dx * dx + dy * dy + dz * dz;
+  const double nx = lb * cdx + lc * dbx + ld * bcx;
+  const double ny = lb * cdy + lc * dby + ld * bcy;
+  const double nz = lb * cdz + lc * dbz + ld * bcz;
+  return determinant == 0.0 ? std::numeric_limits<double>::infinity()
+                            : std::sqrt(nx * nx + ny * ny + nz * nz) / std::fabs(2.0 * determinant);
 }
 
 // Centre minus a, from the three edge vectors at a; returns the radius.
@@ -746,7 +779,8 @@ bool Delaunay3D::Triangulate(
 void Delaunay3D::Clear()
 {
   this->Cells = std::vector<Cell>();
-  this->Circumradii = std::vector<double>();
+  this->Circumradii.reset();
+  this->NumberOfFiniteCells = 0;
   this->Duplicates.clear();
 }
 } // namespace pcs

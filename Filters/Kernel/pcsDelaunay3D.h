@@ -4,7 +4,9 @@
 #define pcsDelaunay3D_h
 
 #include <cstdint>
+#include <cstdlib>
 #include <functional>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -32,8 +34,16 @@ public:
   /// close in memory. Default off.
   void SetComputeCircumradii(bool compute) { this->ComputeCircumradii = compute; }
 
-  /// Circumradius of each cell (+inf for infinite cells), when requested.
-  const std::vector<double>& GetCircumradii() const { return this->Circumradii; }
+  /// Circumradius of each finite cell, in cell order (the k-th finite cell has radius k), when
+  /// requested; nullptr otherwise. The buffer holds one double per finite cell.
+  const double* GetCircumradii() const { return this->Circumradii.get(); }
+
+  /// Hand the circumradius buffer over to the caller, who releases it with free(). The
+  /// triangulation then no longer holds radii.
+  double* ReleaseCircumradii() { return this->Circumradii.release(); }
+
+  /// Number of finite cells.
+  int64_t GetNumberOfFiniteCells() const { return this->NumberOfFiniteCells; }
 
   /// Circumcentre and circumradius of the tetrahedron abcd (NaN centre and infinite radius when
   /// it is flat in floating point).
@@ -85,7 +95,12 @@ private:
   };
   std::vector<Cell> Cells;
   std::vector<std::pair<int32_t, int32_t>> Duplicates;
-  std::vector<double> Circumradii;
+  struct FreeDeleter
+  {
+    void operator()(double* p) const { std::free(p); }
+  };
+  std::unique_ptr<double[], FreeDeleter> Circumradii;
+  int64_t NumberOfFiniteCells = 0;
   bool ComputeCircumradii = false;
   friend class Delaunay3DBuilder;
 };

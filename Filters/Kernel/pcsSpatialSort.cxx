@@ -43,49 +43,48 @@ uint64_t Spread(uint32_t v, int dim)
   return x;
 }
 
-uint64_t HilbertKey(uint32_t* x, int dim)
+// Hilbert index of the grid point x (dim = 2 or 3 coordinates of BitsPerAxis bits). The
+// coordinates are kept in local variables (no aliasing through memory) and every step is
+// branch-free: the bit tested at each level is random, so branches would mispredict half of the
+// time.
+template <int Dim>
+uint64_t HilbertKey(const uint32_t* input)
 {
-  const uint32_t top = 1u << (BitsPerAxis - 1);
-  // Undo the rotations (inverse of the curve's recursive construction).
-  for (uint32_t q = top; q > 1; q >>= 1)
+  uint32_t x[Dim];
+  for (int i = 0; i < Dim; ++i)
+  {
+    x[i] = input[i];
+  }
+  // Undo the rotations (inverse of the curve's recursive construction): for each level q and
+  // axis i, when bit q of x[i] is set invert the low bits of x[0], else exchange the low bits of
+  // x[0] and x[i].
+  for (uint32_t q = 1u << (BitsPerAxis - 1); q > 1; q >>= 1)
   {
     const uint32_t lower = q - 1;
-    for (int i = 0; i < dim; ++i)
+    x[0] ^= lower & (0u - ((x[0] & q) != 0));
+    for (int i = 1; i < Dim; ++i)
     {
-      if (x[i] & q)
-      {
-        x[0] ^= lower;
-      }
-      else
-      {
-        const uint32_t t = (x[0] ^ x[i]) & lower;
-        x[0] ^= t;
-        x[i] ^= t;
-      }
+      const uint32_t set = 0u - static_cast<uint32_t>((x[i] & q) != 0);
+      const uint32_t t = (x[0] ^ x[i]) & lower & ~set;
+      x[0] ^= (lower & set) | t;
+      x[i] ^= t;
     }
   }
   // Gray encode.
-  for (int i = 1; i < dim; ++i)
+  for (int i = 1; i < Dim; ++i)
   {
     x[i] ^= x[i - 1];
   }
   uint32_t t = 0;
-  for (uint32_t q = top; q > 1; q >>= 1)
+  for (uint32_t q = 1u << (BitsPerAxis - 1); q > 1; q >>= 1)
   {
-    if (x[dim - 1] & q)
-    {
-      t ^= q - 1;
-    }
-  }
-  for (int i = 0; i < dim; ++i)
-  {
-    x[i] ^= t;
+    t ^= (q - 1) & (0u - static_cast<uint32_t>((x[Dim - 1] & q) != 0));
   }
   // Interleave: at every level, axis 0 gives the most significant bit.
   uint64_t key = 0;
-  for (int i = 0; i < dim; ++i)
+  for (int i = 0; i < Dim; ++i)
   {
-    key |= Spread(x[i], dim) << (dim - 1 - i);
+    key |= Spread(x[i] ^ t, Dim) << (Dim - 1 - i);
   }
   return key;
 }
@@ -128,7 +127,7 @@ void ComputeKeys(const double* coords, int dim, const int32_t* begin, const int3
         const double g = (p[k] - lo[k]) * scale;
         x[k] = static_cast<uint32_t>(std::min(std::max(g, 0.0), cells));
       }
-      keyed[i] = std::make_pair(HilbertKey(x, dim), id);
+      keyed[i] = std::make_pair(dim == 3 ? HilbertKey<3>(x) : HilbertKey<2>(x), id);
     }
   });
 }

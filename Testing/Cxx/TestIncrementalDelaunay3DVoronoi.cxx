@@ -165,6 +165,19 @@ bool CheckVoronoi(int dimension, int n, unsigned seed)
     }
     Circumcentre(p, dimension, centres[c].data());
   }
+  // The cells' own Circumradius array (tetrahedra / triangles output) is the distance from
+  // their vertices to the circumcentre.
+  vtkDataArray* cellRadius =
+    delaunay->GetTetrahedraOutput()->GetCellData()->GetArray("Circumradius");
+  PCS_CHECK(cellRadius && cellRadius->GetNumberOfTuples() == static_cast<vtkIdType>(numberOfCells),
+    label << ": Circumradius cell data, one value per cell");
+  for (size_t c = 0; c < numberOfCells; ++c)
+  {
+    const LD r = Distance(X(cells[c][0]), centres[c].data(), dimension);
+    PCS_CHECK(std::fabs(cellRadius->GetTuple1(static_cast<vtkIdType>(c)) - r) <= 1e-9 * r,
+      label << ": Circumradius of cell " << c << " is " << cellRadius->GetTuple1(c)
+            << ", its vertices are " << static_cast<double>(r) << " from its circumcentre");
+  }
   std::vector<long long> cellOf(numberOfPoints, -1);
   std::vector<char> matched(numberOfCells, 0);
   double worstSpread = 0.0;

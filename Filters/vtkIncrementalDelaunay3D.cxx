@@ -43,7 +43,7 @@ constexpr vtkIdType MaximumNumberOfPoints = 150000000;
 // (right-hand rule) points out of the hull. The kernel's infinite cells, with the infinite
 // vertex replaced by a point beyond the facet, have Orient3D > 0: the increasing-slot triple
 // then faces outwards when the infinite slot is even, inwards when it is odd.
-void OutwardHullTriangle(const int32_t* v, vtkIdType triangle[3])
+void OutwardHullTriangle(const int32_t* v, int32_t triangle[3])
 {
   int k = 0;
   int infinite = 0;
@@ -100,6 +100,21 @@ vtkSmartPointer<vtkCellArray> MakeCellArray(const std::vector<int32_t>& connecti
   std::copy(connectivity.begin(), connectivity.end(), ids->GetPointer(0));
   auto array = vtkSmartPointer<vtkCellArray>::New();
   array->SetData(offsets, ids);
+  return array;
+}
+
+// Cells of `size` points each over the connectivity array itself (no copy).
+vtkSmartPointer<vtkCellArray> MakeCellArray(vtkTypeInt32Array* connectivity, int size)
+{
+  const vtkIdType cells = connectivity->GetNumberOfValues() / size;
+  vtkNew<vtkTypeInt32Array> offsets;
+  offsets->SetNumberOfValues(cells + 1);
+  for (vtkIdType c = 0; c <= cells; ++c)
+  {
+    offsets->SetValue(c, static_cast<int32_t>(size * c));
+  }
+  auto array = vtkSmartPointer<vtkCellArray>::New();
+  array->SetData(offsets, connectivity);
   return array;
 }
 
@@ -335,19 +350,22 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
   const int32_t numberOfFinite = static_cast<int32_t>(dt.GetNumberOfFiniteCells());
   const int64_t numberOfHull = numberOfKernelCells - numberOfFinite;
 
-  // Hull triangles, oriented outwards.
-  vtkNew<vtkCellArray> hull;
-  hull->AllocateExact(numberOfHull, 3 * numberOfHull);
-  for (int64_t c = 0; c < numberOfKernelCells; ++c)
+  // Hull triangles, oriented outwards (filled together with the tetrahedra when they are
+  // generated: one pass over the cells).
+  vtkNew<vtkTypeInt32Array> hullIds;
+  hullIds->SetNumberOfValues(3 * numberOfHull);
+  if (!self->GetGenerateTetrahedra())
   {
-    if (dt.IsInfinite(c))
+    int32_t* triangle = hullIds->GetPointer(0);
+    for (int64_t c = 0; c < numberOfKernelCells; ++c)
     {
-      vtkIdType triangle[3];
-      OutwardHullTriangle(dt.CellVertices(c), triangle);
-      hull->InsertNextCell(3, triangle);
+      if (dt.IsInfinite(c))
+      {
+        OutwardHullTriangle(dt.CellVertices(c), triangle);
+        triangle += 3;
+      }
     }
   }
-  surface->SetPolys(hull);
 
   if (self->GetGenerateVoronoi())
   {
@@ -389,11 +407,17 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
     vtkNew<vtkTypeInt32Array> offsets;
     offsets->SetNumberOfValues(static_cast<vtkIdType>(numberOfFinite) + 1);
     int32_t* offset = offsets->GetPointer(0);
+    int32_t* triangle = hullIds->GetPointer(0);
     for (int64_t c = 0, f = 0; c < numberOfKernelCells; ++c)
     {
-      if (!dt.IsInfinite(c))
+      const int32_t* v = dt.CellVertices(c);
+      if (v[0] < 0 || v[1] < 0 || v[2] < 0 || v[3] < 0)
       {
-        const int32_t* v = dt.CellVertices(c);
+        OutwardHullTriangle(v, triangle);
+        triangle += 3;
+      }
+      else
+      {
         int32_t* t = ids + 4 * f;
         t[0] = v[1];
         t[1] = v[0];
@@ -423,6 +447,7 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
     cells->SetCells(VTK_TETRA, tetra);
     cells->GetCellData()->AddArray(radius);
   }
+  surface->SetPolys(MakeCellArray(hullIds, 3));
   return numberOfFinite;
 }
 

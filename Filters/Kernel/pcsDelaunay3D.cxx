@@ -160,7 +160,11 @@ bool Delaunay3DBuilder::InConflict(uint32_t c, const double* p) const
   if (inf < 0)
   {
     const double *a = this->P(v[0]), *b = this->P(v[1]), *c = this->P(v[2]), *d = this->P(v[3]);
-    const int side = predicates::InSphere(a, b, c, d, p, this->StaticInSphereBound);
+    int side = predicates::InSphereStatic(a, b, c, d, p, this->StaticInSphereBound);
+    if (side == 0)
+    {
+      side = predicates::InSphere(a, b, c, d, p, this->StaticInSphereBound);
+    }
     return (side != 0 ? side : predicates::InSphereSoS(a, b, c, d, p)) > 0;
   }
   const double* w[4];
@@ -220,7 +224,11 @@ uint32_t Delaunay3DBuilder::Locate(const double* p)
       }
       const double* saved = w[j];
       w[j] = p;
-      const int side = predicates::Orient3D(w[0], w[1], w[2], w[3], this->StaticOrientBound);
+      int side = predicates::Orient3DStatic(w[0], w[1], w[2], w[3], this->StaticOrientBound);
+      if (side == 0)
+      {
+        side = predicates::Orient3D(w[0], w[1], w[2], w[3], this->StaticOrientBound);
+      }
       w[j] = saved;
       if (side < 0)
       {
@@ -647,44 +655,48 @@ bool Delaunay3DBuilder::Run(std::vector<int32_t> order, const Delaunay3D::Progre
   this->State = std::vector<uint8_t>();
   this->LocalIndex = std::vector<int32_t>();
   this->Compact();
-  int64_t finite = 0;
-  for (const Delaunay3D::Cell& cell : this->Cells)
-  {
-    finite += InfiniteSlot(cell.Vertices) < 0 ? 1 : 0;
-  }
-  this->Owner.NumberOfFiniteCells = finite;
+  // One pass over the cells: count the finite ones, compute their circumradii (coordinates
+  // still in insertion order) and map the vertices back to the caller's point ids.
+  double* radii = nullptr;
   if (this->Owner.ComputeCircumradii)
   {
-    // malloc: the caller may adopt the buffer (ReleaseCircumradii) without a copy.
-    double* radii = static_cast<double*>(std::malloc(sizeof(double) * std::max<int64_t>(finite, 1)));
+    // At most one radius per cell; malloc so that the caller may adopt the buffer
+    // (ReleaseCircumradii) without a copy. Pages past the finite count are never touched.
+    radii = static_cast<double*>(std::malloc(sizeof(double) * (this->Cells.size() + 1)));
     if (!radii)
     {
       throw std::bad_alloc();
     }
     this->Owner.Circumradii.reset(radii);
-    const double* xyz = coordinates.data();
-    for (const Delaunay3D::Cell& cell : this->Cells)
+  }
+  const double* xyz = coordinates.data();
+  int64_t finite = 0;
+  for (Delaunay3D::Cell& cell : this->Cells)
+  {
+    int32_t* v = cell.Vertices;
+    if (InfiniteSlot(v) < 0)
     {
-      const int32_t* v = cell.Vertices;
-      if (InfiniteSlot(v) < 0)
+      if (radii)
       {
-        *radii++ = Delaunay3D::Circumradius(xyz + 3 * static_cast<size_t>(v[0]),
+        radii[finite] = Delaunay3D::Circumradius(xyz + 3 * static_cast<size_t>(v[0]),
           xyz + 3 * static_cast<size_t>(v[1]), xyz + 3 * static_cast<size_t>(v[2]),
           xyz + 3 * static_cast<size_t>(v[3]));
       }
-    }
-  }
-  // Back to the caller's point ids.
-  for (Delaunay3D::Cell& cell : this->Cells)
-  {
-    for (int32_t& v : cell.Vertices)
-    {
-      if (v >= 0)
+      ++finite;
+      for (int k = 0; k < 4; ++k)
       {
-        v = order[v];
+        v[k] = order[v[k]];
+      }
+    }
+    else
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        v[k] = v[k] >= 0 ? order[v[k]] : v[k];
       }
     }
   }
+  this->Owner.NumberOfFiniteCells = finite;
   for (auto& duplicate : this->Duplicates)
   {
     duplicate.first = order[duplicate.first];

@@ -50,6 +50,21 @@ inline double MaxAbs4(double a, double b, double c, double d)
   return ab > cd ? ab : cd;
 }
 
+/// Static-filter part of Orient3D only: +1 or -1 when |det| exceeds `staticBound` (see
+/// Orient3D), 0 when undecided (then call Orient3D). Small enough to be inlined in hot loops.
+inline int Orient3DStatic(
+  const double* a, const double* b, const double* c, const double* d, double staticBound)
+{
+  const double adx = a[0] - d[0], ady = a[1] - d[1], adz = a[2] - d[2];
+  const double bdx = b[0] - d[0], bdy = b[1] - d[1], bdz = b[2] - d[2];
+  const double cdx = c[0] - d[0], cdy = c[1] - d[1], cdz = c[2] - d[2];
+  const double det = adz * (bdx * cdy - cdx * bdy) + bdz * (cdx * ady - adx * cdy) +
+    cdz * (adx * bdy - bdx * ady);
+  return staticBound > 0.0 && det > staticBound ? 1
+    : staticBound > 0.0 && -det > staticBound  ? -1
+                                               : 0;
+}
+
 /// Sign (-1, 0, +1) of det[a-d; b-d; c-d] (3D points).
 /// `staticBound`: as for InSphere, Orient3DStaticBound(E) for differences at most E; 0 disables.
 inline int Orient3D(
@@ -81,6 +96,33 @@ inline int Orient3D(
     return -1;
   }
   return Orient3DExact(a, b, c, d);
+}
+
+/// Static-filter part of InSphere only: +1 or -1 when |det| exceeds `staticBound` (see
+/// InSphere), 0 when undecided (then call InSphere). Small enough to be inlined in hot loops.
+inline int InSphereStatic(const double* a, const double* b, const double* c, const double* d,
+  const double* e, double staticBound)
+{
+  const double aex = a[0] - e[0], aey = a[1] - e[1], aez = a[2] - e[2];
+  const double bex = b[0] - e[0], bey = b[1] - e[1], bez = b[2] - e[2];
+  const double cex = c[0] - e[0], cey = c[1] - e[1], cez = c[2] - e[2];
+  const double dex = d[0] - e[0], dey = d[1] - e[1], dez = d[2] - e[2];
+  const double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey;
+  const double cd = cex * dey - dex * cey, da = dex * aey - aex * dey;
+  const double ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
+  const double abc = aez * bc - bez * ac + cez * ab;
+  const double bcd = bez * cd - cez * bd + dez * bc;
+  const double cda = cez * da + dez * ac + aez * cd;
+  const double dab = dez * ab + aez * bd + bez * da;
+  const double alift = aex * aex + aey * aey + aez * aez;
+  const double blift = bex * bex + bey * bey + bez * bez;
+  const double clift = cex * cex + cey * cey + cez * cez;
+  const double dlift = dex * dex + dey * dey + dez * dez;
+  const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+  // A zero bound (unknown extent) decides nothing.
+  return staticBound > 0.0 && det > staticBound ? 1
+    : staticBound > 0.0 && -det > staticBound  ? -1
+                                               : 0;
 }
 
 /// Sign of the insphere determinant (may be 0 for cospherical points).

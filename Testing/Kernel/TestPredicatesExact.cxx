@@ -752,6 +752,38 @@ void Test3D(Generator& gen, int family, int cases)
       P::InSphereExact(a.data(), b.data(), c.data(), d.data(), e.data()), s);
     CHECK_EQ("CGAL side_of_oriented_sphere", name, p, CgalInSphere(a, b, c, d, e), s);
 
+    // Static filters, with the bounds of the points' own extent: either undecided (0) or exact.
+    {
+      double extent = 0.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        double lo = p[0][k], hi = p[0][k];
+        for (const Vec3& q : p)
+        {
+          lo = std::min(lo, q[k]);
+          hi = std::max(hi, q[k]);
+        }
+        extent = std::max(extent, hi - lo);
+      }
+      const double orientBound = P::Orient3DStaticBound(extent);
+      const double sphereBound = P::InSphereStaticBound(extent);
+      const int os = P::Orient3DStatic(a.data(), b.data(), c.data(), d.data(), orientBound);
+      if (os != 0)
+      {
+        CHECK_EQ("Orient3DStatic", name, p, os, o);
+      }
+      CHECK_EQ("Orient3D static", name, p,
+        P::Orient3D(a.data(), b.data(), c.data(), d.data(), orientBound), o);
+      const int ss =
+        P::InSphereStatic(a.data(), b.data(), c.data(), d.data(), e.data(), sphereBound);
+      if (ss != 0)
+      {
+        CHECK_EQ("InSphereStatic", name, p, ss, s);
+      }
+      CHECK_EQ("InSphere static", name, p,
+        P::InSphere(a.data(), b.data(), c.data(), d.data(), e.data(), sphereBound), s);
+    }
+
     // Symbolic perturbation.
     // (The perturbation is defined for distinct points: equal points have equal ranks.)
     const int sos = P::InSphereSoS(a.data(), b.data(), c.data(), d.data(), e.data());

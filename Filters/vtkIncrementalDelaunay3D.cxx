@@ -738,12 +738,13 @@ int vtkIncrementalDelaunay3D::RequestData(
   vtkNew<vtkIdTypeArray> representative;
   representative->SetName("RepresentativeId");
   representative->SetNumberOfValues(numberOfPoints);
-  if (numberOfPoints > 0)
+  // (Also with no points: the output then has the input's arrays, empty.)
+  if (input->GetPoints())
   {
     surface->SetPoints(input->GetPoints());
-    surface->GetPointData()->PassData(input->GetPointData());
-    surface->GetPointData()->AddArray(representative);
   }
+  surface->GetPointData()->PassData(input->GetPointData());
+  surface->GetPointData()->AddArray(representative);
   auto finish = [&]() {
     vtkFieldData* fd = surface->GetFieldData();
     AddCount(fd, "NumberOfInputPoints", this->NumberOfInputPoints);
@@ -751,9 +752,12 @@ int vtkIncrementalDelaunay3D::RequestData(
     AddCount(fd, "NumberOfSkippedPoints", this->NumberOfSkippedPoints);
     AddCount(fd, this->Dimension == 3 ? "NumberOfTetrahedra" : "NumberOfTriangles",
       this->NumberOfCells);
-    if (this->GenerateTetrahedra && numberOfPoints > 0)
+    if (this->GenerateTetrahedra)
     {
-      cells->SetPoints(surface->GetPoints());
+      if (surface->GetPoints())
+      {
+        cells->SetPoints(surface->GetPoints());
+      }
       cells->GetPointData()->ShallowCopy(surface->GetPointData());
       cells->GetFieldData()->ShallowCopy(fd);
     }

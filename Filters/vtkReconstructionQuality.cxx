@@ -39,6 +39,7 @@
 #include <numeric>
 #include <tuple>
 #include <utility>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkReconstructionQuality);
@@ -57,13 +58,28 @@ struct TriangleCells
   std::vector<vtkIdType> CellIds; // cell id of each triangle in its data set
   vtkIdType OtherPolygons = 0;    // polygons of another size, strips, other 2D cells
   vtkIdType InvalidTriangles = 0; // triangles with a point id out of range
+  vtkIdType NonFinitePoints = 0;  // points with a NaN or infinite coordinate
+  vtkIdType NonFiniteTriangles = 0; // triangles on such a point (ignored)
 };
 
 TriangleCells ScanTriangles(vtkPointSet* data)
 {
   TriangleCells cells;
   const vtkIdType numberOfPoints = data->GetNumberOfPoints();
-  auto add = [&cells, numberOfPoints](vtkIdType cellId, vtkIdType npts, const vtkIdType* pts) {
+  // Points with a NaN or infinite coordinate cannot be measured: triangles on them are ignored.
+  std::vector<char> finite(numberOfPoints, 1);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    double p[3];
+    data->GetPoint(i, p);
+    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+    {
+      finite[i] = 0;
+      ++cells.NonFinitePoints;
+    }
+  }
+  auto add = [&cells, &finite, numberOfPoints](
+               vtkIdType cellId, vtkIdType npts, const vtkIdType* pts) {
     if (npts != 3)
     {
       ++cells.OtherPolygons;
@@ -74,6 +90,14 @@ TriangleCells ScanTriangles(vtkPointSet* data)
       if (pts[j] < 0 || pts[j] >= numberOfPoints)
       {
         ++cells.InvalidTriangles;
+        return;
+      }
+    }
+    for (int j = 0; j < 3; ++j)
+    {
+      if (!finite[pts[j]])
+      {
+        ++cells.NonFiniteTriangles;
         return;
       }
     }
@@ -855,6 +879,15 @@ int vtkReconstructionQuality::RequestData(
     vtkWarningMacro("Ignored " << cells.OtherPolygons
                                << " polygon(s) or strip(s) that are not triangles (they are not "
                                   "triangulated).");
+  }
+  if (cells.NonFinitePoints > 0)
+  {
+    vtkWarningMacro(<< cells.NonFinitePoints
+                    << " point(s) have NaN or infinite coordinates; they are counted as unused"
+                    << (cells.NonFiniteTriangles > 0 ? " and the " : "")
+                    << (cells.NonFiniteTriangles > 0 ? std::to_string(cells.NonFiniteTriangles)
+                                                     : std::string())
+                    << (cells.NonFiniteTriangles > 0 ? " triangle(s) on them are ignored." : "."));
   }
   if (cells.InvalidTriangles > 0)
   {

@@ -1,0 +1,539 @@
+// Table-driven robustness test (issue 9): every filter of the module against every bad or
+// degenerate input of the table. For each (filter, input):
+// - Update() returns (no crash; a hang is caught by the ctest timeout);
+// - a warning or an error is reported where the input is unusable (no input, no points, one or
+//   two points, all points identical, collinear points);
+// - the output is valid: a vtkPolyData with all the input points (filters pass every point
+//   through), every cell id in range, no cell on a non-finite point, no triangle with a repeated
+//   vertex, and for the filters that promise a manifold surface no non-manifold edge or vertex
+//   (vtkReconstructionQuality);
+// - point data arrays of every common type pass through unchanged.
+// Pairs of inputs that describe the same surface must give the same result: a 10^6 offset on
+// every coordinate, float instead of double coordinates, a vtkUnstructuredGrid of vertices
+// instead of a vtkPolyData (triangle count within 0.5 %, same closedness and genus).
+// Parameters at their clamp limits run on a regular input.
+//
+// The surface filters are picked up when their headers exist (__has_include), so each new filter
+// of the module joins the table by adding one entry below.
+#include "vtkIncrementalDelaunay3D.h"
+#include "vtkReconstructionQuality.h"
+#if __has_include("vtkPerimeterPeelSurface.h")
+#include "vtkPerimeterPeelSurface.h"
+#define PCS_HAVE_PEEL
+#endif
+#if __has_include("vtkLocalOptimumGrowth.h")
+#include "vtkLocalOptimumGrowth.h"
+#define PCS_HAVE_LOCAL_OPTIMUM
+#endif
+#if __has_include("vtkCDTAdvancingFront.h")
+#include "vtkCDTAdvancingFront.h"
+#define PCS_HAVE_CDT
+#endif
+#if __has_include("vtkGreedySurfaceTriangulation.h")
+#include "vtkGreedySurfaceTriangulation.h"
+#define PCS_HAVE_GREEDY
+#endif
+
+#include "pcsTestUtilities.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCharArray.h"
+#include "vtkCommand.h"
+#include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
+#include "vtkFloatArray.h"
+#include "vtkIntArray.h"
+#include "vtkLongLongArray.h"
+#include "vtkPointData.h"
+#include "vtkShortArray.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace
+{
+using Algorithm = vtkSmartPointer<vtkPolyDataAlgorithm>;
+
+//------------------------------------------------------------------------------------------------
+// The filters.
+struct FilterEntry
+{
+  std::string Name;
+  std::function<Algorithm()> Make;
+  // Turns a cloud into this filter's input (identity for the reconstruction filters).
+  std::function<vtkSmartPointer<vtkPolyData>(vtkPolyData*)> Prepare;
+  bool PromisesManifold;
+  // Whether it makes a surface from a cloud (offset / type comparisons apply).
+  bool Reconstructs;
+  // Settings at the clamp limits of the filter's parameters (applied one at a time).
+  std::vector<std::pair<std::string, std::function<void(vtkPolyDataAlgorithm*)>>> Extremes;
+};
+
+vtkSmartPointer<vtkPolyData> Identity(vtkPolyData* cloud)
+{
+  return cloud;
+}
+
+// The convex hull of the cloud (a triangle mesh over all its points): the input of
+// vtkReconstructionQuality.
+vtkSmartPointer<vtkPolyData> HullOf(vtkPolyData* cloud)
+{
+  vtkNew<vtkIncrementalDelaunay3D> delaunay;
+  delaunay->SetInputData(cloud);
+  delaunay->GenerateTetrahedraOff();
+  // Unusable clouds (no points...) give an empty hull; their warnings are not under test here.
+  vtkNew<vtkCallbackCommand> silence;
+  delaunay->AddObserver(vtkCommand::WarningEvent, silence);
+  delaunay->AddObserver(vtkCommand::ErrorEvent, silence);
+  delaunay->Update();
+  auto hull = vtkSmartPointer<vtkPolyData>::New();
+  hull->ShallowCopy(delaunay->GetOutput());
+  return hull;
+}
+
+template <typename T>
+Algorithm New()
+{
+  return vtkSmartPointer<T>::New();
+}
+
+std::vector<FilterEntry> Filters()
+{
+  std::vector<FilterEntry> filters;
+  filters.push_back({ "vtkIncrementalDelaunay3D", New<vtkIncrementalDelaunay3D>, Identity, true,
+    true,
+    {
+      { "Tolerance = max", [](vtkPolyDataAlgorithm* a)
+        { static_cast<vtkIncrementalDelaunay3D*>(a)->SetTolerance(VTK_DOUBLE_MAX); } },
+      { "Tolerance = -1 (clamped to 0)", [](vtkPolyDataAlgorithm* a)
+        { static_cast<vtkIncrementalDelaunay3D*>(a)->SetTolerance(-1.0); } },
+      { "Dimension = 2, best-fit plane", [](vtkPolyDataAlgorithm* a)
+        {
+          auto* d = static_cast<vtkIncrementalDelaunay3D*>(a);
+          d->SetDimension(-7); // clamped to 2
+          d->SetProjectionPlane(99); // clamped to the best-fit plane
+        } },
+      { "Voronoi on", [](vtkPolyDataAlgorithm* a)
+        { static_cast<vtkIncrementalDelaunay3D*>(a)->GenerateVoronoiOn(); } },
+    } });
+  filters.push_back({ "vtkReconstructionQuality", New<vtkReconstructionQuality>, HullOf, false,
+    false,
+    {
+      { "SamplesPerTriangle = 0", [](vtkPolyDataAlgorithm* a)
+        { static_cast<vtkReconstructionQuality*>(a)->SetSamplesPerTriangle(-5); } },
+      { "SamplesPerTriangle = 100", [](vtkPolyDataAlgorithm* a)
+        { static_cast<vtkReconstructionQuality*>(a)->SetSamplesPerTriangle(1000); } },
+    } });
+#ifdef PCS_HAVE_PEEL
+  filters.push_back({ "vtkPerimeterPeelSurface", New<vtkPerimeterPeelSurface>, Identity, true,
+    true, {} });
+#endif
+#ifdef PCS_HAVE_LOCAL_OPTIMUM
+  filters.push_back({ "vtkLocalOptimumGrowth", New<vtkLocalOptimumGrowth>, Identity, true, true,
+    {} });
+#endif
+#ifdef PCS_HAVE_CDT
+  filters.push_back({ "vtkCDTAdvancingFront", New<vtkCDTAdvancingFront>, Identity, false, true,
+    {} });
+#endif
+#ifdef PCS_HAVE_GREEDY
+  filters.push_back({ "vtkGreedySurfaceTriangulation", New<vtkGreedySurfaceTriangulation>,
+    Identity, false, true, {} });
+#endif
+  return filters;
+}
+
+//------------------------------------------------------------------------------------------------
+// The inputs.
+std::vector<double> Sphere(int n, unsigned seed, double radius = 1.0)
+{
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<double> xyz;
+  for (int i = 0; i < n; ++i)
+  {
+    double p[3] = { g(rng), g(rng), g(rng) };
+    const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    xyz.insert(xyz.end(), { radius * p[0] / r, radius * p[1] / r, radius * p[2] / r });
+  }
+  return xyz;
+}
+
+struct InputCase
+{
+  std::string Name;
+  std::vector<double> XYZ;
+  bool Unusable; // a warning or an error is required
+};
+
+std::vector<InputCase> Inputs()
+{
+  std::vector<InputCase> cases;
+  cases.push_back({ "empty point set", {}, true });
+  cases.push_back({ "1 point", { 0.5, 0.5, 0.5 }, true });
+  cases.push_back({ "2 points", { 0, 0, 0, 1, 0, 0 }, true });
+  cases.push_back({ "3 points", { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, false });
+  {
+    std::vector<double> same;
+    for (int i = 0; i < 100; ++i)
+    {
+      same.insert(same.end(), { 0.25, -3.0, 7.0 });
+    }
+    cases.push_back({ "100 identical points", same, true });
+  }
+  {
+    std::vector<double> xyz = Sphere(2000, 1);
+    for (int i = 0; i < 200; ++i)
+    {
+      const size_t k = 3 * static_cast<size_t>((i * 7919) % 2000);
+      xyz.insert(xyz.end(), { xyz[k], xyz[k + 1], xyz[k + 2] });
+    }
+    cases.push_back({ "sphere with 10 % exact duplicates", xyz, false });
+  }
+  {
+    std::vector<double> xyz = Sphere(2000, 2);
+    for (int i = 0; i < 200; ++i)
+    {
+      const size_t k = 3 * static_cast<size_t>((i * 7919) % 2000);
+      xyz.insert(xyz.end(), { xyz[k] * (1 + 1e-12), xyz[k + 1], xyz[k + 2] * (1 - 1e-12) });
+    }
+    cases.push_back({ "sphere with near-duplicates at 1e-12", xyz, false });
+  }
+  {
+    std::vector<double> xyz;
+    for (int i = 0; i < 100; ++i)
+    {
+      xyz.insert(xyz.end(), { 0.1 * i, 0.2 * i, -0.05 * i });
+    }
+    cases.push_back({ "100 collinear points", xyz, true });
+  }
+  {
+    std::vector<double> xyz;
+    for (int i = 0; i < 30; ++i)
+    {
+      for (int j = 0; j < 30; ++j)
+      {
+        xyz.insert(xyz.end(), { 0.1 * i, 0.1 * j, 2.0 });
+      }
+    }
+    cases.push_back({ "planar 30x30 grid", xyz, false });
+  }
+  {
+    std::vector<double> xyz = Sphere(1000, 3);
+    std::vector<double> far = Sphere(1000, 4);
+    for (size_t k = 0; k < far.size(); k += 3)
+    {
+      far[k] += 1e6;
+    }
+    xyz.insert(xyz.end(), far.begin(), far.end());
+    cases.push_back({ "two clusters 10^6 apart", xyz, false });
+  }
+  {
+    std::vector<double> xyz = Sphere(2000, 5);
+    const double bad[3] = { std::numeric_limits<double>::quiet_NaN(),
+      std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity() };
+    for (int i = 0; i < 100; ++i)
+    {
+      xyz[3 * static_cast<size_t>(i * 19) + (i % 3)] = bad[i % 3];
+    }
+    cases.push_back({ "sphere with NaN and Inf coordinates", xyz, true });
+  }
+  cases.push_back({ "sphere", Sphere(2000, 6), false });
+  return cases;
+}
+
+// Adds a point data array of each common type (values derived from the point index).
+void AddPointArrays(vtkPolyData* cloud)
+{
+  const vtkIdType n = cloud->GetNumberOfPoints();
+  std::vector<vtkSmartPointer<vtkDataArray>> arrays = { vtkSmartPointer<vtkCharArray>::New(),
+    vtkSmartPointer<vtkUnsignedCharArray>::New(), vtkSmartPointer<vtkShortArray>::New(),
+    vtkSmartPointer<vtkIntArray>::New(), vtkSmartPointer<vtkLongLongArray>::New(),
+    vtkSmartPointer<vtkFloatArray>::New(), vtkSmartPointer<vtkDoubleArray>::New() };
+  for (auto& array : arrays)
+  {
+    array->SetName((std::string("Pass_") + array->GetDataTypeAsString()).c_str());
+    array->SetNumberOfComponents(array->GetDataType() == VTK_DOUBLE ? 3 : 1);
+    array->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+      {
+        array->SetComponent(i, c, static_cast<double>((i * 31 + c) % 97));
+      }
+    }
+    cloud->GetPointData()->AddArray(array);
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+struct Messages
+{
+  int Warnings = 0;
+  int Errors = 0;
+  static void Callback(vtkObject*, unsigned long event, void* data, void*)
+  {
+    auto* self = static_cast<Messages*>(data);
+    (event == vtkCommand::ErrorEvent ? self->Errors : self->Warnings)++;
+  }
+};
+
+Messages Update(vtkPolyDataAlgorithm* algorithm)
+{
+  Messages messages;
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetCallback(&Messages::Callback);
+  callback->SetClientData(&messages);
+  const unsigned long t1 = algorithm->AddObserver(vtkCommand::WarningEvent, callback);
+  const unsigned long t2 = algorithm->AddObserver(vtkCommand::ErrorEvent, callback);
+  const unsigned long t3 = algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, callback);
+  algorithm->Update();
+  algorithm->RemoveObserver(t1);
+  algorithm->RemoveObserver(t2);
+  algorithm->GetExecutive()->RemoveObserver(t3);
+  return messages;
+}
+
+struct Topology
+{
+  vtkIdType Triangles = 0;
+  vtkIdType BoundaryEdges = 0;
+  vtkIdType Genus = -1;
+};
+
+Topology Measure(vtkPolyData* mesh)
+{
+  vtkNew<vtkReconstructionQuality> quality;
+  quality->SetInputData(mesh);
+  quality->ComputeDistancesOff();
+  vtkNew<vtkCallbackCommand> silence;
+  quality->AddObserver(vtkCommand::WarningEvent, silence);
+  quality->Update();
+  Topology t;
+  t.Triangles = pcstest::FieldCount(quality->GetOutput(), "NumberOfTriangles");
+  t.BoundaryEdges = pcstest::FieldCount(quality->GetOutput(), "NumberOfBoundaryEdges");
+  t.Genus = pcstest::FieldCount(quality->GetOutput(), "Genus");
+  return t;
+}
+
+// The validity checks of every output.
+bool CheckOutput(const FilterEntry& filter, const std::string& label, vtkPolyData* input,
+  vtkPolyData* output, bool checkArrays)
+{
+  PCS_CHECK(output != nullptr, label << ": no output");
+  const vtkIdType n = input->GetNumberOfPoints();
+  PCS_CHECK(output->GetNumberOfPoints() == n,
+    label << ": " << output->GetNumberOfPoints() << " output points for " << n << " input points");
+  for (vtkIdType c = 0; c < output->GetNumberOfCells(); ++c)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    output->GetCellPoints(c, npts, pts);
+    for (vtkIdType k = 0; k < npts; ++k)
+    {
+      PCS_CHECK(pts[k] >= 0 && pts[k] < n, label << ": cell " << c << " has point id " << pts[k]);
+      double p[3];
+      output->GetPoint(pts[k], p);
+      PCS_CHECK(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]),
+        label << ": cell " << c << " uses the non-finite point " << pts[k]);
+      for (vtkIdType j = 0; j < k; ++j)
+      {
+        PCS_CHECK(pts[j] != pts[k] || output->GetCellType(c) != VTK_TRIANGLE,
+          label << ": triangle " << c << " repeats point " << pts[k]);
+      }
+    }
+  }
+  if (filter.PromisesManifold && output->GetNumberOfPolys() > 0)
+  {
+    vtkNew<vtkReconstructionQuality> quality;
+    quality->SetInputData(output);
+    quality->ComputeDistancesOff();
+    quality->Update();
+    PCS_CHECK(pcstest::FieldCount(quality->GetOutput(), "NumberOfNonManifoldEdges") == 0,
+      label << ": non-manifold edges");
+    PCS_CHECK(pcstest::FieldCount(quality->GetOutput(), "NumberOfNonManifoldVertices") == 0,
+      label << ": non-manifold vertices");
+  }
+  if (checkArrays)
+  {
+    vtkPointData* in = input->GetPointData();
+    for (int a = 0; a < in->GetNumberOfArrays(); ++a)
+    {
+      vtkDataArray* source = in->GetArray(a);
+      if (!source || std::string(source->GetName()).rfind("Pass_", 0) != 0)
+      {
+        continue;
+      }
+      vtkDataArray* passed = output->GetPointData()->GetArray(source->GetName());
+      PCS_CHECK(passed, label << ": point data " << source->GetName() << " not passed");
+      PCS_CHECK(passed->GetDataType() == source->GetDataType() &&
+          passed->GetNumberOfTuples() == source->GetNumberOfTuples() &&
+          passed->GetNumberOfComponents() == source->GetNumberOfComponents(),
+        label << ": point data " << source->GetName() << " changed type or size");
+      for (vtkIdType i = 0; i < source->GetNumberOfTuples(); ++i)
+      {
+        PCS_CHECK(passed->GetComponent(i, 0) == source->GetComponent(i, 0),
+          label << ": point data " << source->GetName() << " value " << i);
+      }
+    }
+  }
+  return true;
+}
+
+bool RunCase(const FilterEntry& filter, const InputCase& input)
+{
+  const std::string label = filter.Name + " / " + input.Name;
+  auto cloud = pcstest::MakeCloud(input.XYZ);
+  AddPointArrays(cloud);
+  auto prepared = filter.Prepare(cloud);
+  Algorithm algorithm = filter.Make();
+  algorithm->SetInputData(prepared);
+  const Messages messages = Update(algorithm);
+  if (input.Unusable)
+  {
+    PCS_CHECK(messages.Warnings + messages.Errors > 0, label << ": no warning or error");
+  }
+  return CheckOutput(filter, label, prepared, algorithm->GetOutput(), true);
+}
+
+bool SameSurface(const FilterEntry& filter, const std::string& label, vtkPolyData* a,
+  vtkPolyData* b)
+{
+  const Topology ta = Measure(a), tb = Measure(b);
+  PCS_CHECK(ta.Triangles > 0, label << ": no triangles on the reference input");
+  PCS_CHECK(std::abs(ta.Triangles - tb.Triangles) <= 0.005 * ta.Triangles,
+    label << ": " << tb.Triangles << " triangles instead of " << ta.Triangles);
+  PCS_CHECK((ta.BoundaryEdges == 0) == (tb.BoundaryEdges == 0),
+    label << ": closedness differs (" << ta.BoundaryEdges << " vs " << tb.BoundaryEdges
+          << " boundary edges)");
+  PCS_CHECK(ta.Genus == tb.Genus, label << ": genus " << tb.Genus << " instead of " << ta.Genus);
+  (void)filter;
+  return true;
+}
+
+bool RunEquivalences(const FilterEntry& filter)
+{
+  if (!filter.Reconstructs)
+  {
+    return true;
+  }
+  const std::vector<double> xyz = Sphere(3000, 11);
+  auto reference = filter.Make();
+  reference->SetInputData(pcstest::MakeCloud(xyz));
+  reference->Update();
+
+  // 10^6 offset on every coordinate.
+  std::vector<double> shifted(xyz);
+  for (double& c : shifted)
+  {
+    c += 1e6;
+  }
+  auto offset = filter.Make();
+  offset->SetInputData(pcstest::MakeCloud(shifted));
+  Update(offset);
+  if (!CheckOutput(filter, filter.Name + " / 10^6 offset", offset->GetPolyDataInput(0),
+        offset->GetOutput(), false) ||
+    !SameSurface(filter, filter.Name + " / 10^6 offset", reference->GetOutput(), offset->GetOutput()))
+  {
+    return false;
+  }
+
+  // Float coordinates.
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToFloat();
+    for (size_t i = 0; i < xyz.size(); i += 3)
+    {
+      points->InsertNextPoint(xyz[i], xyz[i + 1], xyz[i + 2]);
+    }
+    vtkNew<vtkPolyData> cloud;
+    cloud->SetPoints(points);
+    auto single = filter.Make();
+    single->SetInputData(cloud);
+    Update(single);
+    if (!CheckOutput(filter, filter.Name + " / float points", cloud, single->GetOutput(), false) ||
+      !SameSurface(filter, filter.Name + " / float points", reference->GetOutput(), single->GetOutput()))
+    {
+      return false;
+    }
+  }
+
+  // A vtkUnstructuredGrid of vertices.
+  {
+    vtkNew<vtkUnstructuredGrid> grid;
+    grid->SetPoints(pcstest::MakeCloud(xyz)->GetPoints());
+    grid->Allocate(static_cast<vtkIdType>(xyz.size() / 3));
+    for (vtkIdType i = 0; i < static_cast<vtkIdType>(xyz.size() / 3); ++i)
+    {
+      grid->InsertNextCell(VTK_VERTEX, 1, &i);
+    }
+    auto fromGrid = filter.Make();
+    fromGrid->SetInputData(grid);
+    Update(fromGrid);
+    PCS_CHECK(fromGrid->GetOutput()->GetNumberOfPoints() == grid->GetNumberOfPoints(),
+      filter.Name << " / unstructured grid input: points not passed through");
+    if (!SameSurface(filter, filter.Name + " / unstructured grid input", reference->GetOutput(),
+          fromGrid->GetOutput()))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool RunExtremes(const FilterEntry& filter)
+{
+  auto cloud = pcstest::MakeCloud(Sphere(1500, 21));
+  auto prepared = filter.Prepare(cloud);
+  for (const auto& extreme : filter.Extremes)
+  {
+    Algorithm algorithm = filter.Make();
+    extreme.second(algorithm);
+    algorithm->SetInputData(prepared);
+    Update(algorithm);
+    if (!CheckOutput(filter, filter.Name + " / " + extreme.first, prepared, algorithm->GetOutput(),
+          false))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool RunWithoutInput(const FilterEntry& filter)
+{
+  Algorithm algorithm = filter.Make();
+  const Messages messages = Update(algorithm);
+  PCS_CHECK(messages.Errors + messages.Warnings > 0, filter.Name << ": no input, no error");
+  return true;
+}
+} // namespace
+
+int TestRobustness(int, char*[])
+{
+  int failures = 0;
+  const std::vector<InputCase> inputs = Inputs();
+  for (const FilterEntry& filter : Filters())
+  {
+    int cases = 0;
+    failures += RunWithoutInput(filter) ? 0 : 1;
+    for (const InputCase& input : inputs)
+    {
+      failures += RunCase(filter, input) ? 0 : 1;
+      ++cases;
+    }
+    failures += RunEquivalences(filter) ? 0 : 1;
+    failures += RunExtremes(filter) ? 0 : 1;
+    std::cout << filter.Name << ": " << cases << " inputs, " << filter.Extremes.size()
+              << " parameter limits" << std::endl;
+  }
+  std::cout << failures << " failure(s)" << std::endl;
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -252,26 +252,49 @@ struct MeshTopology
   void Build(vtkIdType numberOfPoints)
   {
     const vtkIdType n = static_cast<vtkIdType>(this->Triangles.size());
-    this->HalfEdges.clear();
-    this->HalfEdges.reserve(3 * n);
+    // Half-edges ordered by (Low, High, Triangle): a counting sort on Low (linear, triangles in
+    // increasing order within a bucket), then each bucket - the few edges at one vertex - by
+    // High. Linear time, where a global sort of 3n half-edges took most of the topology time.
+    std::vector<vtkIdType> bucket(numberOfPoints + 1, 0);
     for (vtkIdType t = 0; t < n; ++t)
     {
-      if (this->Collapsed[t])
+      if (!this->Collapsed[t])
       {
-        continue;
-      }
-      const Triangle& tri = this->Triangles[t];
-      for (int j = 0; j < 3; ++j)
-      {
-        const vtkIdType a = tri[j], b = tri[(j + 1) % 3];
-        this->HalfEdges.push_back(
-          HalfEdge{ std::min(a, b), std::max(a, b), t, static_cast<int8_t>(j), a < b });
+        const Triangle& tri = this->Triangles[t];
+        for (int j = 0; j < 3; ++j)
+        {
+          ++bucket[std::min(tri[j], tri[(j + 1) % 3]) + 1];
+        }
       }
     }
-    vtkSMPTools::Sort(
-      this->HalfEdges.begin(), this->HalfEdges.end(), [](const HalfEdge& x, const HalfEdge& y) {
-        return std::tie(x.Low, x.High, x.Triangle) < std::tie(y.Low, y.High, y.Triangle);
-      });
+    for (vtkIdType p = 0; p < numberOfPoints; ++p)
+    {
+      bucket[p + 1] += bucket[p];
+    }
+    this->HalfEdges.resize(bucket[numberOfPoints]);
+    {
+      std::vector<vtkIdType> next(bucket.begin(), bucket.end() - 1);
+      for (vtkIdType t = 0; t < n; ++t)
+      {
+        if (this->Collapsed[t])
+        {
+          continue;
+        }
+        const Triangle& tri = this->Triangles[t];
+        for (int j = 0; j < 3; ++j)
+        {
+          const vtkIdType a = tri[j], b = tri[(j + 1) % 3];
+          this->HalfEdges[next[std::min(a, b)]++] =
+            HalfEdge{ std::min(a, b), std::max(a, b), t, static_cast<int8_t>(j), a < b };
+        }
+      }
+    }
+    for (vtkIdType p = 0; p < numberOfPoints; ++p)
+    {
+      // Stable: triangles stay in increasing order among equal edges.
+      std::stable_sort(this->HalfEdges.begin() + bucket[p], this->HalfEdges.begin() + bucket[p + 1],
+        [](const HalfEdge& x, const HalfEdge& y) { return x.High < y.High; });
+    }
 
     this->TriangleEdges.assign(3 * n, -1);
     this->EdgeOffsets.clear();
@@ -926,10 +949,18 @@ int vtkReconstructionQuality::RequestData(
     }
   }
   this->UpdateProgress(0.1);
+  if (this->GetAbortExecute())
+  {
+    return 1; // aborted: the output is the input mesh, without measures
+  }
 
   // Edges, fans, components, loops, orientation.
   MeshTopology topology(triangles, collapsed);
   topology.Build(numberOfPoints);
+  if (this->GetAbortExecute())
+  {
+    return 1; // aborted: the output is the input mesh, without measures
+  }
   const vtkIdType numberOfEdges = topology.NumberOfEdges();
   vtkIdType boundaryEdges = 0, nonManifoldEdges = 0, interiorEdges = 0, consistentEdges = 0;
   for (vtkIdType e = 0; e < numberOfEdges; ++e)
@@ -970,6 +1001,10 @@ int vtkReconstructionQuality::RequestData(
     FanFunctor fans(topology, nonManifoldVertex->GetPointer(0));
     vtkSMPTools::For(0, numberOfPoints, fans);
   }
+  if (this->GetAbortExecute())
+  {
+    return 1; // aborted: the output is the input mesh, without measures
+  }
   vtkIdType nonManifoldVertices = 0;
   for (vtkIdType p = 0; p < numberOfPoints; ++p)
   {
@@ -993,6 +1028,10 @@ int vtkReconstructionQuality::RequestData(
   }
 
   const vtkIdType boundaryLoops = topology.CountBoundaryLoops();
+  if (this->GetAbortExecute())
+  {
+    return 1; // aborted: the output is the input mesh, without measures
+  }
   const vtkIdType faces = numberOfTriangles -
     static_cast<vtkIdType>(std::count(collapsed.begin(), collapsed.end(), char(1)));
   const vtkIdType euler = topologicalVertices - numberOfEdges + faces;

@@ -13,27 +13,9 @@
 // instead of a vtkPolyData (triangle count within 0.5 %, same closedness and genus).
 // Parameters at their clamp limits run on a regular input.
 //
-// The surface filters are picked up when their headers exist (__has_include), so each new filter
-// of the module joins the table by adding one entry below.
-#include "vtkIncrementalDelaunay3D.h"
-#include "vtkReconstructionQuality.h"
-#if __has_include("vtkPerimeterPeelSurface.h")
-#include "vtkPerimeterPeelSurface.h"
-#define PCS_HAVE_PEEL
-#endif
-#if __has_include("vtkLocalOptimumGrowth.h")
-#include "vtkLocalOptimumGrowth.h"
-#define PCS_HAVE_LOCAL_OPTIMUM
-#endif
-#if __has_include("vtkCDTAdvancingFront.h")
-#include "vtkCDTAdvancingFront.h"
-#define PCS_HAVE_CDT
-#endif
-#if __has_include("vtkGreedySurfaceTriangulation.h")
-#include "vtkGreedySurfaceTriangulation.h"
-#define PCS_HAVE_GREEDY
-#endif
-
+// The filters come from pcsTestFilters.h (a new filter of the module joins automatically); their
+// parameter limits are listed in ExtremesOf below.
+#include "pcsTestFilters.h"
 #include "pcsTestUtilities.h"
 
 #include "vtkCallbackCommand.h"
@@ -63,17 +45,16 @@ using Algorithm = vtkSmartPointer<vtkPolyDataAlgorithm>;
 
 //------------------------------------------------------------------------------------------------
 // The filters.
+vtkSmartPointer<vtkPolyData> HullOf(vtkPolyData* cloud);
+vtkSmartPointer<vtkPolyData> Identity(vtkPolyData* cloud);
+
 struct FilterEntry
 {
-  std::string Name;
-  std::function<Algorithm()> Make;
-  // Turns a cloud into this filter's input (identity for the reconstruction filters).
-  std::function<vtkSmartPointer<vtkPolyData>(vtkPolyData*)> Prepare;
-  bool PromisesManifold;
-  // Whether it makes a surface from a cloud (offset / type comparisons apply).
-  bool Reconstructs;
+  pcstest::FilterInfo Info;
   // Settings at the clamp limits of the filter's parameters (applied one at a time).
   std::vector<std::pair<std::string, std::function<void(vtkPolyDataAlgorithm*)>>> Extremes;
+  // Turns a cloud into this filter's input.
+  vtkSmartPointer<vtkPolyData> Prepare(vtkPolyData* cloud) const;
 };
 
 vtkSmartPointer<vtkPolyData> Identity(vtkPolyData* cloud)
@@ -98,18 +79,18 @@ vtkSmartPointer<vtkPolyData> HullOf(vtkPolyData* cloud)
   return hull;
 }
 
-template <typename T>
-Algorithm New()
+vtkSmartPointer<vtkPolyData> FilterEntry::Prepare(vtkPolyData* cloud) const
 {
-  return vtkSmartPointer<T>::New();
+  return this->Info.ConsumesMesh ? HullOf(cloud) : Identity(cloud);
 }
 
-std::vector<FilterEntry> Filters()
+// Parameter limits of each filter, by class name.
+std::vector<std::pair<std::string, std::function<void(vtkPolyDataAlgorithm*)>>> ExtremesOf(
+  const std::string& name)
 {
-  std::vector<FilterEntry> filters;
-  filters.push_back({ "vtkIncrementalDelaunay3D", New<vtkIncrementalDelaunay3D>, Identity, true,
-    true,
-    {
+  if (name == "vtkIncrementalDelaunay3D")
+  {
+    return {
       { "Tolerance = max", [](vtkPolyDataAlgorithm* a)
         { static_cast<vtkIncrementalDelaunay3D*>(a)->SetTolerance(VTK_DOUBLE_MAX); } },
       { "Tolerance = -1 (clamped to 0)", [](vtkPolyDataAlgorithm* a)
@@ -117,36 +98,32 @@ std::vector<FilterEntry> Filters()
       { "Dimension = 2, best-fit plane", [](vtkPolyDataAlgorithm* a)
         {
           auto* d = static_cast<vtkIncrementalDelaunay3D*>(a);
-          d->SetDimension(-7); // clamped to 2
+          d->SetDimension(-7);       // clamped to 2
           d->SetProjectionPlane(99); // clamped to the best-fit plane
         } },
       { "Voronoi on", [](vtkPolyDataAlgorithm* a)
         { static_cast<vtkIncrementalDelaunay3D*>(a)->GenerateVoronoiOn(); } },
-    } });
-  filters.push_back({ "vtkReconstructionQuality", New<vtkReconstructionQuality>, HullOf, false,
-    false,
-    {
+    };
+  }
+  if (name == "vtkReconstructionQuality")
+  {
+    return {
       { "SamplesPerTriangle = 0", [](vtkPolyDataAlgorithm* a)
         { static_cast<vtkReconstructionQuality*>(a)->SetSamplesPerTriangle(-5); } },
       { "SamplesPerTriangle = 100", [](vtkPolyDataAlgorithm* a)
         { static_cast<vtkReconstructionQuality*>(a)->SetSamplesPerTriangle(1000); } },
-    } });
-#ifdef PCS_HAVE_PEEL
-  filters.push_back({ "vtkPerimeterPeelSurface", New<vtkPerimeterPeelSurface>, Identity, true,
-    true, {} });
-#endif
-#ifdef PCS_HAVE_LOCAL_OPTIMUM
-  filters.push_back({ "vtkLocalOptimumGrowth", New<vtkLocalOptimumGrowth>, Identity, true, true,
-    {} });
-#endif
-#ifdef PCS_HAVE_CDT
-  filters.push_back({ "vtkCDTAdvancingFront", New<vtkCDTAdvancingFront>, Identity, false, true,
-    {} });
-#endif
-#ifdef PCS_HAVE_GREEDY
-  filters.push_back({ "vtkGreedySurfaceTriangulation", New<vtkGreedySurfaceTriangulation>,
-    Identity, false, true, {} });
-#endif
+    };
+  }
+  return {};
+}
+
+std::vector<FilterEntry> Filters()
+{
+  std::vector<FilterEntry> filters;
+  for (const pcstest::FilterInfo& info : pcstest::AllFilters())
+  {
+    filters.push_back({ info, ExtremesOf(info.Name) });
+  }
   return filters;
 }
 
@@ -350,7 +327,7 @@ bool CheckOutput(const FilterEntry& filter, const std::string& label, vtkPolyDat
       }
     }
   }
-  if (filter.PromisesManifold && output->GetNumberOfPolys() > 0)
+  if (filter.Info.PromisesManifold && output->GetNumberOfPolys() > 0)
   {
     vtkNew<vtkReconstructionQuality> quality;
     quality->SetInputData(output);
@@ -389,11 +366,11 @@ bool CheckOutput(const FilterEntry& filter, const std::string& label, vtkPolyDat
 
 bool RunCase(const FilterEntry& filter, const InputCase& input)
 {
-  const std::string label = filter.Name + " / " + input.Name;
+  const std::string label = filter.Info.Name + " / " + input.Name;
   auto cloud = pcstest::MakeCloud(input.XYZ);
   AddPointArrays(cloud);
   auto prepared = filter.Prepare(cloud);
-  Algorithm algorithm = filter.Make();
+  Algorithm algorithm = filter.Info.Make();
   algorithm->SetInputData(prepared);
   const Messages messages = Update(algorithm);
   if (input.Unusable)
@@ -420,12 +397,12 @@ bool SameSurface(const FilterEntry& filter, const std::string& label, vtkPolyDat
 
 bool RunEquivalences(const FilterEntry& filter)
 {
-  if (!filter.Reconstructs)
+  if (!filter.Info.Reconstructs)
   {
     return true;
   }
   const std::vector<double> xyz = Sphere(3000, 11);
-  auto reference = filter.Make();
+  auto reference = filter.Info.Make();
   reference->SetInputData(pcstest::MakeCloud(xyz));
   reference->Update();
 
@@ -435,12 +412,12 @@ bool RunEquivalences(const FilterEntry& filter)
   {
     c += 1e6;
   }
-  auto offset = filter.Make();
+  auto offset = filter.Info.Make();
   offset->SetInputData(pcstest::MakeCloud(shifted));
   Update(offset);
-  if (!CheckOutput(filter, filter.Name + " / 10^6 offset", offset->GetPolyDataInput(0),
+  if (!CheckOutput(filter, filter.Info.Name + " / 10^6 offset", offset->GetPolyDataInput(0),
         offset->GetOutput(), false) ||
-    !SameSurface(filter, filter.Name + " / 10^6 offset", reference->GetOutput(), offset->GetOutput()))
+    !SameSurface(filter, filter.Info.Name + " / 10^6 offset", reference->GetOutput(), offset->GetOutput()))
   {
     return false;
   }
@@ -455,11 +432,11 @@ bool RunEquivalences(const FilterEntry& filter)
     }
     vtkNew<vtkPolyData> cloud;
     cloud->SetPoints(points);
-    auto single = filter.Make();
+    auto single = filter.Info.Make();
     single->SetInputData(cloud);
     Update(single);
-    if (!CheckOutput(filter, filter.Name + " / float points", cloud, single->GetOutput(), false) ||
-      !SameSurface(filter, filter.Name + " / float points", reference->GetOutput(), single->GetOutput()))
+    if (!CheckOutput(filter, filter.Info.Name + " / float points", cloud, single->GetOutput(), false) ||
+      !SameSurface(filter, filter.Info.Name + " / float points", reference->GetOutput(), single->GetOutput()))
     {
       return false;
     }
@@ -474,12 +451,12 @@ bool RunEquivalences(const FilterEntry& filter)
     {
       grid->InsertNextCell(VTK_VERTEX, 1, &i);
     }
-    auto fromGrid = filter.Make();
+    auto fromGrid = filter.Info.Make();
     fromGrid->SetInputData(grid);
     Update(fromGrid);
     PCS_CHECK(fromGrid->GetOutput()->GetNumberOfPoints() == grid->GetNumberOfPoints(),
-      filter.Name << " / unstructured grid input: points not passed through");
-    if (!SameSurface(filter, filter.Name + " / unstructured grid input", reference->GetOutput(),
+      filter.Info.Name << " / unstructured grid input: points not passed through");
+    if (!SameSurface(filter, filter.Info.Name + " / unstructured grid input", reference->GetOutput(),
           fromGrid->GetOutput()))
     {
       return false;
@@ -494,11 +471,11 @@ bool RunExtremes(const FilterEntry& filter)
   auto prepared = filter.Prepare(cloud);
   for (const auto& extreme : filter.Extremes)
   {
-    Algorithm algorithm = filter.Make();
+    Algorithm algorithm = filter.Info.Make();
     extreme.second(algorithm);
     algorithm->SetInputData(prepared);
     Update(algorithm);
-    if (!CheckOutput(filter, filter.Name + " / " + extreme.first, prepared, algorithm->GetOutput(),
+    if (!CheckOutput(filter, filter.Info.Name + " / " + extreme.first, prepared, algorithm->GetOutput(),
           false))
     {
       return false;
@@ -509,9 +486,9 @@ bool RunExtremes(const FilterEntry& filter)
 
 bool RunWithoutInput(const FilterEntry& filter)
 {
-  Algorithm algorithm = filter.Make();
+  Algorithm algorithm = filter.Info.Make();
   const Messages messages = Update(algorithm);
-  PCS_CHECK(messages.Errors + messages.Warnings > 0, filter.Name << ": no input, no error");
+  PCS_CHECK(messages.Errors + messages.Warnings > 0, filter.Info.Name << ": no input, no error");
   return true;
 }
 } // namespace
@@ -531,7 +508,7 @@ int TestRobustness(int, char*[])
     }
     failures += RunEquivalences(filter) ? 0 : 1;
     failures += RunExtremes(filter) ? 0 : 1;
-    std::cout << filter.Name << ": " << cases << " inputs, " << filter.Extremes.size()
+    std::cout << filter.Info.Name << ": " << cases << " inputs, " << filter.Extremes.size()
               << " parameter limits" << std::endl;
   }
   std::cout << failures << " failure(s)" << std::endl;

@@ -1,8 +1,40 @@
 #!/bin/sh
 # The whole test suite: set-up (packages, configure, build), then every ctest test under a
 # virtual X server (the rendering tests need one). Exits non-zero when a test fails.
+#   scripts/test.sh              ./build (the README's test command, what CI runs)
+#   scripts/test.sh --sanitize   ./build-asan: the same suite under AddressSanitizer and
+#                                UndefinedBehaviorSanitizer (Debug build; slower)
+#   scripts/test.sh --valgrind   the C++ tests of ./build under valgrind memcheck (ctest -T
+#                                memcheck; any memcheck error fails the test; slow: minutes)
 set -eu
 cd "$(dirname "$0")/.."
+if [ "${1:-}" = "--sanitize" ]; then
+  export BUILD_DIR=build-asan
+  if [ ! -f build-asan/build.ninja ]; then
+    ./scripts/setup.sh >/dev/null # packages
+    cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DPython3_EXECUTABLE=/usr/bin/python3 -DPOINTCLOUDSURFACE_ENABLE_SANITIZERS=ON
+  fi
+  ./scripts/setup.sh
+  # Python and ParaView executables are not instrumented: the ASan runtime is preloaded into
+  # them. Leak checking is off (the interpreters keep memory until exit by design); any other
+  # ASan or UBSan report stops the test with an error.
+  LD_PRELOAD="$(gcc -print-file-name=libasan.so) $(gcc -print-file-name=libubsan.so)"
+  export LD_PRELOAD
+  export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:detect_odr_violation=0"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+  exec xvfb-run -a ctest --test-dir build-asan --output-on-failure -j2
+fi
 ./scripts/setup.sh
 BUILD_DIR="${BUILD_DIR:-build}"
+if [ "${1:-}" = "--valgrind" ]; then
+  command -v valgrind >/dev/null 2>&1 || {
+    SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo
+    $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends valgrind
+  }
+  exec xvfb-run -a ctest --test-dir "$BUILD_DIR" -T memcheck -L "Filters|Kernel" \
+    --overwrite MemoryCheckCommand="$(command -v valgrind)" \
+    --overwrite MemoryCheckCommandOptions="--error-exitcode=97 --leak-check=full --errors-for-leak-kinds=definite --track-origins=no" \
+    --output-on-failure -j2 --timeout 3600
+fi
 xvfb-run -a ctest --test-dir "$BUILD_DIR" --output-on-failure -j2

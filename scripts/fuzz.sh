@@ -3,12 +3,12 @@
 # SECONDS (default 600) on its corpus. Inputs that break an invariant are copied into
 # Testing/Fuzz/corpus/<target>/ (commit them: ctest replays that corpus), new coverage-increasing
 # inputs stay in build-fuzz/corpus/<target>/.
-#   scripts/fuzz.sh [SECONDS] [TARGET...]     targets: delaunay3d delaunay2d
+#   scripts/fuzz.sh [SECONDS] [TARGET...]     targets: delaunay3d delaunay2d quality
 set -eu
 cd "$(dirname "$0")/.."
 SECONDS_PER_TARGET="${1:-600}"
 [ $# -gt 0 ] && shift
-TARGETS="${*:-delaunay3d delaunay2d}"
+TARGETS="${*:-delaunay3d delaunay2d quality}"
 ./scripts/setup.sh >/dev/null # packages
 if ! command -v clang++ >/dev/null 2>&1; then
   SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo

@@ -589,15 +589,22 @@ def scaling_section(runner, args, rng, lines, outdir):
                 s["memory"].append(None)
 
     lines.append("## Scaling (time and memory from 10^4 to 10^6 points)\n")
-    lines.append("Exponent: slope of the least-squares line through log(time) against log(points). "
-                 "Plots: `reconstruction_scaling_time.png`, `reconstruction_scaling_memory.png`.\n")
-    header = "| surface | method | " + " | ".join("%g s" % n for n in sizes) + " | time exponent |"
+    lines.append("Exponent: slope of the least-squares line through log(time) (or log(memory)) "
+                 "against log(points). Memory: growth of the resident set during the run (peak "
+                 "minus the resident set with the input loaded), also per input point at the "
+                 "largest size. Plots: `reconstruction_scaling_time.png`, "
+                 "`reconstruction_scaling_memory.png`.\n")
+    header = ("| surface | method | " + " | ".join("%g s" % n for n in sizes) +
+              " | time exponent | memory exponent | bytes per point at %g |" % sizes[-1])
     lines.append(header)
-    lines.append("|---|---|" + "---:|" * (len(sizes) + 1))
+    lines.append("|---|---|" + "---:|" * (len(sizes) + 3))
     for (surface, method), s in series.items():
         cells = [fmt(t, 3) if t is not None else "-" for t in s["seconds"]]
-        lines.append("| %s | %s | %s | %s |" % (surface, method, " | ".join(cells),
-                                                fmt(fit_exponent(s["n"], s["seconds"]))))
+        last = s["memory"][-1] if s["memory"] else None
+        per_point = "%.0f" % (last * 1048576.0 / s["n"][-1]) if last else "-"
+        lines.append("| %s | %s | %s | %s | %s | %s |" % (
+            surface, method, " | ".join(cells), fmt(fit_exponent(s["n"], s["seconds"])),
+            fmt(fit_exponent(s["n"], s["memory"])), per_point))
     lines.append("")
     # Ratios to CGAL's advancing front.
     lines.append("Time ratio to CGAL's advancing front (same cloud):\n")

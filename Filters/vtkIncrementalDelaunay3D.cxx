@@ -1,6 +1,7 @@
 #include "vtkIncrementalDelaunay3D.h"
 
 #include "pcsDelaunay2D.h"
+#include "pcsGatherInput.h"
 #include "pcsDelaunay3D.h"
 
 #include "vtkCellArray.h"
@@ -717,10 +718,17 @@ int vtkIncrementalDelaunay3D::FillOutputPortInformation(int port, vtkInformation
 int vtkIncrementalDelaunay3D::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
   vtkPolyData* surface = vtkPolyData::GetData(outputVector, 0);
   vtkUnstructuredGrid* cells = vtkUnstructuredGrid::GetData(outputVector, 1);
   vtkPolyData* voronoi = vtkPolyData::GetData(outputVector, 2);
+  // Under MPI the whole cloud is triangulated on process 0; the other processes' outputs stay
+  // empty.
+  vtkSmartPointer<vtkPointSet> input =
+    pcs::GatherInputOnFirstProcess(vtkPointSet::GetData(inputVector[0]));
+  if (!input && surface && cells && voronoi)
+  {
+    return 1;
+  }
   if (!input || !surface || !cells || !voronoi)
   {
     vtkErrorMacro("Missing input or output data object.");

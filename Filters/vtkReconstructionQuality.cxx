@@ -1,5 +1,7 @@
 #include "vtkReconstructionQuality.h"
 
+#include "pcsGatherInput.h"
+
 #include "pcsPredicates.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -872,9 +874,21 @@ int vtkReconstructionQuality::FillInputPortInformation(int port, vtkInformation*
 int vtkReconstructionQuality::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPointSet* reference = vtkPointSet::GetData(inputVector[1]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  // Under MPI the mesh and the reference are measured whole on process 0; the other processes'
+  // outputs stay empty.
+  const bool hasReference = vtkPointSet::GetData(inputVector[1]) != nullptr;
+  vtkSmartPointer<vtkPointSet> gathered =
+    pcs::GatherInputOnFirstProcess(vtkPolyData::GetData(inputVector[0]));
+  vtkSmartPointer<vtkPointSet> gatheredReference = hasReference
+    ? pcs::GatherInputOnFirstProcess(vtkPointSet::GetData(inputVector[1]))
+    : nullptr;
+  if (!gathered && output)
+  {
+    return 1;
+  }
+  vtkPolyData* input = vtkPolyData::SafeDownCast(gathered);
+  vtkPointSet* reference = gatheredReference;
   if (!input || !output)
   {
     vtkErrorMacro("Missing input or output data object.");

@@ -1,0 +1,23 @@
+// Parallel runs (pvbatch / pvserver under MPI): the reconstruction filters need the whole cloud
+// at once, so each one gathers its input on process 0 first (private helper, not wrapped).
+#ifndef pcsGatherInput_h
+#define pcsGatherInput_h
+
+#include "vtkSmartPointer.h"
+
+class vtkDataObject;
+class vtkPointSet;
+
+namespace pcs
+{
+/// When VTK's global multi-process controller runs more than one process, collects the points,
+/// point data and (for a vtkPolyData) the cells of `input` from every process on process 0, in
+/// process order, and returns that on process 0 and nullptr on the others; the filter then
+/// computes on process 0 only and leaves its outputs empty elsewhere, so the result is the same
+/// surface as a serial run over the same points in the same order. With one process it returns
+/// `input` itself (no copy). Pieces without points are skipped (their arrays may differ).
+/// Every process must call it (it communicates).
+vtkSmartPointer<vtkPointSet> GatherInputOnFirstProcess(vtkPointSet* input);
+}
+
+#endif

@@ -10,3 +10,4 @@ case "$build" in
 esac
 echo "export PYTHONPATH=\"$build/lib/python3/dist-packages\${PYTHONPATH:+:\$PYTHONPATH}\""
 echo "export PV_PLUGIN_PATH=\"$build/lib/paraview-plugins/PointCloudSurface\${PV_PLUGIN_PATH:+:\$PV_PLUGIN_PATH}\""
+echo "export PV_PLUGIN_CONFIG_FILE=\"$build/lib/paraview-plugins/PointCloudSurface.plugins.xml\${PV_PLUGIN_CONFIG_FILE:+;\$PV_PLUGIN_CONFIG_FILE}\""

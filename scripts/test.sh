@@ -37,6 +37,8 @@ if [ "${1:-}" = "--valgrind" ]; then
     SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo
     $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends valgrind
   }
+  # Time bounds of the tests (TestAbort) stretched for valgrind's slowdown.
+  export PCS_TEST_TIME_SCALE=100
   exec xvfb-run -a ctest --test-dir "$BUILD_DIR" -T memcheck -L "Filters|Kernel" \
     -E "Image|Kernel-TestPredicates" \
     --overwrite MemoryCheckCommand="$(command -v valgrind)" \

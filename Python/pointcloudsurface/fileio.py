@@ -36,7 +36,7 @@ from vtkmodules.vtkCommonDataModel import vtkPointSet, vtkPolyData
 from .arrays import points_to_polydata
 
 __all__ = [
-    "ReadError", "WriteError", "MessageCollector", "read_cloud", "write_cloud", "read_mesh", "write_mesh",
+    "ReadError", "WriteError", "MessageCollector", "CapturedVTKMessages", "read_cloud", "write_cloud", "read_mesh", "write_mesh",
     "CLOUD_READ_FORMATS", "CLOUD_WRITE_FORMATS", "MESH_READ_FORMATS", "MESH_WRITE_FORMATS",
 ]
 
@@ -239,8 +239,9 @@ def _ply_ascii(path, data, elements, body):
         if all(p[2] is None for p in props):
             n = len(props) * count
             if position + n > len(tokens):
-                raise ReadError("%s: element '%s': %d values expected, the file ends after %d"
-                                % (path, element["name"], n, len(tokens) - position))
+                raise ReadError("%s: element '%s': %d values expected, the file has %d "
+                                "(truncated)" % (path, element["name"], n,
+                                                 len(tokens) - position))
             try:
                 block = np.array(tokens[position:position + n], dtype=np.float64)
             except ValueError:
@@ -452,8 +453,10 @@ def _read_pcd(path):
         except ValueError:
             raise ReadError("%s: a data value is not a number" % path) from None
         column = 0
-        for name, c in zip(fields, counts):
-            columns[name] = table[:, column:column + c]
+        for name, c, dt in zip(fields, counts, dtypes):
+            # The stored value is of the field's type (F 4: the float nearest the text).
+            columns[name] = table[:, column:column + c].astype(dt).astype(np.float64) \
+                if dt.kind == "f" else table[:, column:column + c]
             column += c
     elif mode in ("binary", "binary_compressed"):
         if mode == "binary_compressed":
@@ -579,10 +582,54 @@ def _observe_errors(algorithm):
 
 
 def vtk_message(text):
-    """The message part of a VTK error text ("ERROR: In file, line N\\nclass (0x..): text")."""
+    """The message part of a VTK error text ("ERROR: In file, line N\\nclass (0x..): text",
+    "Generic Warning: In file, line N\\ntext")."""
     text = str(text).strip()
     match = re.search(r"\(0x[0-9a-fA-F]+\):\s*(.*)", text, re.S)
-    return " ".join((match.group(1) if match else text).split())
+    if match:
+        text = match.group(1)
+    else:
+        text = re.sub(r"^[\w ]*(Warning|Error|ERROR):\s*In [^\n]*, line \d+\s*", "", text)
+    return " ".join(text.split())
+
+
+class CapturedVTKMessages:
+    """Context manager: the errors and warnings that VTK objects without an observer send to
+    vtkOutputWindow (e.g. the readers a vtkDataSetReader creates inside) are collected in
+    ``errors`` / ``warnings`` instead of being printed."""
+
+    def __enter__(self):
+        from vtkmodules.util.misc import calldata_type
+        from vtkmodules.vtkCommonCore import VTK_STRING, vtkLogger, vtkOutputWindow
+
+        self.errors, self.warnings = [], []
+
+        @calldata_type(VTK_STRING)
+        def on_error(caller, event, message):
+            self.errors.append(vtk_message(message or "error"))
+
+        @calldata_type(VTK_STRING)
+        def on_warning(caller, event, message):
+            self.warnings.append(vtk_message(message or "warning"))
+
+        self._window = vtkOutputWindow.GetInstance()
+        self._callbacks = (on_error, on_warning)
+        self._tags = (self._window.AddObserver(vtkCommand.ErrorEvent, on_error),
+                      self._window.AddObserver(vtkCommand.WarningEvent, on_warning))
+        self._mode = self._window.GetDisplayMode()
+        self._verbosity = vtkLogger.GetCurrentVerbosityCutoff()
+        self._window.SetDisplayModeToNever()
+        vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
+        return self
+
+    def __exit__(self, *exc):
+        from vtkmodules.vtkCommonCore import vtkLogger
+
+        for tag in self._tags:
+            self._window.RemoveObserver(tag)
+        self._window.SetDisplayMode(self._mode)
+        vtkLogger.SetStderrVerbosity(self._verbosity)
+        return False
 
 
 def _vtk_reader(path, ext):
@@ -600,10 +647,14 @@ def _vtk_reader(path, ext):
         reader = vtkXMLPolyDataReader() if ext == ".vtp" else vtkXMLUnstructuredGridReader()
     reader.SetFileName(path)
     errors = _observe_errors(reader)
-    reader.Update()
+    with CapturedVTKMessages() as captured:
+        reader.Update()
     output = reader.GetOutputDataObject(0)
-    if errors.errors:
-        raise ReadError("%s: %s" % (path, errors.errors[0]))
+    # The legacy readers report read errors ("Error reading binary data!") as warnings.
+    problems = errors.errors + captured.errors + (
+        errors.warnings + captured.warnings if ext == ".vtk" else [])
+    if problems:
+        raise ReadError("%s: %s" % (path, problems[0]))
     if output is None or not output.IsA("vtkPointSet"):
         raise ReadError("%s: holds no point set (%s)"
                         % (path, output.GetClassName() if output else "nothing"))
@@ -756,9 +807,10 @@ def read_mesh(path):
     reader = vtkSTLReader() if ext == ".stl" else vtkOBJReader()
     reader.SetFileName(path)
     errors = _observe_errors(reader)
-    reader.Update()
-    if errors.errors:
-        raise ReadError("%s: %s" % (path, errors.errors[0]))
+    with CapturedVTKMessages() as captured:
+        reader.Update()
+    if errors.errors or captured.errors:
+        raise ReadError("%s: %s" % (path, (errors.errors + captured.errors)[0]))
     return reader.GetOutput()
 
 
@@ -810,7 +862,8 @@ def write_mesh(mesh, path, binary=True):
     writer.SetFileName(path)
     writer.SetInputData(mesh)
     errors = _observe_errors(writer)
-    ok = writer.Write()
-    if errors.errors or not ok:
-        message = errors.errors[0] if errors.errors else "the writer failed"
+    with CapturedVTKMessages() as captured:
+        ok = writer.Write()
+    if errors.errors or captured.errors or not ok:
+        message = (errors.errors + captured.errors + ["the writer failed"])[0]
         raise WriteError("%s: %s" % (path, message))

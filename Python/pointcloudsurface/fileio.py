@@ -23,9 +23,11 @@ PCD reader. Any problem with a file raises ``ReadError`` with the file name, the
 the byte counts (binary) and what was expected. Writing uses VTK's writers (vtkPLYWriter stores
 float coordinates) except for the text and PCD formats, which VTK does not write.
 """
+import io
 import os
 import re
 import struct
+import warnings
 
 import numpy as np
 
@@ -122,6 +124,10 @@ def _normalized(name):
 
 def _read_table(path, allow_header):
     text = _decode_text(path, _read_bytes(path))
+    fast = _read_table_fast(path, text, allow_header)
+    if fast is not None:
+        return fast
+    # Line by line: finds the line and the value of a problem for the message.
     header = None
     rows, numbers = [], []
     for number, line in enumerate(text.splitlines(), 1):
@@ -148,6 +154,39 @@ def _read_table(path, allow_header):
         raise ReadError("%s: line %d: %d value(s); a point needs x y z"
                         % (path, numbers[0], ncols))
     return header, _to_float(path, rows, numbers, ncols)
+
+
+def _read_table_fast(path, text, allow_header):
+    """numpy's C parser on the whole table; None when the table is not clean (then the line by
+    line reader finds and names the problem)."""
+    position = 0
+    header = None
+    while position < len(text):  # the first line that is not empty or a comment
+        end = text.find("\n", position)
+        end = len(text) if end < 0 else end
+        line = text[position:end].strip()
+        if line and not line.startswith("#") and not line.startswith("//"):
+            tokens = [t for t in _SEPARATORS.split(line) if t]
+            if allow_header and not all(map(_is_number, tokens)):
+                header = [_normalized(t) for t in tokens]
+                position = end + 1
+            break
+        position = end + 1
+    body = text[position:]
+    if "," in body or ";" in body:
+        body = body.replace(",", " ").replace(";", " ")
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # "empty input file" is a warning in numpy
+            table = np.loadtxt(io.StringIO(body), dtype=np.float64, comments=("#", "//"),
+                               ndmin=2)
+    except (ValueError, UserWarning):
+        return None
+    if table.shape[0] == 0 or table.shape[1] < 3:
+        return None
+    if header is not None and len(header) != table.shape[1]:
+        return None
+    return header, table
 
 
 def _cloud_from_columns(path, names, table):

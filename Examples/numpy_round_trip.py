@@ -42,7 +42,8 @@ def main():
         return 1
     if args.method == "terrain":
         a, b, c = (out_points[triangles[:, i], :2] for i in range(3))
-        cross = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
+        cross = ((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1])
+                 - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]))
         print("triangles counter-clockwise from above: %d of %d" % ((cross > 0).sum(),
                                                                     len(triangles)))
     if args.output:

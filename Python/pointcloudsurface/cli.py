@@ -27,9 +27,10 @@ import time
 PROGRAM = "pointcloud-surface"
 EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INPUT, EXIT_UNAVAILABLE, EXIT_OUTPUT = 0, 1, 2, 3, 4, 5
 EXIT_INTERRUPTED = 130
-EXIT_CODES_HELP = """exit codes: 0 success; 1 the reconstruction failed (filter error, no triangles);
-2 usage error (unknown option or method, wrong parameter value); 3 unreadable or corrupt input
-file; 4 method not available in this build; 5 an output cannot be written; 130 interrupted."""
+EXIT_CODES_HELP = """exit codes: 0 success; 1 the reconstruction failed (filter error, no
+triangles); 2 usage error (unknown option or method, wrong parameter value); 3 unreadable or
+corrupt input file; 4 method not available in this build; 5 an output cannot be written;
+130 interrupted."""
 _XVFB_MARK = "POINTCLOUDSURFACE_CLI_UNDER_XVFB"
 
 
@@ -75,9 +76,10 @@ class ProgressBar:
         self.stream.flush()
         self.open = True
 
-    def end(self):
+    def end(self, completed=True):
         if self.enabled and self.open:
-            self.update(1.0)
+            if completed:
+                self.update(1.0)
             self.stream.write("\n")
             self.stream.flush()
         self.open = False
@@ -119,12 +121,13 @@ def _run(algorithm, label, bar, interrupt, warn):
     def on_progress(caller, event):
         if interrupt.requested:
             caller.SetAbortExecute(1)
+            return
         bar.update(caller.GetProgress())
 
     algorithm.AddObserver(vtkCommand.ProgressEvent, on_progress)
     bar.begin(label)
     algorithm.Update()
-    bar.end()
+    bar.end(completed=not interrupt.requested)
     for warning in messages.warnings:
         warn("warning: %s: %s" % (algorithm.GetClassName(), warning))
     if interrupt.requested:

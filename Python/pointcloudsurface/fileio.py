@@ -31,14 +31,15 @@ import warnings
 
 import numpy as np
 
-from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkPointSet, vtkPolyData
 
 from .arrays import points_to_polydata
 
 __all__ = [
-    "ReadError", "WriteError", "MessageCollector", "CapturedVTKMessages", "read_cloud", "write_cloud", "read_mesh", "write_mesh",
+    "ReadError", "WriteError", "MessageCollector", "CapturedVTKMessages", "read_cloud",
+    "write_cloud", "read_mesh", "write_mesh",
     "CLOUD_READ_FORMATS", "CLOUD_WRITE_FORMATS", "MESH_READ_FORMATS", "MESH_WRITE_FORMATS",
 ]
 
@@ -301,7 +302,8 @@ def _ply_ascii(path, data, elements, body):
                         k = int(tokens[position])
                         if k < 0:
                             raise ValueError
-                        columns[name].append([int(t) for t in tokens[position + 1:position + 1 + k]])
+                        items = tokens[position + 1:position + 1 + k]
+                        columns[name].append([int(t) for t in items])
                         if len(columns[name][-1]) != k:
                             raise IndexError
                         position += 1 + k
@@ -451,7 +453,8 @@ def _read_pcd(path):
         key = words[0].upper()
         if key not in ("VERSION", "FIELDS", "SIZE", "TYPE", "COUNT", "WIDTH", "HEIGHT",
                        "VIEWPOINT", "POINTS", "DATA"):
-            raise ReadError("%s: header line %d: unknown PCD keyword '%s'" % (path, number, words[0]))
+            raise ReadError("%s: header line %d: unknown PCD keyword '%s'"
+                            % (path, number, words[0]))
         header[key] = words[1:]
         if key == "DATA":
             break
@@ -796,7 +799,8 @@ def _write_pcd(path, table, has_normals, binary):
     single = _float32_exact(table)
     size = 4 if single else 8
     lines = ["# .PCD v0.7 - Point Cloud Data file format (written by pointcloudsurface)",
-             "VERSION 0.7", "FIELDS " + " ".join(fields), "SIZE " + " ".join([str(size)] * len(fields)),
+             "VERSION 0.7", "FIELDS " + " ".join(fields),
+             "SIZE " + " ".join([str(size)] * len(fields)),
              "TYPE " + " ".join(["F"] * len(fields)), "COUNT " + " ".join(["1"] * len(fields)),
              "WIDTH %d" % table.shape[0], "HEIGHT 1", "VIEWPOINT 0 0 0 1 0 0 0",
              "POINTS %d" % table.shape[0], "DATA " + ("binary" if binary else "ascii")]

@@ -25,7 +25,7 @@ def render_png(mesh, path, size=(1024, 768), colour_by="z", show_unused=None):
     if not can_render():
         raise RuntimeError("rendering needs an X display (run under xvfb-run -a)")
     import vtkmodules.vtkInteractionStyle  # noqa: F401
-    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL render window factory)
     from vtkmodules.vtkCommonCore import vtkLookupTable
     from vtkmodules.vtkFiltersCore import vtkElevationFilter, vtkPolyDataNormals
     from vtkmodules.vtkIOImage import vtkPNGWriter

@@ -19,12 +19,14 @@ Checks:
   built) with a clear message; an unwritable output exits 5;
 - the summary line, the progress bar (--progress) and the PNG (--png, rendered offscreen under
   xvfb-run when there is no display; size and non-background pixels checked);
-- every method of the table that this build has runs on a sphere cloud.
+- every method of the table that this build has runs on a sphere cloud;
+- Ctrl-C (SIGINT) while the filter runs aborts it: exit code 130, nothing written.
 """
 import contextlib
 import io
 import os
 import shutil
+import signal
 import struct
 import subprocess
 import sys
@@ -151,7 +153,8 @@ def lzf_compress(data):
         table[key] = i
         if ref is not None and 0 < i - ref <= 8192:
             length = 3
-            while i + length < len(data) and length < 264 and data[ref + length] == data[i + length]:
+            while (i + length < len(data) and length < 264
+                   and data[ref + length] == data[i + length]):
                 length += 1
             flush()
             offset = i - ref - 1
@@ -460,6 +463,26 @@ for method in METHODS:
         check(mesh.GetNumberOfPolys() > 0, "%s: triangles" % method.name)
         check(mesh.GetNumberOfPoints() == 2000, "%s: every point passed through" % method.name)
         check("quality:" in out, "%s: summary printed" % method.name)
+
+# Ctrl-C while the filter runs: SIGINT once the progress bar shows the filter under way (10^6
+# points keep it busy for seconds after that); the filter aborts, the command exits 130.
+big = rng.normal(size=(1000000, 3))
+write_cloud(big, path("big.ply"))
+process = subprocess.Popen([COMMAND, path("big.ply"), "-m", "delaunay", "--progress", "-o",
+                            path("big-mesh.vtp")], stdout=subprocess.PIPE,
+                           stderr=subprocess.PIPE, stdin=subprocess.DEVNULL)
+seen = b""
+while b"delaunay " not in seen or b"%" not in seen.split(b"delaunay ")[-1]:
+    chunk = os.read(process.stderr.fileno(), 4096)
+    if not chunk:
+        break
+    seen += chunk
+process.send_signal(signal.SIGINT)
+out, err = process.communicate(timeout=300)
+err = (seen + err).decode(errors="replace")
+check(process.returncode == 130, "Ctrl-C: exit code 130 (got %d)" % process.returncode)
+check("interrupted" in err and "Traceback" not in err, "Ctrl-C: 'interrupted' (%r)" % err[-200:])
+check(not os.path.exists(path("big-mesh.vtp")), "Ctrl-C: nothing written")
 
 if not os.environ.get("PCS_KEEP"): shutil.rmtree(work, ignore_errors=True)
 print("work dir", work)

@@ -1,0 +1,837 @@
+#include "pcsHoleFilling.h"
+
+#include "pcsPredicates.h"
+
+#include "vtkMath.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <unordered_set>
+
+namespace pcs
+{
+namespace holes
+{
+namespace
+{
+using predicates::Orient2D;
+
+inline int Sign(double x)
+{
+  return (x > 0) - (x < 0);
+}
+
+// x is collinear with p and q: is it on the closed segment pq? (exact comparisons)
+inline bool OnClosedSegment(const double* p, const double* q, const double* x)
+{
+  return std::min(p[0], q[0]) <= x[0] && x[0] <= std::max(p[0], q[0]) &&
+    std::min(p[1], q[1]) <= x[1] && x[1] <= std::max(p[1], q[1]);
+}
+
+inline bool SamePoint(const double* a, const double* b)
+{
+  return a[0] == b[0] && a[1] == b[1];
+}
+
+// a, b, d collinear, b != a, d != a: do b and d lie on the same side of a?
+inline bool SameDirection(const double* a, const double* b, const double* d)
+{
+  return Sign(b[0] - a[0]) * Sign(d[0] - a[0]) > 0 || Sign(b[1] - a[1]) * Sign(d[1] - a[1]) > 0;
+}
+
+// Segments a-b and a-d sharing the end point a: do they overlap beyond a?
+inline bool OverlapAtSharedEnd(const double* a, const double* b, const double* d)
+{
+  return Orient2D(a, b, d) == 0 && SameDirection(a, b, d);
+}
+
+// p strictly inside the open segment ab (p distinct from a and b).
+inline bool OnOpenSegment(const double* a, const double* b, const double* p)
+{
+  return !SamePoint(a, p) && !SamePoint(b, p) && Orient2D(a, b, p) == 0 &&
+    OnClosedSegment(a, b, p);
+}
+
+// Is the direction v -> q strictly inside the interior angle of the counter-clockwise polygon
+// at v (previous vertex p, next vertex n)? Exact.
+bool InsideWedge(const double* p, const double* v, const double* n, const double* q)
+{
+  const int turn = Orient2D(p, v, n);
+  const int leftOfNext = Orient2D(v, n, q);     // interior side of the edge v -> n
+  const int leftOfPrevious = Orient2D(p, v, q); // interior side of the edge p -> v
+  if (turn > 0)
+  {
+    return leftOfNext > 0 && leftOfPrevious > 0;
+  }
+  if (turn < 0)
+  {
+    return leftOfNext > 0 || leftOfPrevious > 0;
+  }
+  // Straight vertex (n ahead of p): the interior is the open left half-plane.
+  return SameDirection(v, n, p) ? false : leftOfNext > 0;
+}
+
+double Distance3(const double* a, const double* b)
+{
+  const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+  return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
+uint64_t EdgeKey(int32_t a, int32_t b)
+{
+  if (a > b)
+  {
+    std::swap(a, b);
+  }
+  return (static_cast<uint64_t>(static_cast<uint32_t>(a)) << 32) | static_cast<uint32_t>(b);
+}
+
+// Exact orientation of a simple polygon: the sign of the turn at its lexicographically smallest
+// vertex (always a convex vertex).
+int SimplePolygonOrientation(const std::vector<double>& uv)
+{
+  const size_t n = uv.size() / 2;
+  size_t k = 0;
+  for (size_t i = 1; i < n; ++i)
+  {
+    if (uv[2 * i] < uv[2 * k] || (uv[2 * i] == uv[2 * k] && uv[2 * i + 1] < uv[2 * k + 1]))
+    {
+      k = i;
+    }
+  }
+  return Orient2D(&uv[2 * ((k + n - 1) % n)], &uv[2 * k], &uv[2 * ((k + 1) % n)]);
+}
+} // namespace
+
+//------------------------------------------------------------------------------------------------
+bool Plane::Fit(const double* xyz, const int32_t* ids, size_t count)
+{
+  if (count < 3)
+  {
+    return false;
+  }
+  double centroid[3] = { 0, 0, 0 };
+  for (size_t k = 0; k < count; ++k)
+  {
+    const double* p = xyz + 3 * static_cast<int64_t>(ids[k]);
+    centroid[0] += p[0];
+    centroid[1] += p[1];
+    centroid[2] += p[2];
+  }
+  for (double& c : centroid)
+  {
+    c /= static_cast<double>(count);
+  }
+  double covariance[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
+  for (size_t k = 0; k < count; ++k)
+  {
+    const double* p = xyz + 3 * static_cast<int64_t>(ids[k]);
+    const double d[3] = { p[0] - centroid[0], p[1] - centroid[1], p[2] - centroid[2] };
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        covariance[i][j] += d[i] * d[j];
+      }
+    }
+  }
+  double* rows[3] = { covariance[0], covariance[1], covariance[2] };
+  double eigenvalues[3], storage[3][3];
+  double* vectors[3] = { storage[0], storage[1], storage[2] };
+  vtkMath::Jacobi(rows, eigenvalues, vectors); // decreasing eigenvalues, eigenvectors in columns
+  for (int i = 0; i < 3; ++i)
+  {
+    this->Origin[i] = centroid[i];
+    this->U[i] = vectors[i][0];
+    this->V[i] = vectors[i][1];
+  }
+  vtkMath::Cross(this->U, this->V, this->N);
+  return std::isfinite(this->N[0]) && std::isfinite(this->N[1]) && std::isfinite(this->N[2]);
+}
+
+void Plane::Project(const double* p, double uv[2]) const
+{
+  const double d[3] = { p[0] - this->Origin[0], p[1] - this->Origin[1], p[2] - this->Origin[2] };
+  uv[0] = d[0] * this->U[0] + d[1] * this->U[1] + d[2] * this->U[2];
+  uv[1] = d[0] * this->V[0] + d[1] * this->V[1] + d[2] * this->V[2];
+}
+
+double Plane::Distance(const double* p) const
+{
+  const double d[3] = { p[0] - this->Origin[0], p[1] - this->Origin[1], p[2] - this->Origin[2] };
+  return d[0] * this->N[0] + d[1] * this->N[1] + d[2] * this->N[2];
+}
+
+void Plane::Flip()
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    this->V[i] = -this->V[i];
+    this->N[i] = -this->N[i];
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+double SignedArea2(const std::vector<double>& uv)
+{
+  const size_t n = uv.size() / 2;
+  double area = 0.0;
+  for (size_t i = 0; i < n; ++i)
+  {
+    const size_t j = (i + 1) % n;
+    area += uv[2 * i] * uv[2 * j + 1] - uv[2 * j] * uv[2 * i + 1];
+  }
+  return area;
+}
+
+bool SegmentsIntersect(const double* p, const double* q, const double* r, const double* s)
+{
+  const int o1 = Orient2D(p, q, r);
+  const int o2 = Orient2D(p, q, s);
+  const int o3 = Orient2D(r, s, p);
+  const int o4 = Orient2D(r, s, q);
+  if (o1 * o2 < 0 && o3 * o4 < 0)
+  {
+    return true;
+  }
+  return (o1 == 0 && OnClosedSegment(p, q, r)) || (o2 == 0 && OnClosedSegment(p, q, s)) ||
+    (o3 == 0 && OnClosedSegment(r, s, p)) || (o4 == 0 && OnClosedSegment(r, s, q));
+}
+
+bool IsSimplePolygon(const std::vector<double>& uv)
+{
+  const size_t n = uv.size() / 2;
+  if (n < 3)
+  {
+    return false;
+  }
+  auto P = [&uv](size_t i) { return &uv[2 * i]; };
+  for (size_t i = 0; i < n; ++i)
+  {
+    const size_t next = (i + 1) % n, previous = (i + n - 1) % n;
+    if (SamePoint(P(i), P(next)))
+    {
+      return false; // zero-length edge
+    }
+    // Adjacent edges meet only at their common vertex: no fold-back along a line.
+    if (OverlapAtSharedEnd(P(i), P(previous), P(next)))
+    {
+      return false;
+    }
+  }
+  // Non-adjacent edges must not meet: sweep over the edges sorted by their smallest u.
+  std::vector<size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  auto lo = [&](size_t e) { return std::min(P(e)[0], P((e + 1) % n)[0]); };
+  auto hi = [&](size_t e) { return std::max(P(e)[0], P((e + 1) % n)[0]); };
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return lo(a) < lo(b); });
+  for (size_t a = 0; a < n; ++a)
+  {
+    const size_t e = order[a];
+    const double* e0 = P(e);
+    const double* e1 = P((e + 1) % n);
+    const double eHi = hi(e);
+    const double eYLo = std::min(e0[1], e1[1]), eYHi = std::max(e0[1], e1[1]);
+    for (size_t b = a + 1; b < n && lo(order[b]) <= eHi; ++b)
+    {
+      const size_t f = order[b];
+      if (f == (e + 1) % n || e == (f + 1) % n)
+      {
+        continue; // adjacent: checked above
+      }
+      const double* f0 = P(f);
+      const double* f1 = P((f + 1) % n);
+      if (std::max(f0[1], f1[1]) < eYLo || std::min(f0[1], f1[1]) > eYHi)
+      {
+        continue;
+      }
+      if (SegmentsIntersect(e0, e1, f0, f1))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+int PointInPolygon(const std::vector<double>& uv, const double* p)
+{
+  const size_t n = uv.size() / 2;
+  int winding = 0;
+  for (size_t i = 0; i < n; ++i)
+  {
+    const double* a = &uv[2 * i];
+    const double* b = &uv[2 * ((i + 1) % n)];
+    const bool inBox = std::min(a[0], b[0]) <= p[0] && p[0] <= std::max(a[0], b[0]) &&
+      std::min(a[1], b[1]) <= p[1] && p[1] <= std::max(a[1], b[1]);
+    const int o = (inBox || (a[1] <= p[1]) != (b[1] <= p[1])) ? Orient2D(a, b, p) : 0;
+    if (inBox && o == 0)
+    {
+      return 0; // on the edge
+    }
+    if (a[1] <= p[1] && b[1] > p[1] && o > 0)
+    {
+      ++winding; // upward crossing, p on the left
+    }
+    else if (a[1] > p[1] && b[1] <= p[1] && o < 0)
+    {
+      --winding; // downward crossing, p on the right
+    }
+  }
+  return winding != 0 ? 1 : -1;
+}
+
+//------------------------------------------------------------------------------------------------
+bool GreedyTriangulation2D(const std::vector<double>& uv, const std::vector<double>& xyz, int n,
+  const std::function<bool(int, int)>& forbidden, std::vector<int32_t>& triangles)
+{
+  const int count = static_cast<int>(uv.size() / 2);
+  const int m = count - n;
+  if (n < 3 || m < 0)
+  {
+    return false;
+  }
+  auto P = [&uv](int i) { return &uv[2 * i]; };
+  auto isLoopEdge = [n](int i, int j) {
+    return i < n && j < n && ((j == (i + 1) % n) || (i == (j + 1) % n));
+  };
+
+  std::vector<std::vector<int>> adjacency(count);
+  std::vector<std::pair<int, int>> accepted;
+  accepted.reserve(3 * static_cast<size_t>(count));
+  for (int i = 0; i < n; ++i)
+  {
+    const int j = (i + 1) % n;
+    accepted.emplace_back(i, j);
+    adjacency[i].push_back(j);
+    adjacency[j].push_back(i);
+  }
+
+  // Candidates: every other pair, by increasing 3D length (ties by ids: deterministic).
+  struct Candidate
+  {
+    double Length2;
+    int I, J;
+  };
+  std::vector<Candidate> candidates;
+  candidates.reserve(static_cast<size_t>(count) * (count - 1) / 2);
+  for (int i = 0; i < count; ++i)
+  {
+    for (int j = i + 1; j < count; ++j)
+    {
+      if (isLoopEdge(i, j))
+      {
+        continue;
+      }
+      if (j < n)
+      {
+        // Between two loop vertices: a diagonal leaves each end into the polygon.
+        if (!InsideWedge(P((i + n - 1) % n), P(i), P((i + 1) % n), P(j)) ||
+          !InsideWedge(P((j + n - 1) % n), P(j), P((j + 1) % n), P(i)))
+        {
+          continue;
+        }
+      }
+      if (forbidden && forbidden(i, j))
+      {
+        continue;
+      }
+      const double* a = &xyz[3 * static_cast<size_t>(i)];
+      const double* b = &xyz[3 * static_cast<size_t>(j)];
+      const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+      candidates.push_back({ d[0] * d[0] + d[1] * d[1] + d[2] * d[2], i, j });
+    }
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return a.Length2 != b.Length2 ? a.Length2 < b.Length2
+                                  : (a.I != b.I ? a.I < b.I : a.J < b.J);
+  });
+
+  // A triangulation of the polygon with its m interior points has 2n + 3m - 3 edges.
+  const size_t complete = static_cast<size_t>(2 * n + 3 * m - 3);
+  for (const Candidate& c : candidates)
+  {
+    if (accepted.size() >= complete)
+    {
+      break;
+    }
+    const double* a = P(c.I);
+    const double* b = P(c.J);
+    const double minU = std::min(a[0], b[0]), maxU = std::max(a[0], b[0]);
+    const double minV = std::min(a[1], b[1]), maxV = std::max(a[1], b[1]);
+    bool compatible = true;
+    for (int k = 0; k < count && compatible; ++k)
+    {
+      if (k != c.I && k != c.J && P(k)[0] >= minU && P(k)[0] <= maxU && P(k)[1] >= minV &&
+        P(k)[1] <= maxV && OnOpenSegment(a, b, P(k)))
+      {
+        compatible = false; // passes through a point
+      }
+    }
+    for (size_t e = 0; e < accepted.size() && compatible; ++e)
+    {
+      const int r = accepted[e].first, s = accepted[e].second;
+      const double* pr = P(r);
+      const double* ps = P(s);
+      if (std::max(pr[0], ps[0]) < minU || std::min(pr[0], ps[0]) > maxU ||
+        std::max(pr[1], ps[1]) < minV || std::min(pr[1], ps[1]) > maxV)
+      {
+        continue;
+      }
+      const bool sharesI = (r == c.I || s == c.I), sharesJ = (r == c.J || s == c.J);
+      if (sharesI && sharesJ)
+      {
+        compatible = false; // already accepted (cannot happen: pairs are unique)
+      }
+      else if (sharesI)
+      {
+        compatible = !OverlapAtSharedEnd(a, b, r == c.I ? ps : pr);
+      }
+      else if (sharesJ)
+      {
+        compatible = !OverlapAtSharedEnd(b, a, r == c.J ? ps : pr);
+      }
+      else
+      {
+        compatible = !SegmentsIntersect(a, b, pr, ps);
+      }
+    }
+    if (compatible)
+    {
+      accepted.emplace_back(c.I, c.J);
+      adjacency[c.I].push_back(c.J);
+      adjacency[c.J].push_back(c.I);
+    }
+  }
+
+  // Triangles: the empty 3-cycles of accepted edges (each found once, from its smallest id).
+  int found = 0;
+  for (int u = 0; u < count; ++u)
+  {
+    for (int v : adjacency[u])
+    {
+      if (v <= u)
+      {
+        continue;
+      }
+      for (int w : adjacency[v])
+      {
+        if (w <= v || std::find(adjacency[u].begin(), adjacency[u].end(), w) == adjacency[u].end())
+        {
+          continue;
+        }
+        const int o = Orient2D(P(u), P(v), P(w));
+        if (o == 0)
+        {
+          continue;
+        }
+        const int t[3] = { u, o > 0 ? v : w, o > 0 ? w : v };
+        bool empty = true;
+        for (int k = 0; k < count && empty; ++k)
+        {
+          if (k != u && k != v && k != w && Orient2D(P(t[0]), P(t[1]), P(k)) > 0 &&
+            Orient2D(P(t[1]), P(t[2]), P(k)) > 0 && Orient2D(P(t[2]), P(t[0]), P(k)) > 0)
+          {
+            empty = false;
+          }
+        }
+        if (empty)
+        {
+          triangles.insert(triangles.end(), { t[0], t[1], t[2] });
+          ++found;
+        }
+      }
+    }
+  }
+  return found == n + 2 * m - 2;
+}
+
+//------------------------------------------------------------------------------------------------
+struct HoleFiller::Piece
+{
+  std::vector<int32_t> Loop;
+  std::vector<double> Vectors; // 3 per loop vertex
+  std::unordered_set<uint64_t>* Created = nullptr; // edges made by earlier pieces of the hole
+};
+
+bool HoleFiller::HasUnambiguousProjection(const double* xyz, const std::vector<int32_t>& loop,
+  const std::vector<double>& boundaryVectors, Plane& plane) const
+{
+  const size_t n = loop.size();
+  if (n < 3 || !plane.Fit(xyz, loop.data(), n))
+  {
+    return false;
+  }
+  std::vector<double> uv(2 * n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    plane.Project(xyz + 3 * static_cast<int64_t>(loop[i]), &uv[2 * i]);
+  }
+  if (SignedArea2(uv) < 0)
+  {
+    plane.Flip();
+    for (size_t i = 0; i < n; ++i)
+    {
+      uv[2 * i + 1] = -uv[2 * i + 1];
+    }
+  }
+  if (!IsSimplePolygon(uv) || SimplePolygonOrientation(uv) <= 0)
+  {
+    return false;
+  }
+  if (this->AuxiliaryDistance > 0 && boundaryVectors.size() >= 3 * n)
+  {
+    for (size_t i = 0; i < n; ++i)
+    {
+      const double* v = &boundaryVectors[3 * i];
+      const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      if (!(length > 0) || !std::isfinite(length))
+      {
+        continue;
+      }
+      const double* p = xyz + 3 * static_cast<int64_t>(loop[i]);
+      const double scale = this->AuxiliaryDistance / length;
+      const double auxiliary[3] = { p[0] + scale * v[0], p[1] + scale * v[1],
+        p[2] + scale * v[2] };
+      double q[2];
+      plane.Project(auxiliary, q);
+      if (PointInPolygon(uv, q) >= 0)
+      {
+        return false; // the surrounding mesh folds over the hole in this projection
+      }
+    }
+  }
+  return true;
+}
+
+// Split a piece by a chord (plane == nullptr: step 5, chosen in 3D) or by a diagonal of its
+// projection `uv` (a piece too large for one greedy triangulation).
+bool HoleFiller::SplitPiece(const double* xyz, const Piece& piece, const Plane* plane,
+  const std::vector<double>* uv, Piece& first, Piece& second) const
+{
+  const std::vector<int32_t>& loop = piece.Loop;
+  const int n = static_cast<int>(loop.size());
+  if (n < 4)
+  {
+    return false;
+  }
+  auto X = [xyz, &loop](int i) { return xyz + 3 * static_cast<int64_t>(loop[i]); };
+  std::vector<double> arc(n + 1, 0.0);
+  for (int i = 0; i < n; ++i)
+  {
+    arc[i + 1] = arc[i] + Distance3(X(i), X((i + 1) % n));
+  }
+  const double perimeter = arc[n];
+
+  struct Chord
+  {
+    double Score;
+    int I, J;
+  };
+  std::vector<Chord> chords;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = i + 2; j < n; ++j)
+    {
+      if ((i == 0 && j == n - 1) || loop[i] == loop[j])
+      {
+        continue;
+      }
+      const double along = arc[j] - arc[i];
+      const double shorter = std::min(along, perimeter - along);
+      const double length = Distance3(X(i), X(j));
+      chords.push_back({ shorter > 0 ? length / shorter : std::numeric_limits<double>::max(), i,
+        j });
+    }
+  }
+  std::sort(chords.begin(), chords.end(), [](const Chord& a, const Chord& b) {
+    return a.Score != b.Score ? a.Score < b.Score : (a.I != b.I ? a.I < b.I : a.J < b.J);
+  });
+
+  auto forbidden = [this, &piece](int32_t a, int32_t b) {
+    return (this->EdgeExists && this->EdgeExists(a, b)) ||
+      (piece.Created && piece.Created->count(EdgeKey(a, b)));
+  };
+  auto towardsHole = [&](int i, int j) {
+    const double* v = &piece.Vectors[3 * static_cast<size_t>(i)];
+    const double* a = X(i);
+    const double* b = X(j);
+    const double d = v[0] * (b[0] - a[0]) + v[1] * (b[1] - a[1]) + v[2] * (b[2] - a[2]);
+    return !(v[0] != 0 || v[1] != 0 || v[2] != 0) || d < 0;
+  };
+  auto isDiagonal = [&](int i, int j) {
+    const std::vector<double>& q = *uv;
+    auto P = [&q](int k) { return &q[2 * static_cast<size_t>(k)]; };
+    if (!InsideWedge(P((i + n - 1) % n), P(i), P((i + 1) % n), P(j)) ||
+      !InsideWedge(P((j + n - 1) % n), P(j), P((j + 1) % n), P(i)))
+    {
+      return false;
+    }
+    for (int e = 0; e < n; ++e)
+    {
+      const int f = (e + 1) % n;
+      const bool atI = (e == i || f == i), atJ = (e == j || f == j);
+      if (atI && atJ)
+      {
+        continue;
+      }
+      if (atI)
+      {
+        if (OverlapAtSharedEnd(P(i), P(j), P(e == i ? f : e)))
+        {
+          return false;
+        }
+      }
+      else if (atJ)
+      {
+        if (OverlapAtSharedEnd(P(j), P(i), P(e == j ? f : e)))
+        {
+          return false;
+        }
+      }
+      else if (SegmentsIntersect(P(i), P(j), P(e), P(f)))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    for (const Chord& c : chords)
+    {
+      if (forbidden(loop[c.I], loop[c.J]))
+      {
+        continue;
+      }
+      if (plane)
+      {
+        if (!isDiagonal(c.I, c.J))
+        {
+          continue;
+        }
+      }
+      else if (pass == 0 && (!towardsHole(c.I, c.J) || !towardsHole(c.J, c.I)))
+      {
+        continue;
+      }
+      first = Piece();
+      second = Piece();
+      first.Created = second.Created = piece.Created;
+      for (int k = c.I; k <= c.J; ++k)
+      {
+        first.Loop.push_back(loop[k]);
+        first.Vectors.insert(first.Vectors.end(), &piece.Vectors[3 * k], &piece.Vectors[3 * k + 3]);
+      }
+      for (int k = c.J; k != c.I + n + 1; ++k)
+      {
+        const int kk = k % n;
+        second.Loop.push_back(loop[kk]);
+        second.Vectors.insert(
+          second.Vectors.end(), &piece.Vectors[3 * kk], &piece.Vectors[3 * kk + 3]);
+      }
+      return true;
+    }
+    if (plane)
+    {
+      break; // a diagonal always exists in a simple polygon, unless all are forbidden
+    }
+  }
+  return false;
+}
+
+bool HoleFiller::FillPiece(const double* xyz, Piece& piece, std::vector<char>& taken,
+  const std::vector<int32_t>& candidates, FillResult& result, int depth) const
+{
+  std::vector<int32_t>& loop = piece.Loop;
+  // Consecutive repeats (a zero-length edge) are dropped.
+  for (size_t i = 0; loop.size() > 1 && i < loop.size();)
+  {
+    const size_t next = (i + 1) % loop.size();
+    if (loop[i] == loop[next])
+    {
+      loop.erase(loop.begin() + next);
+      piece.Vectors.erase(piece.Vectors.begin() + 3 * next, piece.Vectors.begin() + 3 * next + 3);
+      i = 0;
+      continue;
+    }
+    ++i;
+  }
+  const int n = static_cast<int>(loop.size());
+  if (n < 3)
+  {
+    return true; // a slit or a point: nothing to fill
+  }
+  if (depth > 4 * n + 64)
+  {
+    ++result.NumberOfFailedPieces;
+    return false;
+  }
+  // A vertex met twice: the hole touches itself there; split it into two loops.
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = i + 1; j < n; ++j)
+    {
+      if (loop[i] == loop[j])
+      {
+        Piece a, b;
+        a.Created = b.Created = piece.Created;
+        for (int k = i; k < j; ++k)
+        {
+          a.Loop.push_back(loop[k]);
+          a.Vectors.insert(a.Vectors.end(), &piece.Vectors[3 * k], &piece.Vectors[3 * k + 3]);
+        }
+        for (int k = j; k != i + n; ++k)
+        {
+          const int kk = k % n;
+          b.Loop.push_back(loop[kk]);
+          b.Vectors.insert(b.Vectors.end(), &piece.Vectors[3 * kk], &piece.Vectors[3 * kk + 3]);
+        }
+        const bool okA = this->FillPiece(xyz, a, taken, candidates, result, depth + 1);
+        const bool okB = this->FillPiece(xyz, b, taken, candidates, result, depth + 1);
+        return okA && okB;
+      }
+    }
+  }
+
+  auto splitAndFill = [&](const Plane* plane, const std::vector<double>* uv) {
+    Piece a, b;
+    if (!this->SplitPiece(xyz, piece, plane, uv, a, b))
+    {
+      ++result.NumberOfFailedPieces;
+      return false;
+    }
+    result.Chords.push_back({ a.Loop.front(), a.Loop.back() });
+    if (piece.Created)
+    {
+      piece.Created->insert(EdgeKey(a.Loop.front(), a.Loop.back()));
+    }
+    const bool okA = this->FillPiece(xyz, a, taken, candidates, result, depth + 1);
+    const bool okB = this->FillPiece(xyz, b, taken, candidates, result, depth + 1);
+    return okA && okB;
+  };
+
+  // Step 5: split until the projection is unambiguous.
+  Plane plane;
+  if (!this->HasUnambiguousProjection(xyz, loop, piece.Vectors, plane))
+  {
+    return splitAndFill(nullptr, nullptr);
+  }
+
+  std::vector<double> uv(2 * static_cast<size_t>(n));
+  double radius = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    const double* p = xyz + 3 * static_cast<int64_t>(loop[i]);
+    plane.Project(p, &uv[2 * static_cast<size_t>(i)]);
+    radius = std::max(radius, Distance3(p, plane.Origin));
+  }
+
+  // The lost points inside the piece: strictly inside its projection, near its plane, not
+  // coinciding in projection with another point.
+  std::vector<int32_t> inside;
+  std::vector<double> insideUV;
+  for (size_t k = 0; k < candidates.size(); ++k)
+  {
+    if (taken[k])
+    {
+      continue;
+    }
+    const double* p = xyz + 3 * static_cast<int64_t>(candidates[k]);
+    if (!(std::fabs(plane.Distance(p)) <= 0.5 * radius))
+    {
+      continue;
+    }
+    double q[2];
+    plane.Project(p, q);
+    if (PointInPolygon(uv, q) <= 0)
+    {
+      continue;
+    }
+    bool distinct = true;
+    for (size_t s = 0; s < inside.size() && distinct; ++s)
+    {
+      distinct = !(insideUV[2 * s] == q[0] && insideUV[2 * s + 1] == q[1]);
+    }
+    if (distinct)
+    {
+      inside.push_back(static_cast<int32_t>(k));
+      insideUV.insert(insideUV.end(), { q[0], q[1] });
+    }
+  }
+
+  if (n + static_cast<int>(inside.size()) > std::max(this->MaximumGreedyPoints, 3) && n >= 4)
+  {
+    return splitAndFill(&plane, &uv);
+  }
+
+  // Step 6: the greedy triangulation of the projected piece and its points.
+  std::vector<int32_t> ids(loop);
+  std::vector<double> local3(3 * static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i)
+  {
+    std::copy_n(xyz + 3 * static_cast<int64_t>(loop[i]), 3, &local3[3 * static_cast<size_t>(i)]);
+  }
+  for (size_t s = 0; s < inside.size(); ++s)
+  {
+    const int32_t id = candidates[inside[s]];
+    ids.push_back(id);
+    uv.insert(uv.end(), { insideUV[2 * s], insideUV[2 * s + 1] });
+    local3.insert(local3.end(), xyz + 3 * static_cast<int64_t>(id), xyz + 3 * static_cast<int64_t>(id) + 3);
+  }
+  auto forbidden = [this, &ids, &piece](int i, int j) {
+    return (this->EdgeExists && this->EdgeExists(ids[i], ids[j])) ||
+      (piece.Created && piece.Created->count(EdgeKey(ids[i], ids[j])));
+  };
+  std::vector<int32_t> local;
+  const bool complete = GreedyTriangulation2D(uv, local3, n, forbidden, local);
+  std::vector<char> usedLocal(ids.size(), 0);
+  for (size_t t = 0; t < local.size(); t += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      result.Triangles.push_back(ids[local[t + k]]);
+      usedLocal[local[t + k]] = 1;
+      if (piece.Created)
+      {
+        piece.Created->insert(EdgeKey(ids[local[t + k]], ids[local[t + (k + 1) % 3]]));
+      }
+    }
+  }
+  for (size_t s = 0; s < inside.size(); ++s)
+  {
+    if (usedLocal[n + s])
+    {
+      taken[inside[s]] = 1;
+      result.UsedPoints.push_back(ids[n + s]);
+    }
+  }
+  ++result.NumberOfPieces;
+  if (!complete)
+  {
+    ++result.NumberOfFailedPieces;
+  }
+  return complete;
+}
+
+bool HoleFiller::Fill(const double* xyz, const std::vector<int32_t>& loop,
+  const std::vector<double>& boundaryVectors, const std::vector<int32_t>& candidates,
+  FillResult& result) const
+{
+  result = FillResult();
+  std::unordered_set<uint64_t> created;
+  Piece piece;
+  piece.Loop = loop;
+  piece.Vectors = boundaryVectors;
+  piece.Vectors.resize(3 * loop.size(), 0.0);
+  piece.Created = &created;
+  std::vector<char> taken(candidates.size(), 0);
+  result.Complete = this->FillPiece(xyz, piece, taken, candidates, result, 0);
+  return !result.Triangles.empty();
+}
+
+} // namespace holes
+} // namespace pcs

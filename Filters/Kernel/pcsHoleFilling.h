@@ -1,0 +1,142 @@
+// Hole triangulation by projection (private kernel, plain C++, not wrapped): steps 5 and 6 of
+// Emelyanov & Skala, "Surface Reconstruction from Problem Point Clouds" (paper 001, section
+// 3.2), used by vtkGreedySurfaceTriangulation.
+//
+// A hole is a closed loop of mesh vertices (the boundary of a region the mesh does not cover)
+// together with the "lost" points that may lie inside it. HoleFiller triangulates it:
+// - step 5: the loop is projected onto its average plane (least-squares plane of its points).
+//   The projection is unambiguous when the projected loop is a simple polygon and the
+//   auxiliary boundary point of every loop vertex -- the vertex moved by a small distance along
+//   its boundary vector, i.e. into the surrounding mesh -- projects strictly outside it
+//   (paper Fig. 12, 13). A loop that is not unambiguous is split by a chord between two of its
+//   vertices into two loops, recursively, until every piece is (paper: "recursive binary
+//   subdivision"). The chord is the one with the smallest ratio of its 3D length to the shorter
+//   of the two loop arcs it cuts off (the narrowest neck of the hole), among the chords that
+//   leave both end points towards the hole (against the boundary vectors), are not mesh edges
+//   already and leave at least three vertices on each side. A chord end point is shared by the
+//   two pieces (the paper's duplicated points A, A', merged back in its step 7). A piece with
+//   more points than MaximumGreedyPoints is split the same way by a diagonal of its projection,
+//   so the quadratic greedy triangulation below stays cheap.
+// - step 6: each piece is triangulated with the lost points that project strictly inside it
+//   (and lie within half the piece's radius of its plane) by the 2D greedy triangulation of
+//   Bern & Eppstein (the paper's [BE95]): every pair of points is a candidate edge, candidates
+//   are taken by increasing 3D length (the paper's variant: 3D distances, 2D compatibility) and
+//   an edge is accepted when it crosses or touches no accepted edge (the loop edges are
+//   accepted first) and, between two loop vertices, is a diagonal of the polygon. The
+//   triangles are the empty 3-cycles of accepted edges.
+//
+// Every decision on the projected points -- polygon simplicity, point in polygon, segment
+// crossings, diagonal tests, triangle orientation and emptiness -- is an exact orientation
+// predicate (pcsPredicates.h) on the projected coordinates, which are constructed once in
+// floating point: the decisions are exact for those constructed points and no epsilon decides
+// topology. The triangles are oriented like the loop: a loop v0 -> v1 -> ... gives triangles that
+// traverse each loop edge in the loop's direction.
+#ifndef pcsHoleFilling_h
+#define pcsHoleFilling_h
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace pcs
+{
+namespace holes
+{
+
+/// A plane with an orthonormal frame: origin, in-plane axes U and V, normal N = U x V.
+struct Plane
+{
+  double Origin[3] = { 0, 0, 0 };
+  double U[3] = { 1, 0, 0 };
+  double V[3] = { 0, 1, 0 };
+  double N[3] = { 0, 0, 1 };
+
+  /// Least-squares plane of the points `ids` of `xyz` (centroid, principal axes of largest
+  /// variance). Returns false when there are fewer than 3 points.
+  bool Fit(const double* xyz, const int32_t* ids, size_t count);
+  /// In-plane coordinates of p.
+  void Project(const double* p, double uv[2]) const;
+  /// Signed distance of p to the plane (along N).
+  double Distance(const double* p) const;
+  /// Reverse the orientation of the frame (V and N change sign).
+  void Flip();
+};
+
+/// Twice the signed area of the polygon (2 coordinates per vertex), floating point.
+double SignedArea2(const std::vector<double>& uv);
+
+/// Exact: the closed polygon (2 coordinates per vertex, at least 3 vertices) is simple: no two
+/// edges meet except adjacent edges at their shared vertex, and no edge has zero length.
+bool IsSimplePolygon(const std::vector<double>& uv);
+
+/// Exact: +1 when p is strictly inside the closed polygon (non-zero winding number), 0 when it
+/// is on its boundary, -1 outside.
+int PointInPolygon(const std::vector<double>& uv, const double* p);
+
+/// Exact: the closed segments pq and rs have a common point.
+bool SegmentsIntersect(const double* p, const double* q, const double* r, const double* s);
+
+/// 2D greedy triangulation (paper 001 step 6, [BE95]) of a simple counter-clockwise polygon
+/// (points 0..n-1 in order) with interior points n..n+m-1 (which must lie strictly inside and be
+/// pairwise distinct in 2D). `uv`: 2 coordinates per point; `xyz`: 3 per point (the lengths that
+/// order the candidates). `forbidden(i, j)` (optional) rejects an interior edge between local
+/// points i and j. Triangles (local ids, counter-clockwise) are appended to `triangles`. Returns
+/// true when the result is a complete triangulation (n + 2m - 2 triangles).
+bool GreedyTriangulation2D(const std::vector<double>& uv, const std::vector<double>& xyz, int n,
+  const std::function<bool(int, int)>& forbidden, std::vector<int32_t>& triangles);
+
+/// Result of HoleFiller::Fill.
+struct FillResult
+{
+  std::vector<int32_t> Triangles;                 ///< point ids, 3 per triangle
+  std::vector<int32_t> UsedPoints;                ///< interior (lost) points used, point ids
+  std::vector<std::array<int32_t, 2>> Chords;     ///< chords inserted (step 5 and size splits)
+  int NumberOfPieces = 0;                         ///< pieces triangulated
+  int NumberOfFailedPieces = 0;                   ///< pieces left untriangulated
+  bool Complete = false;                          ///< every piece completely triangulated
+};
+
+/// Steps 5 and 6 on one hole.
+class HoleFiller
+{
+public:
+  /// Distance of the auxiliary boundary points from their vertices (the paper's epsilon), in
+  /// the units of the coordinates. 0 disables the auxiliary point test.
+  double AuxiliaryDistance = 0.0;
+
+  /// Pieces with more points (loop + interior) than this are split by a diagonal before the
+  /// greedy triangulation, whose cost grows with the square of the point count.
+  int MaximumGreedyPoints = 256;
+
+  /// Optional: true when the mesh already has the edge {a, b} (point ids): such an edge may not
+  /// be created inside the hole (it would get a third triangle).
+  std::function<bool(int32_t, int32_t)> EdgeExists;
+
+  /// Triangulate the hole bounded by `loop` (point ids; the triangles follow its direction, see
+  /// above). `boundaryVectors`: 3 per loop vertex, the direction from the vertex into the mesh
+  /// around the hole (zero when unknown). `candidates`: ids of points that may lie inside the
+  /// hole (each is used at most once, by the first piece that contains its projection).
+  /// Repeated vertices in the loop (a vertex where the hole touches itself) split it there
+  /// first. Returns false when nothing could be triangulated.
+  bool Fill(const double* xyz, const std::vector<int32_t>& loop,
+    const std::vector<double>& boundaryVectors, const std::vector<int32_t>& candidates,
+    FillResult& result) const;
+
+  /// Step 5 test alone: the piece `loop` has an unambiguous projection onto `plane` (fitted
+  /// and oriented by the call so that the loop turns counter-clockwise). Exposed for the tests.
+  bool HasUnambiguousProjection(const double* xyz, const std::vector<int32_t>& loop,
+    const std::vector<double>& boundaryVectors, Plane& plane) const;
+
+private:
+  struct Piece;
+  bool FillPiece(const double* xyz, Piece& piece, std::vector<char>& taken,
+    const std::vector<int32_t>& candidates, FillResult& result, int depth) const;
+  bool SplitPiece(const double* xyz, const Piece& piece, const Plane* plane,
+    const std::vector<double>* uv, Piece& first, Piece& second) const;
+};
+
+} // namespace holes
+} // namespace pcs
+
+#endif

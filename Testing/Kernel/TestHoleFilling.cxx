@@ -1,0 +1,497 @@
+// Tests of the hole triangulation kernel (Filters/Kernel/pcsHoleFilling): the exact polygon
+// tests, the 2D greedy triangulation and the hole filler of paper 001, steps 5 and 6. Every
+// expected value is known by construction: simplicity and point positions of hand-made polygons,
+// the triangle count of a triangulated polygon with m interior points (n + 2m - 2), its area
+// (the polygon's), its edge structure (loop edges once, interior edges twice in opposite
+// directions), the greedy choice of the shorter diagonal, and the surface a folded hole comes
+// from.
+#include "pcsHoleFilling.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace
+{
+int Failures = 0;
+
+#define CHECK(condition, ...)                                                                      \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(condition))                                                                              \
+    {                                                                                              \
+      std::printf("FAILED line %d: %s -- ", __LINE__, #condition);                                 \
+      std::printf(__VA_ARGS__);                                                                    \
+      std::printf("\n");                                                                           \
+      ++Failures;                                                                                  \
+    }                                                                                              \
+  } while (false)
+
+using pcs::holes::GreedyTriangulation2D;
+using pcs::holes::IsSimplePolygon;
+using pcs::holes::PointInPolygon;
+using pcs::holes::SegmentsIntersect;
+
+std::vector<double> Lift(const std::vector<double>& uv)
+{
+  std::vector<double> xyz;
+  for (size_t i = 0; i < uv.size(); i += 2)
+  {
+    xyz.insert(xyz.end(), { uv[i], uv[i + 1], 0.0 });
+  }
+  return xyz;
+}
+
+double Area2(const std::vector<double>& uv, int a, int b, int c)
+{
+  return (uv[2 * b] - uv[2 * a]) * (uv[2 * c + 1] - uv[2 * a + 1]) -
+    (uv[2 * c] - uv[2 * a]) * (uv[2 * b + 1] - uv[2 * a + 1]);
+}
+
+// Checks a triangulation of the polygon 0..n-1 (counter-clockwise) with interior points n..:
+// the count, positive triangles, the area, every loop edge used once in the loop direction and
+// every other edge twice in opposite directions, every point used.
+bool CheckTriangulation(const char* name, const std::vector<double>& uv, int n,
+  const std::vector<int32_t>& triangles, bool expectComplete = true)
+{
+  const int count = static_cast<int>(uv.size() / 2);
+  const int m = count - n;
+  const int before = Failures;
+  if (expectComplete)
+  {
+    CHECK(static_cast<int>(triangles.size()) == 3 * (n + 2 * m - 2), "%s: %d triangles, expected %d",
+      name, static_cast<int>(triangles.size() / 3), n + 2 * m - 2);
+  }
+  double area = 0.0, polygon = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    const int j = (i + 1) % n;
+    polygon += uv[2 * i] * uv[2 * j + 1] - uv[2 * j] * uv[2 * i + 1];
+  }
+  std::map<std::pair<int, int>, int> halfEdges;
+  std::set<int> used;
+  for (size_t t = 0; t < triangles.size(); t += 3)
+  {
+    const double a = Area2(uv, triangles[t], triangles[t + 1], triangles[t + 2]);
+    CHECK(a > 0, "%s: triangle %d not counter-clockwise", name, static_cast<int>(t / 3));
+    area += a;
+    for (int k = 0; k < 3; ++k)
+    {
+      halfEdges[{ triangles[t + k], triangles[t + (k + 1) % 3] }]++;
+      used.insert(triangles[t + k]);
+    }
+  }
+  if (expectComplete)
+  {
+    CHECK(std::fabs(area - polygon) <= 1e-9 * std::fabs(polygon), "%s: area %g, polygon %g", name,
+      area, polygon);
+    CHECK(static_cast<int>(used.size()) == count, "%s: %d of %d points used", name,
+      static_cast<int>(used.size()), count);
+    for (const auto& h : halfEdges)
+    {
+      CHECK(h.second == 1, "%s: half-edge %d-%d used %d times", name, h.first.first,
+        h.first.second, h.second);
+      const int a = h.first.first, b = h.first.second;
+      const bool loopEdge = a < n && b == (a + 1) % n;
+      if (!loopEdge)
+      {
+        CHECK(halfEdges.count({ b, a }) == 1, "%s: edge %d-%d has one triangle only", name, a, b);
+      }
+    }
+    for (int i = 0; i < n; ++i)
+    {
+      CHECK(halfEdges.count({ i, (i + 1) % n }) == 1, "%s: loop edge %d not covered", name, i);
+    }
+  }
+  return Failures == before;
+}
+
+void TestPolygonPredicates()
+{
+  const std::vector<double> square = { 0, 0, 1, 0, 1, 1, 0, 1 };
+  CHECK(IsSimplePolygon(square), "square");
+  CHECK(!IsSimplePolygon({ 0, 0, 1, 1, 1, 0, 0, 1 }), "bow-tie");
+  CHECK(!IsSimplePolygon({ 0, 0, 1, 0, 2, 0 }), "collinear triangle");
+  CHECK(!IsSimplePolygon({ 0, 0, 2, 0, 1, 0, 1, 1 }), "edge folding back on its predecessor");
+  // A vertex touching a non-adjacent edge, and two equal non-adjacent vertices.
+  CHECK(!IsSimplePolygon({ 0, 0, 4, 0, 4, 4, 2, 0, 0, 4 }), "vertex on an edge");
+  CHECK(!IsSimplePolygon({ 0, 0, 2, 0, 2, 2, 1, 1, 0, 2, 1, 1 }), "repeated vertex");
+  CHECK(!IsSimplePolygon({ 0, 0, 1, 0, 1, 0, 0, 1 }), "zero-length edge");
+  // Comb: simple, concave.
+  const std::vector<double> comb = { 0, 0, 5, 0, 5, 3, 4, 3, 4, 1, 3, 1, 3, 3, 2, 3, 2, 1, 1, 1,
+    1, 3, 0, 3 };
+  CHECK(IsSimplePolygon(comb), "comb");
+
+  const double inside[2] = { 0.5, 2.0 }, notch[2] = { 1.5, 2.0 }, onEdge[2] = { 1.0, 2.0 },
+               onVertex[2] = { 4, 3 }, far[2] = { -1, 0 }, onBottom[2] = { 2.5, 0.0 };
+  CHECK(PointInPolygon(comb, inside) == 1, "inside the comb's tooth");
+  CHECK(PointInPolygon(comb, notch) == -1, "in the comb's notch");
+  CHECK(PointInPolygon(comb, onEdge) == 0, "on an edge");
+  CHECK(PointInPolygon(comb, onVertex) == 0, "on a vertex");
+  CHECK(PointInPolygon(comb, onBottom) == 0, "on a horizontal edge");
+  CHECK(PointInPolygon(comb, far) == -1, "far outside");
+  // Clockwise polygons: the winding number is -1, still inside.
+  const std::vector<double> clockwise = { 0, 0, 0, 1, 1, 1, 1, 0 };
+  const double centre[2] = { 0.5, 0.5 };
+  CHECK(PointInPolygon(clockwise, centre) == 1, "inside a clockwise square");
+
+  const double a[2] = { 0, 0 }, b[2] = { 2, 2 }, c[2] = { 0, 2 }, d[2] = { 2, 0 }, e[2] = { 1, 1 },
+               f[2] = { 3, 3 }, g[2] = { 4, 4 };
+  CHECK(SegmentsIntersect(a, b, c, d), "crossing diagonals");
+  CHECK(SegmentsIntersect(a, b, e, c), "touching at an interior point");
+  CHECK(SegmentsIntersect(a, f, e, g), "collinear overlap");
+  CHECK(!SegmentsIntersect(a, e, f, g), "collinear, disjoint");
+  CHECK(!SegmentsIntersect(a, c, d, b), "parallel");
+}
+
+void TestGreedy2D()
+{
+  // Convex polygon: n - 2 triangles.
+  {
+    std::vector<double> uv;
+    const int n = 17;
+    for (int i = 0; i < n; ++i)
+    {
+      const double t = 2 * M_PI * i / n;
+      uv.insert(uv.end(), { std::cos(t), 0.7 * std::sin(t) });
+    }
+    std::vector<int32_t> triangles;
+    CHECK(GreedyTriangulation2D(uv, Lift(uv), n, nullptr, triangles), "convex 17-gon complete");
+    CheckTriangulation("convex 17-gon", uv, n, triangles);
+  }
+  // The greedy choice: a rhombus takes its shorter diagonal (1-3), not 0-2.
+  {
+    const std::vector<double> uv = { -2, 0, 0, -1, 2, 0, 0, 1 };
+    std::vector<int32_t> triangles;
+    GreedyTriangulation2D(uv, Lift(uv), 4, nullptr, triangles);
+    CheckTriangulation("rhombus", uv, 4, triangles);
+    bool shortDiagonal = true;
+    for (size_t t = 0; t < triangles.size(); t += 3)
+    {
+      std::set<int> s(triangles.begin() + t, triangles.begin() + t + 3);
+      shortDiagonal = shortDiagonal && s.count(1) && s.count(3);
+    }
+    CHECK(shortDiagonal, "rhombus: the short diagonal 1-3 is in both triangles");
+  }
+  // 3D lengths decide: the same rhombus lifted so that 0-2 is the shorter diagonal in 3D.
+  {
+    const std::vector<double> uv = { -2, 0, 0, -1, 2, 0, 0, 1 };
+    std::vector<double> xyz = { -0.5, 0, 0, 0, -1, 2, 0.5, 0, 0, 0, 1, 2 };
+    std::vector<int32_t> triangles;
+    GreedyTriangulation2D(uv, xyz, 4, nullptr, triangles);
+    bool longDiagonal = true;
+    for (size_t t = 0; t < triangles.size(); t += 3)
+    {
+      std::set<int> s(triangles.begin() + t, triangles.begin() + t + 3);
+      longDiagonal = longDiagonal && s.count(0) && s.count(2);
+    }
+    CHECK(longDiagonal, "3D lengths: the diagonal 0-2 (short in 3D) is chosen");
+  }
+  // Concave comb with interior points (jittered grid inside its teeth and base).
+  {
+    std::vector<double> uv = { 0, 0, 5, 0, 5, 3, 4, 3, 4, 1, 3, 1, 3, 3, 2, 3, 2, 1, 1, 1, 1, 3,
+      0, 3 };
+    const int n = static_cast<int>(uv.size() / 2);
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+    for (double x = 0.25; x < 5; x += 0.5)
+    {
+      for (double y = 0.25; y < 3; y += 0.5)
+      {
+        const double p[2] = { x + jitter(rng), y + jitter(rng) };
+        if (PointInPolygon(std::vector<double>(uv.begin(), uv.begin() + 2 * n), p) == 1)
+        {
+          uv.insert(uv.end(), { p[0], p[1] });
+        }
+      }
+    }
+    std::vector<int32_t> triangles;
+    CHECK(GreedyTriangulation2D(uv, Lift(uv), n, nullptr, triangles), "comb complete");
+    CheckTriangulation("comb with interior points", uv, n, triangles);
+  }
+  // Exact degeneracies: a square grid (cocircular quadruples, collinear rows) inside a square
+  // whose sides carry collinear vertices.
+  {
+    std::vector<double> uv;
+    for (int i = 0; i < 6; ++i)
+    {
+      uv.insert(uv.end(), { static_cast<double>(i), 0.0 });
+    }
+    for (int i = 0; i < 6; ++i)
+    {
+      uv.insert(uv.end(), { 6.0, static_cast<double>(i) });
+    }
+    for (int i = 6; i > 0; --i)
+    {
+      uv.insert(uv.end(), { static_cast<double>(i), 6.0 });
+    }
+    for (int i = 6; i > 0; --i)
+    {
+      uv.insert(uv.end(), { 0.0, static_cast<double>(i) });
+    }
+    const int n = static_cast<int>(uv.size() / 2);
+    for (int i = 1; i < 6; ++i)
+    {
+      for (int j = 1; j < 6; ++j)
+      {
+        uv.insert(uv.end(), { static_cast<double>(i), static_cast<double>(j) });
+      }
+    }
+    std::vector<int32_t> triangles;
+    CHECK(GreedyTriangulation2D(uv, Lift(uv), n, nullptr, triangles), "grid complete");
+    CheckTriangulation("6x6 grid", uv, n, triangles);
+  }
+  // A forbidden edge is never created.
+  {
+    std::vector<double> uv;
+    const int n = 8;
+    for (int i = 0; i < n; ++i)
+    {
+      const double t = 2 * M_PI * i / n;
+      uv.insert(uv.end(), { std::cos(t), std::sin(t) });
+    }
+    uv.insert(uv.end(), { 0.01, 0.02 });
+    std::vector<int32_t> triangles;
+    auto forbidden = [](int i, int j) { return (i == 0 && j == 8) || (i == 8 && j == 0); };
+    CHECK(GreedyTriangulation2D(uv, Lift(uv), n, forbidden, triangles), "forbidden: complete");
+    CheckTriangulation("octagon with a forbidden spoke", uv, n, triangles);
+    for (size_t t = 0; t < triangles.size(); t += 3)
+    {
+      std::set<int> s(triangles.begin() + t, triangles.begin() + t + 3);
+      CHECK(!(s.count(0) && s.count(8)), "forbidden edge 0-8 created");
+    }
+  }
+}
+
+// Triangles (point ids) of a hole: every loop edge once in the loop direction, every other
+// edge twice in opposite directions (a disk bounded by the loop, consistently oriented).
+bool CheckDisk(const char* name, const std::vector<int32_t>& loop,
+  const std::vector<int32_t>& triangles)
+{
+  const int before = Failures;
+  std::map<std::pair<int, int>, int> halfEdges;
+  std::set<int> vertices;
+  for (size_t t = 0; t < triangles.size(); t += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      halfEdges[{ triangles[t + k], triangles[t + (k + 1) % 3] }]++;
+      vertices.insert(triangles[t + k]);
+    }
+  }
+  std::set<std::pair<int, int>> loopEdges;
+  for (size_t i = 0; i < loop.size(); ++i)
+  {
+    loopEdges.insert({ loop[(i + 1) % loop.size()], loop[i] });
+  }
+  size_t edges = 0;
+  for (const auto& h : halfEdges)
+  {
+    CHECK(h.second == 1, "%s: half-edge %d-%d used %d times", name, h.first.first, h.first.second,
+      h.second);
+    const bool boundary = halfEdges.count({ h.first.second, h.first.first }) == 0;
+    if (boundary)
+    {
+      CHECK(loopEdges.count({ h.first.second, h.first.first }) == 1,
+        "%s: boundary edge %d-%d is not a loop edge in the loop direction", name, h.first.first,
+        h.first.second);
+      ++edges;
+    }
+    else if (h.first.first < h.first.second)
+    {
+      ++edges;
+    }
+  }
+  const long chi = static_cast<long>(vertices.size()) - static_cast<long>(edges) +
+    static_cast<long>(triangles.size() / 3);
+  CHECK(chi == 1, "%s: Euler characteristic %ld (a disk has 1)", name, chi);
+  return Failures == before;
+}
+
+void TestHoleFiller()
+{
+  pcs::holes::HoleFiller filler;
+  // A planar circular hole with points inside, tilted in 3D; the boundary vectors point out.
+  {
+    std::vector<double> xyz;
+    std::vector<int32_t> loop, points;
+    std::vector<double> vectors;
+    const int n = 40;
+    auto place = [&](double u, double v) {
+      // Tilted plane: (u, v, 0.2 u - 0.3 v).
+      xyz.insert(xyz.end(), { u, v, 0.2 * u - 0.3 * v });
+    };
+    for (int i = 0; i < n; ++i)
+    {
+      const double t = -2 * M_PI * i / n; // clockwise seen from +z
+      place(std::cos(t), std::sin(t));
+      loop.push_back(i);
+      vectors.insert(vectors.end(), { std::cos(t), std::sin(t), 0.2 * std::cos(t) - 0.3 * std::sin(t) });
+    }
+    std::mt19937_64 rng(2);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int inside = 0;
+    while (inside < 60)
+    {
+      const double a = u(rng), b = u(rng);
+      if (a * a + b * b < 0.85)
+      {
+        place(a, b);
+        points.push_back(static_cast<int32_t>(xyz.size() / 3 - 1));
+        ++inside;
+      }
+    }
+    // Points on the other side of the object (far from the plane) are not taken.
+    xyz.insert(xyz.end(), { 0.1, 0.1, 5.0 });
+    points.push_back(static_cast<int32_t>(xyz.size() / 3 - 1));
+    filler.AuxiliaryDistance = 0.05;
+    pcs::holes::FillResult result;
+    CHECK(filler.Fill(xyz.data(), loop, vectors, points, result), "circle: filled");
+    CHECK(result.Complete, "circle: complete");
+    CHECK(result.Chords.empty(), "circle: %d chords, none needed",
+      static_cast<int>(result.Chords.size()));
+    CHECK(static_cast<int>(result.UsedPoints.size()) == 60, "circle: %d of 60 inside points used",
+      static_cast<int>(result.UsedPoints.size()));
+    CHECK(static_cast<int>(result.Triangles.size()) == 3 * (n + 2 * 60 - 2),
+      "circle: %d triangles", static_cast<int>(result.Triangles.size() / 3));
+    CheckDisk("circle", loop, result.Triangles);
+
+    // The same hole with boundary vectors pointing INTO the hole: the auxiliary points project
+    // inside, the projection is ambiguous.
+    std::vector<double> inward(vectors);
+    for (double& c : inward)
+    {
+      c = -c;
+    }
+    pcs::holes::Plane plane;
+    CHECK(!filler.HasUnambiguousProjection(xyz.data(), loop, inward, plane),
+      "inward boundary vectors: ambiguous");
+    CHECK(filler.HasUnambiguousProjection(xyz.data(), loop, vectors, plane),
+      "outward boundary vectors: unambiguous");
+
+    // Too many points for one greedy triangulation: split by diagonals, still a disk.
+    pcs::holes::HoleFiller small;
+    small.MaximumGreedyPoints = 30;
+    small.AuxiliaryDistance = 0.05;
+    CHECK(small.Fill(xyz.data(), loop, vectors, points, result), "circle, split: filled");
+    CHECK(result.Complete && !result.Chords.empty(), "circle, split: complete with chords (%d)",
+      static_cast<int>(result.Chords.size()));
+    CHECK(static_cast<int>(result.UsedPoints.size()) >= 55, "circle, split: %d points used",
+      static_cast<int>(result.UsedPoints.size()));
+    CheckDisk("circle split in pieces", loop, result.Triangles);
+  }
+  // A hole that wraps three quarters around a cylinder: its projection onto the average plane
+  // folds, so it is split by chords (step 5). The result is a disk whose triangles lie close to
+  // the cylinder and face outwards.
+  {
+    std::vector<double> xyz;
+    std::vector<int32_t> loop;
+    std::vector<double> vectors;
+    const int arc = 36, rows = 8;
+    const double span = 1.5 * M_PI;
+    auto add = [&](double t, double z, double vz, double vt) {
+      xyz.insert(xyz.end(), { std::cos(t), std::sin(t), z });
+      loop.push_back(static_cast<int32_t>(xyz.size() / 3 - 1));
+      // Boundary vector: out of the hole along the cylinder (z) or around it (t).
+      vectors.insert(vectors.end(), { -vt * std::sin(t), vt * std::cos(t), vz });
+    };
+    // Counter-clockwise seen from outside: bottom edge with increasing t, then up, back, down.
+    for (int i = 0; i < arc; ++i)
+    {
+      add(span * i / arc, 0.0, -1, 0);
+    }
+    for (int j = 0; j < rows; ++j)
+    {
+      add(span, 1.0 * j / rows, 0, 1);
+    }
+    for (int i = arc; i > 0; --i)
+    {
+      add(span * i / arc, 1.0, 1, 0);
+    }
+    for (int j = rows; j > 0; --j)
+    {
+      add(0.0, 1.0 * j / rows, 0, -1);
+    }
+    // Lost points on the cylinder inside the band (a jittered grid).
+    std::vector<int32_t> points;
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+    for (int i = 1; i < arc; ++i)
+    {
+      for (int j = 1; j < rows; ++j)
+      {
+        const double t = span * (i + jitter(rng)) / arc, z = (j + jitter(rng)) / rows;
+        xyz.insert(xyz.end(), { std::cos(t), std::sin(t), z });
+        points.push_back(static_cast<int32_t>(xyz.size() / 3 - 1));
+      }
+    }
+    filler.AuxiliaryDistance = 0.02;
+    pcs::holes::Plane plane;
+    CHECK(!filler.HasUnambiguousProjection(xyz.data(), loop, vectors, plane),
+      "cylinder band: ambiguous");
+    pcs::holes::FillResult result;
+    CHECK(filler.Fill(xyz.data(), loop, vectors, points, result), "cylinder band: filled");
+    CHECK(result.Complete, "cylinder band: complete");
+    CHECK(result.UsedPoints.size() == points.size(), "cylinder band: %d of %d points used",
+      static_cast<int>(result.UsedPoints.size()), static_cast<int>(points.size()));
+    CHECK(!result.Chords.empty(), "cylinder band: split by chords");
+    CheckDisk("cylinder band", loop, result.Triangles);
+    int outward = 0;
+    for (size_t t = 0; t < result.Triangles.size(); t += 3)
+    {
+      const double* a = &xyz[3 * result.Triangles[t]];
+      const double* b = &xyz[3 * result.Triangles[t + 1]];
+      const double* c = &xyz[3 * result.Triangles[t + 2]];
+      const double ab[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+      const double ac[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+      const double normal[3] = { ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
+        ab[0] * ac[1] - ab[1] * ac[0] };
+      const double centre[3] = { (a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, 0 };
+      outward += normal[0] * centre[0] + normal[1] * centre[1] > 0 ? 1 : 0;
+    }
+    CHECK(outward == static_cast<int>(result.Triangles.size() / 3),
+      "cylinder band: %d of %d triangles face outwards", outward,
+      static_cast<int>(result.Triangles.size() / 3));
+  }
+  // A loop through the same vertex twice (two holes touching at a corner): two disks.
+  {
+    const std::vector<double> xyz = { 0, 0, 0, 1, 0, 0, 1, 1, 0, -1, 0, 0, -1, -1, 0, 0, -1, 0.0 };
+    const std::vector<int32_t> loop = { 0, 1, 2, 0, 3, 4 };
+    pcs::holes::FillResult result;
+    filler.AuxiliaryDistance = 0;
+    CHECK(filler.Fill(xyz.data(), loop, {}, {}, result), "pinched loop: filled");
+    CHECK(result.Complete && result.Triangles.size() == 6, "pinched loop: two triangles (%d)",
+      static_cast<int>(result.Triangles.size() / 3));
+  }
+  // An existing mesh edge is never created inside the hole: a quad hole whose short diagonal
+  // 1-3 is already a mesh edge gets the other one.
+  {
+    const std::vector<double> xyz = { 0, 0, 0, 1, 0, 0, 1, 1.2, 0, 0, 1, 0 };
+    pcs::holes::HoleFiller constrained;
+    constrained.EdgeExists = [](int32_t a, int32_t b) {
+      return (a == 1 && b == 3) || (a == 3 && b == 1);
+    };
+    pcs::holes::FillResult result;
+    CHECK(constrained.Fill(xyz.data(), { 0, 1, 2, 3 }, {}, {}, result), "square: filled");
+    for (size_t t = 0; t < result.Triangles.size(); t += 3)
+    {
+      std::set<int> s(result.Triangles.begin() + t, result.Triangles.begin() + t + 3);
+      CHECK(s.count(0) && s.count(2), "square: the diagonal 0-2 is used (1-3 exists)");
+    }
+  }
+}
+} // namespace
+
+int main()
+{
+  TestPolygonPredicates();
+  TestGreedy2D();
+  TestHoleFiller();
+  std::printf("%d failure(s)\n", Failures);
+  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -1,0 +1,1765 @@
+#include "vtkLocalOptimumGrowth.h"
+
+#include "pcsGatherInput.h"
+#include "pcsPredicates.h"
+#include "pcsProjectedTests.h"
+#include "pcsSpatialSort.h"
+#include "pcsSurfaceMesh.h"
+
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocalObject.h"
+#include "vtkSMPTools.h"
+#include "vtkStaticPointLocator.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+vtkStandardNewMacro(vtkLocalOptimumGrowth);
+vtkCxxSetObjectMacro(vtkLocalOptimumGrowth, Locator, vtkStaticPointLocator);
+
+#include <cstdio>
+#include <cstdlib>
+namespace
+{
+struct DebugCounters
+{
+  long long c[16] = {};
+  ~DebugCounters()
+  {
+    if (std::getenv("PCS_LOG_DEBUG"))
+    {
+      const char* names[] = { "noAdmissible",
+        "collinear",
+        "kernelUsed",
+        "pinchOther",
+        "orient",
+        "wedge",
+        "cross",
+        "blocked",
+        "bridgeFail",
+        "reversed",
+        "expandFail",
+        "added",
+        "bridges",
+        "earKernel",
+        "earRatio",
+        "earNormal" };
+      for (int i = 0; i < 16; ++i)
+        std::fprintf(stderr, "%s=%lld ", names[i], c[i]);
+      std::fprintf(stderr, "\n");
+    }
+  }
+} Dbg;
+using Id = int32_t;
+namespace P = pcs::predicates;
+
+// Vertex ids are 32-bit, and so are the triangle ids of pcs::SurfaceMesh (about 2 per point).
+constexpr vtkIdType MaximumNumberOfPoints = 500000000;
+
+//------------------------------------------------------------------------------------------------
+// Small vector helpers on double[3].
+inline void Sub(const double* a, const double* b, double* r)
+{
+  r[0] = a[0] - b[0];
+  r[1] = a[1] - b[1];
+  r[2] = a[2] - b[2];
+}
+inline double Dot(const double* a, const double* b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+inline void Cross(const double* a, const double* b, double* r)
+{
+  r[0] = a[1] * b[2] - a[2] * b[1];
+  r[1] = a[2] * b[0] - a[0] * b[2];
+  r[2] = a[0] * b[1] - a[1] * b[0];
+}
+inline double Distance2(const double* a, const double* b)
+{
+  const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+  return Dot(d, d);
+}
+// Normal of the triangle (a, b, c) (right-hand rule), normalized; false when it has no finite
+// non-zero length.
+inline bool UnitNormal(const double* a, const double* b, const double* c, double* n)
+{
+  double ab[3], ac[3];
+  Sub(b, a, ab);
+  Sub(c, a, ac);
+  Cross(ab, ac, n);
+  const double length = std::sqrt(Dot(n, n));
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    return false;
+  }
+  n[0] /= length;
+  n[1] /= length;
+  n[2] /= length;
+  return true;
+}
+
+struct Parameters
+{
+  int K = 20;
+  double CosNormal = 0.5;
+  double TanNormal = 1.7320508075688772;
+  double MinRatio = 1.0 / 3.0;
+  double MaxRatio = 3.0;
+  double CosBase = 0.0;
+  int MaxHoleEdges = 8;
+  bool Relax = true;
+};
+
+//------------------------------------------------------------------------------------------------
+// The growth (steps 2 to 6 of the class documentation) on distinct finite points X (packed
+// x,y,z, internal ids 0..N-1) with their K nearest neighbours Knn (N*K ids, -1 padded).
+class Grower
+{
+public:
+  Grower(const double* x,
+    Id n,
+    const std::vector<Id>& knn,
+    const Parameters& parameters,
+    vtkAlgorithm* algorithm)
+    : X(x)
+    , N(n)
+    , Knn(knn)
+    , K(parameters.K)
+    , Par(parameters)
+    , Algorithm(algorithm)
+  {
+    this->Mesh.Initialize(n);
+    this->Mesh.ReserveTriangles(2 * static_cast<int64_t>(n));
+    this->Mark.assign(n, 0);
+    this->ProjectionStamp.assign(n, 0);
+    this->Projected.assign(2 * static_cast<size_t>(n), 0.0);
+    this->Touched.assign(n, 0);
+    this->SeedFailed.assign(n, 0);
+  }
+
+  void Run();
+
+  pcs::SurfaceMesh Mesh;
+  vtkIdType Seeds = 0;
+  vtkIdType HolesClosed = 0;
+  bool Aborted = false;
+  int LastReason = 0;
+  int EarWhy = 0;
+
+private:
+  struct Item
+  {
+    Id A, B;
+    uint8_t Level; // relaxation level of constraint 2 (0: strict, 1: factor 2, 2: no minimum)
+  };
+  struct Deferred
+  {
+    Id A, B;
+    uint64_t Clock;
+    uint8_t Level;
+  };
+
+  const double* P3(Id v) const { return this->X + 3 * static_cast<size_t>(v); }
+  const Id* Neighbors(Id v) const { return this->Knn.data() + static_cast<size_t>(v) * this->K; }
+
+  // Projection frame: origin, in-plane axes U, V and normal W (right-handed).
+  void SetFrame(const double* origin, const double* u, const double* w);
+  const double* P2(Id v)
+  {
+    if (this->ProjectionStamp[v] != this->Frame)
+    {
+      this->ProjectionStamp[v] = this->Frame;
+      double d[3];
+      Sub(this->P3(v), this->Origin, d);
+      this->Projected[2 * static_cast<size_t>(v)] = Dot(d, this->U);
+      this->Projected[2 * static_cast<size_t>(v) + 1] = Dot(d, this->V);
+    }
+    return &this->Projected[2 * static_cast<size_t>(v)];
+  }
+  double Height(Id v) const
+  {
+    double d[3];
+    Sub(this->P3(v), this->Origin, d);
+    return Dot(d, this->W);
+  }
+
+  bool Expand(Id a, Id b, int level, bool mayReverse = true);
+  bool PlantSeed();
+  bool TrySeed(Id p1, bool relaxed);
+  void ProcessQueue();
+  bool RetryDeferred();
+  bool Changed(const Deferred& d) const;
+  void FillHoles();
+  bool FillHole(std::vector<Id> loop);
+  void OrientComponents();
+  void ReportProgress();
+
+  // Neighbourhood of the current operation: candidate vertices (the K-neighbourhoods of the
+  // centres) and the front edges at them.
+  void CollectVertices(const Id* centers, int count);
+  void CollectFrontEdges();
+  void AddFrontEdges(Id v);
+  void Extend(Id v);
+  // Validity of a new triangle (x, y, z) in the current frame (see the class documentation).
+  bool InWedge(Id apex, Id from, Id to, Id q);
+  bool WedgesOk(Id x, Id y, Id z);
+  bool CrossesFront(Id x, Id y, Id z);
+  bool Blocked(Id x, Id y, Id z);
+  bool ProjectedValid(Id x, Id y, Id z)
+  {
+    this->Extend(x);
+    this->Extend(y);
+    this->Extend(z);
+    if (P::Orient2D(this->P2(x), this->P2(y), this->P2(z)) <= 0)
+    {
+      Dbg.c[4]++;
+      LastReason = 4;
+      return false;
+    }
+    if (!this->WedgesOk(x, y, z))
+    {
+      Dbg.c[5]++;
+      LastReason = 5;
+      return false;
+    }
+    if (this->CrossesFront(x, y, z))
+    {
+      Dbg.c[6]++;
+      LastReason = 6;
+      return false;
+    }
+    if (this->Blocked(x, y, z))
+    {
+      Dbg.c[7]++;
+      LastReason = 7;
+      return false;
+    }
+    return true;
+  }
+  // Ear (v, u, w) closing the front angle u->v->w: the smallest cosine of the angles between its
+  // normal and its neighbours' (constraint 1), or -2 when invalid.
+  double EarScore(Id v, Id u, Id w, double cosNormal, double minimumRatio);
+  bool EdgeRatiosOk(Id x, Id y, Id z, double minimum) const;
+
+  // Commit a triangle: mesh, then Register (front queue, neighbourhood clock, labels).
+  int64_t Commit(Id x, Id y, Id z);
+  void Register(int64_t t);
+  void Touch(Id v) { this->Touched[v] = this->Clock; }
+  int32_t FindLabel(int32_t label)
+  {
+    while (this->LabelParent[label] != label)
+    {
+      label = this->LabelParent[label] = this->LabelParent[this->LabelParent[label]];
+    }
+    return label;
+  }
+  int32_t TriangleLabel(int64_t t)
+  {
+    return t >= 0 && t < static_cast<int64_t>(this->Labels.size())
+      ? this->FindLabel(this->Labels[t])
+      : -1;
+  }
+
+  const double* X;
+  const Id N;
+  const std::vector<Id>& Knn;
+  const int K;
+  const Parameters Par;
+  vtkAlgorithm* Algorithm;
+
+  std::vector<Item> Queue;
+  size_t QueueHead = 0;
+  std::vector<Deferred> DeferredEdges;
+  std::vector<uint64_t> Touched;
+  uint64_t Clock = 1;
+  std::vector<int32_t> Labels;      // per triangle id: seed label
+  std::vector<int32_t> LabelParent; // union-find over the seed labels
+  std::vector<char> SeedFailed;
+  std::vector<Id> SeedOrder;
+  size_t SeedCursor = 0;
+  Id UsedVertices = 0;
+  int64_t Work = 0;
+
+  // Scratch.
+  std::vector<uint32_t> Mark;
+  uint32_t MarkStamp = 0;
+  std::vector<uint32_t> ProjectionStamp;
+  std::vector<double> Projected;
+  uint32_t Frame = 0;
+  double Origin[3] = { 0, 0, 0 }, U[3] = { 1, 0, 0 }, V[3] = { 0, 1, 0 }, W[3] = { 0, 0, 1 };
+  std::vector<Id> Near;     // neighbourhood vertices (not interior)
+  std::vector<Id> Centers;  // vertices whose K-neighbourhood is in Near
+  std::vector<Id> Blockers; // points that no new triangle may cover
+  std::vector<std::pair<Id, Id>> FrontEdges;
+  std::vector<Id> Admissible;
+};
+
+//------------------------------------------------------------------------------------------------
+void Grower::SetFrame(const double* origin, const double* u, const double* w)
+{
+  ++this->Frame;
+  if (this->Frame == 0) // wrapped around: forget every cached projection
+  {
+    std::fill(this->ProjectionStamp.begin(), this->ProjectionStamp.end(), 0);
+    this->Frame = 1;
+  }
+  std::copy(origin, origin + 3, this->Origin);
+  // W = w normalized; U = u made orthogonal to W, normalized; V = W x U.
+  double length = std::sqrt(Dot(w, w));
+  for (int i = 0; i < 3; ++i)
+  {
+    this->W[i] = w[i] / length;
+  }
+  const double along = Dot(u, this->W);
+  for (int i = 0; i < 3; ++i)
+  {
+    this->U[i] = u[i] - along * this->W[i];
+  }
+  length = std::sqrt(Dot(this->U, this->U));
+  if (!(length > 0.0))
+  {
+    // u parallel to w: any perpendicular axis.
+    const double axis[3] = {
+      std::fabs(this->W[0]) < 0.9 ? 1.0 : 0.0, std::fabs(this->W[0]) < 0.9 ? 0.0 : 1.0, 0.0
+    };
+    Cross(this->W, axis, this->U);
+    length = std::sqrt(Dot(this->U, this->U));
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    this->U[i] /= length;
+  }
+  Cross(this->W, this->U, this->V);
+}
+
+void Grower::CollectVertices(const Id* centers, int count)
+{
+  if (++this->MarkStamp == 0)
+  {
+    std::fill(this->Mark.begin(), this->Mark.end(), 0);
+    this->MarkStamp = 1;
+  }
+  this->Near.clear();
+  this->Centers.assign(centers, centers + count);
+  auto add = [this](Id v)
+  {
+    if (v >= 0 && this->Mark[v] != this->MarkStamp)
+    {
+      this->Mark[v] = this->MarkStamp;
+      if (!this->Mesh.IsInterior(v))
+      {
+        this->Near.push_back(v);
+      }
+    }
+  };
+  for (int i = 0; i < count; ++i)
+  {
+    add(centers[i]);
+  }
+  for (int i = 0; i < count; ++i)
+  {
+    const Id* nb = this->Neighbors(centers[i]);
+    for (int j = 0; j < this->K; ++j)
+    {
+      add(nb[j]);
+    }
+  }
+}
+
+// The front edges at the front vertices of Near, facing the frame's side (their triangle's
+// normal makes an acute angle with W: a sheet facing the other way is another surface).
+void Grower::CollectFrontEdges()
+{
+  this->FrontEdges.clear();
+  for (Id v : this->Near)
+  {
+    this->AddFrontEdges(v);
+  }
+}
+
+void Grower::AddFrontEdges(Id v)
+{
+  if (this->Mesh.GetVertexState(v) != pcs::SurfaceMesh::VertexState::Boundary)
+  {
+    return;
+  }
+  Id buffer[16];
+  auto add = [this](Id s, Id e)
+  {
+    const Id o = this->Mesh.OppositeVertex(s, e);
+    double n[3];
+    if (o >= 0 && UnitNormal(this->P3(s), this->P3(e), this->P3(o), n) && Dot(n, this->W) > 0.0)
+    {
+      this->FrontEdges.emplace_back(s, e);
+    }
+  };
+  const int outs = std::min(this->Mesh.GetBoundaryOutVertices(v, buffer, 16), 16);
+  for (int i = 0; i < outs; ++i)
+  {
+    add(v, buffer[i]);
+  }
+  const int ins = std::min(this->Mesh.GetBoundaryInVertices(v, buffer, 16), 16);
+  for (int i = 0; i < ins; ++i)
+  {
+    if (this->Mark[buffer[i]] != this->MarkStamp || this->Mesh.IsInterior(buffer[i]))
+    {
+      add(buffer[i], v); // else listed as the other's out edge
+    }
+  }
+}
+
+// Add the K-neighbourhood of v to the current neighbourhood (once per operation): its vertices
+// to Near and Blockers, their front edges to FrontEdges.
+void Grower::Extend(Id v)
+{
+  if (std::find(this->Centers.begin(), this->Centers.end(), v) != this->Centers.end())
+  {
+    return;
+  }
+  this->Centers.push_back(v);
+  const Id* nb = this->Neighbors(v);
+  for (int j = 0; j < this->K; ++j)
+  {
+    const Id q = nb[j];
+    if (q < 0 || this->Mark[q] == this->MarkStamp)
+    {
+      continue;
+    }
+    this->Mark[q] = this->MarkStamp;
+    if (!this->Mesh.IsInterior(q))
+    {
+      this->Near.push_back(q);
+      this->Blockers.push_back(q);
+      this->AddFrontEdges(q);
+    }
+  }
+}
+
+// q strictly inside the counter-clockwise angle from the ray apex->from to the ray apex->to.
+bool Grower::InWedge(Id apex, Id from, Id to, Id q)
+{
+  const double* o = this->P2(apex);
+  const double* f = this->P2(from);
+  const double* t = this->P2(to);
+  const double* x = this->P2(q);
+  const int turn = P::Orient2D(o, f, t);
+  if (turn > 0)
+  {
+    return P::Orient2D(o, f, x) > 0 && P::Orient2D(o, x, t) > 0;
+  }
+  return P::Orient2D(o, f, x) > 0 || P::Orient2D(o, x, t) > 0;
+}
+
+// At each vertex v of (x, y, z) that already has triangles, the new wedge (from its successor to
+// its predecessor in the triangle) must lie in the free angle between v's front edges pv->v and
+// v->nv, counter-clockwise from pv to nv.
+bool Grower::WedgesOk(Id x, Id y, Id z)
+{
+  const Id t[3] = { x, y, z };
+  for (int i = 0; i < 3; ++i)
+  {
+    const Id v = t[i], out = t[(i + 1) % 3], in = t[(i + 2) % 3];
+    if (this->Mesh.IsFree(v))
+    {
+      continue;
+    }
+    // The new triangle owns v->out and in->v: it closes the gap exactly when their twins are
+    // the front edges out->v and v->in (also at a vertex with two fans: a pinch repaired).
+    if (this->Mesh.IsBoundaryHalfEdge(out, v) && this->Mesh.IsBoundaryHalfEdge(v, in))
+    {
+      continue;
+    }
+    Id pv, nv;
+    if (this->Mesh.GetNumberOfFans(v) != 1 || this->Mesh.GetBoundaryInVertices(v, &pv, 1) != 1 ||
+      this->Mesh.GetBoundaryOutVertices(v, &nv, 1) != 1)
+    {
+      return false;
+    }
+    const bool closesIn = out == pv; // the new triangle owns v->pv, twin of pv->v
+    const bool closesOut = in == nv; // it owns nv->v, twin of v->nv
+    if (closesOut)
+    {
+      if (!this->InWedge(v, pv, nv, out))
+      {
+        return false;
+      }
+    }
+    else if (closesIn)
+    {
+      if (!this->InWedge(v, pv, nv, in))
+      {
+        return false;
+      }
+    }
+    else if (!this->InWedge(v, pv, nv, out) || !this->InWedge(v, out, nv, in))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Closed segments pq and rs meet (exact orientations on the projected points).
+bool SegmentsMeet(const double* p, const double* q, const double* r, const double* s)
+{
+  if (std::max(p[0], q[0]) < std::min(r[0], s[0]) || std::max(r[0], s[0]) < std::min(p[0], q[0]) ||
+    std::max(p[1], q[1]) < std::min(r[1], s[1]) || std::max(r[1], s[1]) < std::min(p[1], q[1]))
+  {
+    return false;
+  }
+  const int o1 = P::Orient2D(p, q, r), o2 = P::Orient2D(p, q, s);
+  if (o1 * o2 > 0)
+  {
+    return false;
+  }
+  const int o3 = P::Orient2D(r, s, p), o4 = P::Orient2D(r, s, q);
+  if (o3 * o4 > 0)
+  {
+    return false;
+  }
+  // Proper crossing, touching, or collinear with overlapping boxes (i.e. overlapping).
+  return true;
+}
+
+// A new edge of (x, y, z) (one that no triangle has yet) meets a front edge of the
+// neighbourhood that does not share an end point with it.
+bool Grower::CrossesFront(Id x, Id y, Id z)
+{
+  const Id t[3] = { x, y, z };
+  for (int i = 0; i < 3; ++i)
+  {
+    const Id s = t[i], e = t[(i + 1) % 3];
+    if (this->Mesh.GetEdgeValence(s, e) > 0)
+    {
+      continue;
+    }
+    const double* ps = this->P2(s);
+    const double* pe = this->P2(e);
+    for (const auto& f : this->FrontEdges)
+    {
+      if (f.first == s || f.first == e || f.second == s || f.second == e)
+      {
+        continue;
+      }
+      if (SegmentsMeet(ps, pe, this->P2(f.first), this->P2(f.second)))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+// A blocking point lies in the closed projected triangle (x, y, z) (counter-clockwise).
+bool Grower::Blocked(Id x, Id y, Id z)
+{
+  const double* a = this->P2(x);
+  const double* b = this->P2(y);
+  const double* c = this->P2(z);
+  const double xmin = std::min({ a[0], b[0], c[0] }), xmax = std::max({ a[0], b[0], c[0] });
+  const double ymin = std::min({ a[1], b[1], c[1] }), ymax = std::max({ a[1], b[1], c[1] });
+  // Points of another sheet (farther from the triangle's mean height than its longest edge)
+  // do not block.
+  const double level = (this->Height(x) + this->Height(y) + this->Height(z)) / 3.0;
+  const double reach = std::sqrt(std::max({ Distance2(this->P3(x), this->P3(y)),
+    Distance2(this->P3(y), this->P3(z)),
+    Distance2(this->P3(z), this->P3(x)) }));
+  for (Id q : this->Blockers)
+  {
+    if (q == x || q == y || q == z)
+    {
+      continue;
+    }
+    const double* p = this->P2(q);
+    if (p[0] < xmin || p[0] > xmax || p[1] < ymin || p[1] > ymax ||
+      std::fabs(this->Height(q) - level) > reach)
+    {
+      continue;
+    }
+    if (P::Orient2D(a, b, p) >= 0 && P::Orient2D(b, c, p) >= 0 && P::Orient2D(c, a, p) >= 0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool Grower::EdgeRatiosOk(Id x, Id y, Id z, double minimum) const
+{
+  const double l0 = Distance2(this->P3(x), this->P3(y));
+  const double l1 = Distance2(this->P3(y), this->P3(z));
+  const double l2 = Distance2(this->P3(z), this->P3(x));
+  const double longest = std::max({ l0, l1, l2 }), shortest = std::min({ l0, l1, l2 });
+  return shortest >= minimum * minimum * longest;
+}
+
+//------------------------------------------------------------------------------------------------
+int64_t Grower::Commit(Id x, Id y, Id z)
+{
+  const Id t[3] = { x, y, z };
+  Id fresh = 0;
+  for (Id v : t)
+  {
+    fresh += this->Mesh.IsFree(v) ? 1 : 0;
+  }
+  const int64_t id = this->Mesh.AddTriangle(x, y, z);
+  if (id >= 0)
+  {
+    this->UsedVertices += fresh;
+    this->Register(id);
+  }
+  return id;
+}
+
+// Bookkeeping of a triangle already in the mesh: neighbourhood clock, seed label (merged with
+// the labels of the triangles across its edges), and its front edges into the queue.
+void Grower::Register(int64_t t)
+{
+  const int32_t* v = this->Mesh.GetTriangle(t);
+  ++this->Clock;
+  int32_t label = -1;
+  for (int j = 0; j < 3; ++j)
+  {
+    this->Touch(v[j]);
+    const int32_t other = this->TriangleLabel(this->Mesh.FindTriangle(v[(j + 1) % 3], v[j]));
+    if (other < 0)
+    {
+      continue;
+    }
+    if (label < 0)
+    {
+      label = other;
+    }
+    else if (other != label)
+    {
+      this->LabelParent[other] = label;
+    }
+  }
+  if (label < 0)
+  {
+    label = static_cast<int32_t>(this->LabelParent.size());
+    this->LabelParent.push_back(label);
+  }
+  if (static_cast<int64_t>(this->Labels.size()) <= t)
+  {
+    this->Labels.resize(static_cast<size_t>(t) + 1, -1);
+  }
+  this->Labels[t] = label;
+  for (int j = 0; j < 3; ++j)
+  {
+    if (this->Mesh.IsBoundaryHalfEdge(v[j], v[(j + 1) % 3]))
+    {
+      this->Queue.push_back({ v[j], v[(j + 1) % 3], 0 });
+    }
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+// The ear (v, u, w) that closes the front angle u->v->w, in the current frame with the current
+// neighbourhood: constraint 1 towards every triangle it shares an edge with, constraint 2
+// relaxed (every edge at least MinRatio / 2 of the longest), the topology and the projected
+// tests. Returns the smallest cosine of constraint 1, or -2 when the ear is not valid.
+double Grower::EarScore(Id v, Id u, Id w, double cosNormal, double minimumRatio)
+{
+  {
+    Id off = -1;
+    auto ck = this->Mesh.CanAddTriangle(v, u, w, &off);
+    if (ck != pcs::SurfaceMesh::Check::Ok)
+    {
+      Dbg.c[13]++;
+      EarWhy = 10 + int(ck);
+      if (std::getenv("PCS_LOG_DEBUG2"))
+        std::fprintf(stderr,
+          "ear (%d %d %d) kernel %d off %d fans %d %d %d\n",
+          v,
+          u,
+          w,
+          int(ck),
+          off,
+          Mesh.GetNumberOfFans(v),
+          Mesh.GetNumberOfFans(u),
+          Mesh.GetNumberOfFans(w));
+      return -2.0;
+    }
+  }
+  if (pcs::projected::Collinear(this->P3(v), this->P3(u), this->P3(w)) ||
+    !this->EdgeRatiosOk(v, u, w, minimumRatio))
+  {
+    Dbg.c[14]++;
+    EarWhy = 20;
+    return -2.0;
+  }
+  double n[3];
+  if (!UnitNormal(this->P3(v), this->P3(u), this->P3(w), n))
+  {
+    return -2.0;
+  }
+  double worst = 2.0;
+  const Id t[3] = { v, u, w };
+  for (int j = 0; j < 3; ++j)
+  {
+    // The ear owns t[j]->t[j+1]; its twin's triangle is a neighbour.
+    const Id s = t[(j + 1) % 3], e = t[j];
+    const Id o = this->Mesh.OppositeVertex(s, e);
+    if (o < 0)
+    {
+      continue;
+    }
+    double m[3];
+    if (!UnitNormal(this->P3(s), this->P3(e), this->P3(o), m))
+    {
+      return -2.0;
+    }
+    worst = std::min(worst, Dot(n, m));
+    if (std::getenv("PCS_LOG_DEBUG2") && Dot(n, m) < this->Par.CosNormal)
+      std::fprintf(
+        stderr, "ear (%d %d %d) vs tri (%d %d %d) cos %g\n", v, u, w, s, e, o, Dot(n, m));
+  }
+  if (worst < cosNormal)
+  {
+    Dbg.c[15]++;
+    EarWhy = worst < 0 ? 31 : 30;
+    return -2.0;
+  }
+  if (!this->ProjectedValid(v, u, w))
+  {
+    return -2.0;
+  }
+  return worst;
+}
+
+//------------------------------------------------------------------------------------------------
+// Expansion of the front edge a->b (triangle (a, b, y)) by the triangle (b, a, c).
+bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
+{
+  const Id y = this->Mesh.OppositeVertex(a, b);
+  double ne[3];
+  if (y < 0 || !UnitNormal(this->P3(a), this->P3(b), this->P3(y), ne))
+  {
+    return false;
+  }
+  double mid[3], ab[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    mid[i] = 0.5 * (this->P3(a)[i] + this->P3(b)[i]);
+  }
+  Sub(this->P3(b), this->P3(a), ab);
+  this->SetFrame(mid, ab, ne);
+  const Id n = this->Mesh.NextBoundaryVertex(a, b);
+  const Id p = this->Mesh.PreviousBoundaryVertex(a, b);
+  const Id centers[2] = { a, b };
+  this->CollectVertices(centers, 2);
+  for (Id v : { n, p })
+  {
+    if (v >= 0 && this->Mark[v] != this->MarkStamp && !this->Mesh.IsInterior(v))
+    {
+      this->Mark[v] = this->MarkStamp;
+      this->Near.push_back(v);
+    }
+  }
+  this->CollectFrontEdges();
+
+  // Candidates on the far side of the edge, on this sheet (constraint 1), not interior; the
+  // admissible ones also meet constraints 2 and 3.
+  const double d2 = Dot(ab, ab);
+  const double dab = std::sqrt(d2);
+  const double minimum =
+    level == 0 ? this->Par.MinRatio : (level == 1 ? 0.5 * this->Par.MinRatio : 0.0);
+  const double maximum = level == 0 ? this->Par.MaxRatio : 2.0 * this->Par.MaxRatio;
+  const double* a2 = this->P2(a);
+  const double* b2 = this->P2(b);
+  this->Admissible.clear();
+  this->Blockers.clear();
+  for (Id c : this->Near)
+  {
+    if (c == a || c == b || c == y)
+    {
+      continue;
+    }
+    this->Blockers.push_back(c);
+    if (P::Orient2D(a2, b2, this->P2(c)) >= 0)
+    {
+      continue;
+    }
+    double nt[3];
+    if (!UnitNormal(this->P3(b), this->P3(a), this->P3(c), nt))
+    {
+      continue;
+    }
+    if (Dot(nt, ne) < this->Par.CosNormal)
+    {
+      // Constraint 1 measures how far (b, a, c) bends about the edge: |height| / distance to the
+      // edge's line. At the last level the distance is taken at least d / 2, so that a point
+      // close to the edge (a needle, whose normal is dominated by the curvature) stays usable.
+      const double offset = std::max(-this->P2(c)[1], 0.5 * dab);
+      if (level < 2 || std::fabs(this->Height(c)) > this->Par.TanNormal * offset)
+      {
+        continue;
+      }
+    }
+    double ac[3], bc[3];
+    Sub(this->P3(c), this->P3(a), ac);
+    Sub(this->P3(c), this->P3(b), bc);
+    const double la2 = Dot(ac, ac), lb2 = Dot(bc, bc);
+    const bool ear = c == n || c == p;
+    if ((!ear && (la2 < minimum * minimum * d2 || lb2 < minimum * minimum * d2)) ||
+      la2 > maximum * maximum * d2 || lb2 > maximum * maximum * d2)
+    {
+      continue;
+    }
+    // Constraint 3: angles at a and at b. An ear is not limited at the vertex it shares with
+    // the edge (its angle there is the front's angle, which the ear closes).
+    if ((Dot(ab, ac) < this->Par.CosBase * dab * std::sqrt(la2)) ||
+      (-Dot(ab, bc) < this->Par.CosBase * dab * std::sqrt(lb2)))
+    {
+      continue;
+    }
+    this->Admissible.push_back(c);
+  }
+  if (this->Admissible.empty())
+    Dbg.c[0]++;
+
+  while (!this->Admissible.empty())
+  {
+    // The local optimum: no other admissible candidate inside the circle through b, a, c.
+    size_t best = 0;
+    for (size_t i = 1; i < this->Admissible.size(); ++i)
+    {
+      const Id c = this->Admissible[best], q = this->Admissible[i];
+      const int inside = P::InCircle(b2, a2, this->P2(c), this->P2(q));
+      if (inside > 0)
+      {
+        best = i;
+      }
+      else if (inside == 0)
+      {
+        const double sc = std::sqrt(Distance2(this->P3(a), this->P3(c))) +
+          std::sqrt(Distance2(this->P3(b), this->P3(c)));
+        const double sq = std::sqrt(Distance2(this->P3(a), this->P3(q))) +
+          std::sqrt(Distance2(this->P3(b), this->P3(q)));
+        if (sq < sc || (sq == sc && q < c))
+        {
+          best = i;
+        }
+      }
+    }
+    const Id c = this->Admissible[best];
+    this->Admissible[best] = this->Admissible.back();
+    this->Admissible.pop_back();
+
+    if (pcs::projected::Collinear(this->P3(a), this->P3(b), this->P3(c)))
+    {
+      Dbg.c[1]++;
+      continue;
+    }
+    Id offending = -1;
+    const pcs::SurfaceMesh::Check check = this->Mesh.CanAddTriangle(b, a, c, &offending);
+    if (check == pcs::SurfaceMesh::Check::Ok)
+    {
+      if (this->ProjectedValid(b, a, c))
+      {
+        this->Commit(b, a, c);
+        return true;
+      }
+      continue;
+    }
+    if (check != pcs::SurfaceMesh::Check::NonManifoldVertex || offending != c ||
+      this->Mesh.GetNumberOfFans(c) != 1)
+    {
+      Dbg.c[check == pcs::SurfaceMesh::Check::HalfEdgeUsed ? 2 : 3]++;
+      continue;
+    }
+    // c is a front vertex away from a and b: a bridge between two parts of the front.
+    Id pc = -1, nc = -1;
+    if (this->Mesh.GetBoundaryInVertices(c, &pc, 1) != 1 ||
+      this->Mesh.GetBoundaryOutVertices(c, &nc, 1) != 1)
+    {
+      continue;
+    }
+    const Id oc = this->Mesh.OppositeVertex(c, nc);
+    double nc3[3];
+    if (oc < 0 || !UnitNormal(this->P3(c), this->P3(nc), this->P3(oc), nc3))
+    {
+      continue;
+    }
+    if (Dot(nc3, ne) <= 0.0)
+    {
+      // The other part faces the other way. When it was grown from another seed, reverse it
+      // and expand this edge again; within one part this is a fold, refused.
+      const int64_t tc = this->Mesh.FindTriangle(c, nc);
+      const int64_t tab = this->Mesh.FindTriangle(a, b);
+      if (mayReverse && this->TriangleLabel(tc) != this->TriangleLabel(tab))
+      {
+        this->Mesh.ReverseComponent(tc);
+        Dbg.c[9]++;
+        // The reversed part's front edges now run the other way: queue them again lazily.
+        const int32_t* tri = this->Mesh.GetTriangle(tc);
+        for (int j = 0; j < 3; ++j)
+        {
+          this->Queue.push_back({ tri[j], tri[(j + 1) % 3], 0 });
+        }
+        return this->Expand(a, b, level, false);
+      }
+      continue;
+    }
+    if (!this->ProjectedValid(b, a, c))
+    {
+      continue;
+    }
+    const int64_t t1 = this->Mesh.AddTriangle(b, a, c);
+    if (t1 < 0)
+    {
+      continue;
+    }
+    this->CollectFrontEdges();
+    // The pinch at c is removed by the ear on either side: (c, a, nc) or (c, pc, b).
+    const double scoreA = this->EarScore(c, a, nc, this->Par.CosNormal, 0.5 * this->Par.MinRatio);
+    LastReason = 0;
+    EarWhy = 0;
+    const double scoreA0 = this->EarScore(c, a, nc, this->Par.CosNormal, 0.5 * this->Par.MinRatio);
+    const int whyA = EarWhy ? EarWhy : LastReason;
+    EarWhy = 0;
+    LastReason = 0;
+    (void)scoreA0;
+    const double scoreB = this->EarScore(c, pc, b, this->Par.CosNormal, 0.5 * this->Par.MinRatio);
+    const int whyB = EarWhy ? EarWhy : LastReason;
+    if (std::getenv("PCS_LOG_DEBUG3"))
+      std::fprintf(stderr, "BR %d %d\n", whyA, whyB);
+    static int dumped = 0;
+    if (std::getenv("PCS_LOG_DUMP") && whyA == 5 && whyB == 5 &&
+      dumped++ == std::atoi(std::getenv("PCS_LOG_DUMP")))
+    {
+      FILE* f = std::fopen("/tmp/log/dump.txt", "w");
+      std::fprintf(f, "K %d %d %d %d %d %d %d\n", a, b, c, pc, nc, n, p);
+      for (Id v : this->Near)
+      {
+        int64_t tr[64];
+        int m = Mesh.GetVertexTriangles(v, tr, 64);
+        for (int i = 0; i < m; ++i)
+        {
+          const int32_t* t = Mesh.GetTriangle(tr[i]);
+          std::fprintf(f, "T %d %d %d\n", t[0], t[1], t[2]);
+        }
+      }
+      for (Id v = 0; v < N; ++v)
+        if (ProjectionStamp[v] == Frame)
+          std::fprintf(
+            f, "P %d %.9g %.9g %d\n", v, P2(v)[0], P2(v)[1], int(Mesh.GetVertexState(v)));
+      for (auto& e : FrontEdges)
+        std::fprintf(f, "F %d %d\n", e.first, e.second);
+      std::fclose(f);
+    }
+    if (std::getenv("PCS_LOG_DEBUG2"))
+    {
+      std::fprintf(stderr,
+        "bridge a=%d b=%d c=%d pc=%d nc=%d n=%d p=%d  A=%g B=%g reasonB=%d\n",
+        a,
+        b,
+        c,
+        pc,
+        nc,
+        n,
+        p,
+        scoreA,
+        scoreB,
+        LastReason);
+      for (Id v : { a, b, c, pc, nc, n, p })
+        if (v >= 0)
+          std::fprintf(stderr, "   %d: %g %g h=%g\n", v, P2(v)[0], P2(v)[1], Height(v));
+    }
+    if (std::max(scoreA, scoreB) < -1.0)
+    {
+      this->Mesh.RemoveTriangle(t1);
+      this->CollectFrontEdges();
+      Dbg.c[8]++;
+      continue;
+    }
+    this->Register(t1);
+    Dbg.c[12]++;
+    if (scoreA >= scoreB)
+    {
+      this->Commit(c, a, nc);
+    }
+    else
+    {
+      this->Commit(c, pc, b);
+    }
+    return true;
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------------------------
+// Seed (paper, step 1): P1 the extreme point, P2 its nearest unused neighbour, P3 minimizing
+// |P1P3| + |P2P3| under constraints 2 and 3; the next neighbour as P2 when no P3 exists.
+bool Grower::TrySeed(Id p1, bool relaxed)
+{
+  const double minimum = relaxed ? 0.5 * this->Par.MinRatio : this->Par.MinRatio;
+  const double maximum = relaxed ? 2.0 * this->Par.MaxRatio : this->Par.MaxRatio;
+  const Id* nb = this->Neighbors(p1);
+  for (int j = 0; j < this->K; ++j)
+  {
+    const Id p2 = nb[j];
+    if (p2 < 0)
+    {
+      break;
+    }
+    if (!this->Mesh.IsFree(p2))
+    {
+      continue;
+    }
+    const double* x1 = this->P3(p1);
+    const double* x2 = this->P3(p2);
+    double e[3];
+    Sub(x2, x1, e);
+    const double d2 = Dot(e, e), d = std::sqrt(d2);
+    const Id centers[2] = { p1, p2 };
+    this->CollectVertices(centers, 2);
+    Id best = -1;
+    double bestScore = std::numeric_limits<double>::infinity();
+    for (Id q : this->Near)
+    {
+      if (q == p1 || q == p2 || !this->Mesh.IsFree(q))
+      {
+        continue;
+      }
+      double e1[3], e2[3];
+      Sub(this->P3(q), x1, e1);
+      Sub(this->P3(q), x2, e2);
+      const double l1 = Dot(e1, e1), l2 = Dot(e2, e2);
+      if (l1 < minimum * minimum * d2 || l2 < minimum * minimum * d2 ||
+        l1 > maximum * maximum * d2 || l2 > maximum * maximum * d2 ||
+        Dot(e, e1) < this->Par.CosBase * d * std::sqrt(l1) ||
+        -Dot(e, e2) < this->Par.CosBase * d * std::sqrt(l2))
+      {
+        continue;
+      }
+      const double score = std::sqrt(l1) + std::sqrt(l2);
+      if ((score < bestScore || (score == bestScore && q < best)) &&
+        !pcs::projected::Collinear(x1, x2, this->P3(q)))
+      {
+        best = q;
+        bestScore = score;
+      }
+    }
+    if (best < 0)
+    {
+      continue;
+    }
+    // Orientation: the normal's x component positive (then y, then z), decided exactly.
+    const double* x3 = this->P3(best);
+    int sign = 0;
+    const int planes[3][2] = { { 1, 2 }, { 2, 0 }, { 0, 1 } };
+    for (const auto& plane : planes)
+    {
+      const double q1[2] = { x1[plane[0]], x1[plane[1]] };
+      const double q2[2] = { x2[plane[0]], x2[plane[1]] };
+      const double q3[2] = { x3[plane[0]], x3[plane[1]] };
+      sign = P::Orient2D(q1, q2, q3);
+      if (sign != 0)
+      {
+        break;
+      }
+    }
+    if (sign >= 0)
+    {
+      this->Commit(p1, p2, best);
+    }
+    else
+    {
+      this->Commit(p1, best, p2);
+    }
+    ++this->Seeds;
+    return true;
+  }
+  return false;
+}
+
+bool Grower::PlantSeed()
+{
+  if (this->SeedOrder.empty())
+  {
+    this->SeedOrder.resize(this->N);
+    std::iota(this->SeedOrder.begin(), this->SeedOrder.end(), 0);
+    const double* x = this->X;
+    vtkSMPTools::Sort(this->SeedOrder.begin(),
+      this->SeedOrder.end(),
+      [x](Id i, Id j)
+      {
+        const double* p = x + 3 * static_cast<size_t>(i);
+        const double* q = x + 3 * static_cast<size_t>(j);
+        return p[0] != q[0] ? p[0] > q[0] : (p[1] != q[1] ? p[1] > q[1] : p[2] > q[2]);
+      });
+  }
+  for (; this->SeedCursor < this->SeedOrder.size(); ++this->SeedCursor)
+  {
+    const Id p1 = this->SeedOrder[this->SeedCursor];
+    if (!this->Mesh.IsFree(p1) || this->SeedFailed[p1])
+    {
+      continue;
+    }
+    if (this->TrySeed(p1, false) || (this->Par.Relax && this->TrySeed(p1, true)))
+    {
+      return true;
+    }
+    this->SeedFailed[p1] = 1;
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------------------------
+void Grower::ReportProgress()
+{
+  if ((++this->Work & 1023) == 0)
+  {
+    this->Algorithm->UpdateProgress(
+      0.15 + 0.75 * this->UsedVertices / std::max<double>(this->N, 1));
+    this->Aborted = this->Algorithm->GetAbortExecute() != 0;
+  }
+}
+
+void Grower::ProcessQueue()
+{
+  while (this->QueueHead < this->Queue.size() && !this->Aborted)
+  {
+    const Item item = this->Queue[this->QueueHead++];
+    if (this->QueueHead >= (size_t(1) << 16) && 2 * this->QueueHead >= this->Queue.size())
+    {
+      this->Queue.erase(this->Queue.begin(), this->Queue.begin() + this->QueueHead);
+      this->QueueHead = 0;
+    }
+    Id a = item.A, b = item.B;
+    if (!this->Mesh.IsBoundaryHalfEdge(a, b))
+    {
+      // Stale, unless its part of the mesh was reversed (a twin is never a front edge too).
+      if (!this->Mesh.IsBoundaryHalfEdge(b, a))
+      {
+        continue;
+      }
+      std::swap(a, b);
+    }
+    this->ReportProgress();
+    if (!this->Expand(a, b, item.Level))
+    {
+      Dbg.c[10]++;
+      this->DeferredEdges.push_back({ a, b, this->Clock, item.Level });
+    }
+  }
+}
+
+bool Grower::Changed(const Deferred& d) const
+{
+  for (Id v : { d.A, d.B })
+  {
+    if (this->Touched[v] > d.Clock)
+    {
+      return true;
+    }
+    const Id* nb = this->Neighbors(v);
+    for (int j = 0; j < this->K; ++j)
+    {
+      if (nb[j] >= 0 && this->Touched[nb[j]] > d.Clock)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+// The front has stalled: retry the edges set aside whose neighbourhood changed since they were
+// tried; failing that, the ones never tried with relaxed constraints.
+bool Grower::RetryDeferred()
+{
+  bool any = false;
+  size_t kept = 0;
+  for (Deferred d : this->DeferredEdges)
+  {
+    if (!this->Mesh.IsBoundaryHalfEdge(d.A, d.B))
+    {
+      if (!this->Mesh.IsBoundaryHalfEdge(d.B, d.A))
+      {
+        continue;
+      }
+      std::swap(d.A, d.B); // its part of the mesh was reversed
+    }
+    if (this->Changed(d))
+    {
+      this->Queue.push_back({ d.A, d.B, d.Level });
+      any = true;
+    }
+    else
+    {
+      this->DeferredEdges[kept++] = d;
+    }
+  }
+  this->DeferredEdges.resize(kept);
+  if (any || !this->Par.Relax)
+  {
+    return any;
+  }
+  kept = 0;
+  for (const Deferred& d : this->DeferredEdges)
+  {
+    if (d.Level < 2)
+    {
+      this->Queue.push_back({ d.A, d.B, static_cast<uint8_t>(d.Level + 1) });
+      any = true;
+    }
+    else
+    {
+      this->DeferredEdges[kept++] = d;
+    }
+  }
+  this->DeferredEdges.resize(kept);
+  return any;
+}
+
+//------------------------------------------------------------------------------------------------
+bool Grower::FillHole(std::vector<Id> loop)
+{
+  while (loop.size() >= 3)
+  {
+    const size_t m = loop.size();
+    // Frame: the mean normal of the triangles along the loop.
+    double normal[3] = { 0, 0, 0 };
+    double longest = 0.0;
+    for (size_t i = 0; i < m; ++i)
+    {
+      const Id s = loop[i], e = loop[(i + 1) % m];
+      const Id o = this->Mesh.OppositeVertex(s, e);
+      double t[3];
+      if (o >= 0 && UnitNormal(this->P3(s), this->P3(e), this->P3(o), t))
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          normal[k] += t[k];
+        }
+      }
+      longest = std::max(longest, Distance2(this->P3(s), this->P3(e)));
+    }
+    longest = std::sqrt(longest);
+    if (!(Dot(normal, normal) > 0.0))
+    {
+      return false;
+    }
+    double u[3];
+    Sub(this->P3(loop[1]), this->P3(loop[0]), u);
+    this->SetFrame(this->P3(loop[0]), u, normal);
+    this->CollectVertices(loop.data(), static_cast<int>(m));
+    this->CollectFrontEdges();
+    this->Blockers = this->Near;
+    // The valid ear of smallest angle.
+    size_t best = m;
+    double bestCos = -2.0;
+    for (size_t i = 0; i < m; ++i)
+    {
+      const Id v = loop[i], u0 = loop[(i + m - 1) % m], w = loop[(i + 1) % m];
+      EarWhy = 0;
+      LastReason = 0;
+      if (this->EarScore(v, u0, w, std::min(this->Par.CosNormal, 0.0), 0.0) < -1.0)
+      {
+        if (std::getenv("PCS_LOG_DEBUG5"))
+          std::fprintf(
+            stderr, "hole m=%zu ear (%d %d %d) why %d %d\n", m, v, u0, w, EarWhy, LastReason);
+        continue;
+      }
+      double e1[3], e2[3];
+      Sub(this->P3(u0), this->P3(v), e1);
+      Sub(this->P3(w), this->P3(v), e2);
+      const double c = Dot(e1, e2) / std::sqrt(Dot(e1, e1) * Dot(e2, e2));
+      if (c > bestCos)
+      {
+        bestCos = c;
+        best = i;
+      }
+    }
+    if (best == m)
+    {
+      return false;
+    }
+    const Id v = loop[best];
+    this->Commit(v, loop[(best + m - 1) % m], loop[(best + 1) % m]);
+    loop.erase(loop.begin() + static_cast<std::ptrdiff_t>(best));
+    if (loop.size() == 2)
+    {
+      break;
+    }
+  }
+  return true;
+}
+
+void Grower::FillHoles()
+{
+  if (this->Par.MaxHoleEdges < 3)
+  {
+    return;
+  }
+  std::vector<std::vector<Id>> loops;
+  this->Mesh.GetBoundaryLoops(loops);
+  for (const auto& loop : loops)
+  {
+    if (loop.size() < 3 || static_cast<int>(loop.size()) > this->Par.MaxHoleEdges)
+    {
+      continue;
+    }
+    std::vector<Id> sorted(loop);
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    {
+      continue; // a loop through a vertex twice
+    }
+    if (this->FillHole(loop))
+    {
+      ++this->HolesClosed;
+    }
+  }
+}
+
+// Closed components are turned outwards: positive signed volume.
+void Grower::OrientComponents()
+{
+  const int64_t count = this->Mesh.GetNumberOfTriangleIds();
+  std::vector<char> visited(static_cast<size_t>(count), 0);
+  std::vector<int64_t> component;
+  for (int64_t t = 0; t < count; ++t)
+  {
+    if (visited[t] || this->Mesh.IsTriangleRemoved(t))
+    {
+      continue;
+    }
+    component.assign(1, t);
+    visited[t] = 1;
+    bool closed = true;
+    double volume = 0.0;
+    const double* ref = this->P3(this->Mesh.GetTriangle(t)[0]);
+    for (size_t i = 0; i < component.size(); ++i)
+    {
+      const int32_t* v = this->Mesh.GetTriangle(component[i]);
+      double e0[3], e1[3], e2[3], c[3];
+      Sub(this->P3(v[0]), ref, e0);
+      Sub(this->P3(v[1]), ref, e1);
+      Sub(this->P3(v[2]), ref, e2);
+      Cross(e1, e2, c);
+      volume += Dot(e0, c);
+      for (int j = 0; j < 3; ++j)
+      {
+        const int64_t other = this->Mesh.FindTriangle(v[(j + 1) % 3], v[j]);
+        if (other < 0)
+        {
+          closed = false;
+        }
+        else if (!visited[other])
+        {
+          visited[other] = 1;
+          component.push_back(other);
+        }
+      }
+    }
+    if (closed && volume < 0.0)
+    {
+      this->Mesh.ReverseComponent(t);
+    }
+  }
+}
+
+void Grower::Run()
+{
+  if (!this->PlantSeed())
+  {
+    return;
+  }
+  while (!this->Aborted)
+  {
+    this->ProcessQueue();
+    if (this->Aborted || this->RetryDeferred())
+    {
+      continue;
+    }
+    if (!this->PlantSeed())
+    {
+      break;
+    }
+  }
+  if (!this->Aborted)
+  {
+    this->FillHoles();
+  }
+  this->OrientComponents();
+}
+
+void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
+{
+  vtkNew<vtkIdTypeArray> array;
+  array->SetName(name);
+  array->SetNumberOfValues(1);
+  array->SetValue(0, value);
+  fd->AddArray(array);
+}
+} // namespace
+
+//------------------------------------------------------------------------------------------------
+vtkLocalOptimumGrowth::vtkLocalOptimumGrowth() = default;
+
+vtkLocalOptimumGrowth::~vtkLocalOptimumGrowth()
+{
+  this->SetLocator(nullptr);
+}
+
+vtkMTimeType vtkLocalOptimumGrowth::GetMTime()
+{
+  vtkMTimeType mtime = this->Superclass::GetMTime();
+  if (this->Locator)
+  {
+    mtime = std::max(mtime, this->Locator->GetMTime());
+  }
+  return mtime;
+}
+
+int vtkLocalOptimumGrowth::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+//------------------------------------------------------------------------------------------------
+int vtkLocalOptimumGrowth::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  // Under MPI the whole cloud is meshed on process 0; the other processes' outputs stay empty.
+  vtkSmartPointer<vtkPointSet> input =
+    pcs::GatherInputOnFirstProcess(vtkPointSet::GetData(inputVector[0]));
+  if (!input && output)
+  {
+    return 1;
+  }
+  if (!input || !output)
+  {
+    vtkErrorMacro("Missing input or output data object.");
+    return 0;
+  }
+  this->NumberOfInputPoints = this->NumberOfTriangles = this->NumberOfSeeds = 0;
+  this->NumberOfHolesClosed = this->NumberOfUnusedPoints = this->NumberOfDuplicatePoints = 0;
+  this->NumberOfSkippedPoints = this->NumberOfBoundaryEdges = 0;
+
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  this->NumberOfInputPoints = numberOfPoints;
+  if (input->GetPoints())
+  {
+    output->SetPoints(input->GetPoints());
+  }
+  output->GetPointData()->PassData(input->GetPointData());
+  vtkNew<vtkUnsignedCharArray> used;
+  used->SetName("Used");
+  used->SetNumberOfValues(numberOfPoints);
+  used->FillValue(0);
+  vtkNew<vtkIdTypeArray> representative;
+  representative->SetName("RepresentativeId");
+  representative->SetNumberOfValues(numberOfPoints);
+  output->GetPointData()->AddArray(used);
+  output->GetPointData()->AddArray(representative);
+  vtkNew<vtkCellArray> polys;
+  output->SetPolys(polys);
+
+  auto finish = [&]()
+  {
+    vtkFieldData* fd = output->GetFieldData();
+    AddCount(fd, "NumberOfInputPoints", this->NumberOfInputPoints);
+    AddCount(fd, "NumberOfTriangles", this->NumberOfTriangles);
+    AddCount(fd, "NumberOfSeeds", this->NumberOfSeeds);
+    AddCount(fd, "NumberOfHolesClosed", this->NumberOfHolesClosed);
+    AddCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
+    AddCount(fd, "NumberOfDuplicatePoints", this->NumberOfDuplicatePoints);
+    AddCount(fd, "NumberOfSkippedPoints", this->NumberOfSkippedPoints);
+    AddCount(fd, "NumberOfBoundaryEdges", this->NumberOfBoundaryEdges);
+    return 1;
+  };
+
+  if (numberOfPoints == 0)
+  {
+    vtkWarningMacro("The input has no points: the output is empty.");
+    return finish();
+  }
+  if (numberOfPoints > MaximumNumberOfPoints)
+  {
+    vtkErrorMacro("The input has " << numberOfPoints << " points; at most " << MaximumNumberOfPoints
+                                   << " are supported.");
+    representative->FillValue(-1);
+    this->NumberOfUnusedPoints = numberOfPoints;
+    return finish();
+  }
+
+  // Coordinates as doubles, scaled by a power of two (exact) so that the largest magnitude is
+  // about 1: squared lengths and the predicates never overflow or underflow.
+  std::vector<double> xyz(3 * static_cast<size_t>(numberOfPoints));
+  vtkPoints* points = input->GetPoints();
+  vtkSMPTools::For(0,
+    numberOfPoints,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        points->GetPoint(i, &xyz[3 * i]);
+      }
+    });
+  std::vector<Id> ids;
+  ids.reserve(numberOfPoints);
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    const double* p = &xyz[3 * i];
+    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
+    {
+      ids.push_back(static_cast<Id>(i));
+      largest = std::max({ largest, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
+    }
+    else
+    {
+      representative->SetValue(i, -1);
+      ++this->NumberOfSkippedPoints;
+    }
+  }
+  if (this->NumberOfSkippedPoints > 0)
+  {
+    vtkWarningMacro(
+      "Skipped " << this->NumberOfSkippedPoints << " point(s) with NaN or infinite coordinates.");
+  }
+  if (largest > 0.0)
+  {
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    for (Id i : ids)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        xyz[3 * static_cast<size_t>(i) + k] =
+          std::ldexp(xyz[3 * static_cast<size_t>(i) + k], -exponent);
+      }
+    }
+  }
+
+  // Internal order along a Hilbert curve; exact duplicates merged into the first of their group.
+  pcs::HilbertSort(xyz.data(), 3, ids.data(), ids.data() + ids.size());
+  {
+    std::vector<Id> rank(ids.size());
+    std::iota(rank.begin(), rank.end(), 0);
+    const double* x = xyz.data();
+    vtkSMPTools::Sort(rank.begin(),
+      rank.end(),
+      [x, &ids](Id r, Id s)
+      {
+        const double* p = x + 3 * static_cast<size_t>(ids[r]);
+        const double* q = x + 3 * static_cast<size_t>(ids[s]);
+        if (p[0] != q[0])
+        {
+          return p[0] < q[0];
+        }
+        if (p[1] != q[1])
+        {
+          return p[1] < q[1];
+        }
+        return p[2] != q[2] ? p[2] < q[2] : r < s;
+      });
+    std::vector<char> keep(ids.size(), 1);
+    for (size_t k = 0; k < rank.size(); ++k)
+    {
+      const Id id = ids[rank[k]];
+      Id rep = id;
+      if (k > 0)
+      {
+        const Id previous = ids[rank[k - 1]];
+        const double* p = &xyz[3 * static_cast<size_t>(id)];
+        const double* q = &xyz[3 * static_cast<size_t>(previous)];
+        if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2])
+        {
+          rep = static_cast<Id>(representative->GetValue(previous));
+          keep[rank[k]] = 0;
+          ++this->NumberOfDuplicatePoints;
+        }
+      }
+      representative->SetValue(id, rep);
+    }
+    size_t kept = 0;
+    for (size_t k = 0; k < ids.size(); ++k)
+    {
+      if (keep[k])
+      {
+        ids[kept++] = ids[k];
+      }
+    }
+    ids.resize(kept);
+  }
+  if (this->NumberOfDuplicatePoints > 0)
+  {
+    vtkWarningMacro("Merged " << this->NumberOfDuplicatePoints
+                              << " exact duplicate point(s) into the point they coincide with "
+                                 "(point data RepresentativeId; they are not triangle vertices).");
+  }
+  const Id n = static_cast<Id>(ids.size());
+  if (n < 3)
+  {
+    vtkWarningMacro("Fewer than 3 distinct finite points (" << n << "): no triangles are made.");
+    this->NumberOfUnusedPoints = n;
+    return finish();
+  }
+  this->UpdateProgress(0.05);
+
+  // Internal coordinates and the K nearest neighbours (thread-safe queries of the static
+  // locator, built once).
+  std::vector<double> x(3 * static_cast<size_t>(n));
+  for (Id i = 0; i < n; ++i)
+  {
+    std::copy_n(&xyz[3 * static_cast<size_t>(ids[i])], 3, &x[3 * static_cast<size_t>(i)]);
+  }
+  xyz.clear();
+  xyz.shrink_to_fit();
+  const int k = std::min<int>(this->NumberOfNeighbors, n - 1);
+  std::vector<Id> knn(static_cast<size_t>(n) * k, -1);
+  {
+    vtkNew<vtkDoubleArray> coordinates;
+    coordinates->SetNumberOfComponents(3);
+    coordinates->SetArray(x.data(), 3 * static_cast<vtkIdType>(n), 1);
+    vtkNew<vtkPoints> internalPoints;
+    internalPoints->SetData(coordinates);
+    vtkNew<vtkPolyData> cloud;
+    cloud->SetPoints(internalPoints);
+    vtkSmartPointer<vtkStaticPointLocator> locator = this->Locator;
+    if (!locator)
+    {
+      locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+    }
+    locator->SetDataSet(cloud);
+    locator->BuildLocator();
+    vtkSMPThreadLocalObject<vtkIdList> lists;
+    vtkSMPTools::For(0,
+      n,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        vtkIdList* list = lists.Local();
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          locator->FindClosestNPoints(k + 1, &x[3 * i], list);
+          Id* out = &knn[static_cast<size_t>(i) * k];
+          int count = 0;
+          for (vtkIdType j = 0; j < list->GetNumberOfIds() && count < k; ++j)
+          {
+            const vtkIdType id = list->GetId(j);
+            if (id != i)
+            {
+              out[count++] = static_cast<Id>(id);
+            }
+          }
+        }
+      });
+    if (this->Locator)
+    {
+      this->Locator->SetDataSet(nullptr);
+    }
+  }
+  this->UpdateProgress(0.15);
+
+  Parameters parameters;
+  parameters.K = k;
+  parameters.CosNormal = std::cos(vtkMath::RadiansFromDegrees(this->MaximumNormalAngle));
+  parameters.TanNormal = this->MaximumNormalAngle >= 90.0
+    ? std::numeric_limits<double>::infinity()
+    : std::tan(vtkMath::RadiansFromDegrees(this->MaximumNormalAngle));
+  parameters.MinRatio = this->MinimumEdgeRatio;
+  parameters.MaxRatio = this->MaximumEdgeRatio;
+  parameters.CosBase = std::cos(vtkMath::RadiansFromDegrees(this->MaximumBaseAngle));
+  parameters.MaxHoleEdges = this->MaximumHoleEdges;
+  parameters.Relax = this->RelaxConstraints;
+  Grower grower(x.data(), n, knn, parameters, this);
+  grower.Run();
+  this->UpdateProgress(0.9);
+
+  // Output: triangles over the input point ids.
+  const pcs::SurfaceMesh& mesh = grower.Mesh;
+  std::vector<int32_t> triangles;
+  mesh.GetTriangles(triangles);
+  const vtkIdType numberOfTriangles = static_cast<vtkIdType>(triangles.size() / 3);
+  vtkNew<vtkTypeInt32Array> offsets;
+  offsets->SetNumberOfValues(numberOfTriangles + 1);
+  for (vtkIdType t = 0; t <= numberOfTriangles; ++t)
+  {
+    offsets->SetValue(t, static_cast<int32_t>(3 * t));
+  }
+  vtkNew<vtkTypeInt32Array> connectivity;
+  connectivity->SetNumberOfValues(static_cast<vtkIdType>(triangles.size()));
+  for (size_t j = 0; j < triangles.size(); ++j)
+  {
+    connectivity->SetValue(static_cast<vtkIdType>(j), ids[triangles[j]]);
+  }
+  polys->SetData(offsets, connectivity);
+  for (Id v = 0; v < n; ++v)
+  {
+    if (!mesh.IsFree(v))
+    {
+      used->SetValue(ids[v], 1);
+    }
+    else
+    {
+      ++this->NumberOfUnusedPoints;
+    }
+  }
+  this->NumberOfTriangles = numberOfTriangles;
+  this->NumberOfSeeds = grower.Seeds;
+  this->NumberOfHolesClosed = grower.HolesClosed;
+  this->NumberOfBoundaryEdges = mesh.GetNumberOfBoundaryHalfEdges();
+  if (numberOfTriangles == 0 && !grower.Aborted)
+  {
+    vtkWarningMacro("No triangle could be made (collinear points, or no neighbours meeting the "
+                    "constraints).");
+  }
+  else if (this->NumberOfUnusedPoints > 0)
+  {
+    vtkWarningMacro(<< this->NumberOfUnusedPoints
+                    << " point(s) were left unused (point data Used = 0).");
+  }
+  this->UpdateProgress(1.0);
+  return finish();
+}
+
+//------------------------------------------------------------------------------------------------
+void vtkLocalOptimumGrowth::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfNeighbors: " << this->NumberOfNeighbors << "\n";
+  os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";
+  os << indent << "MinimumEdgeRatio: " << this->MinimumEdgeRatio << "\n";
+  os << indent << "MaximumEdgeRatio: " << this->MaximumEdgeRatio << "\n";
+  os << indent << "MaximumBaseAngle: " << this->MaximumBaseAngle << "\n";
+  os << indent << "MaximumHoleEdges: " << this->MaximumHoleEdges << "\n";
+  os << indent << "RelaxConstraints: " << this->RelaxConstraints << "\n";
+  os << indent << "Locator: " << this->Locator << "\n";
+  os << indent << "NumberOfInputPoints: " << this->NumberOfInputPoints << "\n";
+  os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";
+  os << indent << "NumberOfSeeds: " << this->NumberOfSeeds << "\n";
+  os << indent << "NumberOfHolesClosed: " << this->NumberOfHolesClosed << "\n";
+  os << indent << "NumberOfUnusedPoints: " << this->NumberOfUnusedPoints << "\n";
+  os << indent << "NumberOfDuplicatePoints: " << this->NumberOfDuplicatePoints << "\n";
+  os << indent << "NumberOfSkippedPoints: " << this->NumberOfSkippedPoints << "\n";
+  os << indent << "NumberOfBoundaryEdges: " << this->NumberOfBoundaryEdges << "\n";
+}

@@ -1,0 +1,227 @@
+/**
+ * @class   vtkLocalOptimumGrowth
+ * @brief   grows a manifold triangle mesh directly on an unorganized point cloud, one locally
+ *          optimal triangle per front edge, in O(KN) time (no normals, no tetrahedralization).
+ *
+ * vtkLocalOptimumGrowth implements the mesh-growing method of paper 004 (Wang, Zhang, Zhou, Wei,
+ * "Local Optimum Triangulation for Unorganized Points Cloud", 2013) with the guarantees the
+ * paper leaves out: the output is always an oriented 2-manifold (with boundary), every
+ * connected part of the cloud is meshed, and small holes are closed.
+ *
+ * Algorithm.
+ * 1. Neighbours ("Materials and methods", K-nearest neighbours and hash table): the K =
+ *    NumberOfNeighbors nearest neighbours of every point, computed once (vtkSMPTools) with a
+ *    vtkStaticPointLocator, VTK's uniform bin grid, i.e. the paper's hash table. Points are
+ *    renumbered along a Hilbert curve first (memory locality); exact duplicates are merged.
+ * 2. Seed triangle (step 1 of the paper): P1 the point of largest x (ties: largest y, then z),
+ *    P2 its nearest neighbour, P3 the point of the K-neighbourhoods of P1 and P2 minimizing
+ *    |P1P3| + |P2P3| among those meeting constraints 2 and 3; when no P3 exists the next
+ *    neighbour is tried as P2 (the paper's "else go to step (2)"), then the constraints relaxed
+ *    (see below), then the next extreme point. The seed is oriented with its normal towards +x
+ *    (outwards at the x-extreme point of a closed surface). When the front dies, a new seed is
+ *    taken the same way among the points still unused, so every connected part is meshed.
+ * 3. Expansion (step 2): each front edge a->b (a boundary edge of triangle (a, b, y), kept in
+ *    a FIFO queue) is expanded by one candidate c taken from the K-neighbourhoods of a and b
+ *    (plus the front neighbours of a and b), giving the triangle (b, a, c). A candidate must
+ *    meet the paper's constraints:
+ *    (1) the angle between the normals of (b, a, c) and (a, b, y) is at most
+ *        MaximumNormalAngle (paper: [0, pi/3], 60 degrees);
+ *    (2) the distance from c to the edge, measured to each end point (the lengths |ac| and
+ *        |bc|), lies in [MinimumEdgeRatio d, MaximumEdgeRatio d] with d = |ab| (paper: k1 =
+ *        1/3, k2 = 3). Measuring to the end points rather than to the edge's line bounds the
+ *        edge-length ratio of every new triangle; a point close to the middle of the edge
+ *        stays a candidate, so it is meshed instead of being covered by the triangle;
+ *    (3) the angles of (b, a, c) at a and at b are at most MaximumBaseAngle (paper: the
+ *        projection of c falls on the edge, 90 degrees);
+ *    (4) an edge has at most two triangles and interior points (whose umbrella is closed)
+ *        are excluded -- with the manifold rules below.
+ *    The local-optimality score (the paper does not give one): among the admissible candidates,
+ *    the one whose circle through a, b, c contains no other admissible candidate, the circles
+ *    taken in the plane of (a, b, y) -- the Delaunay choice in the local tangent plane, decided
+ *    with the exact incircle predicate on the projected points (ties: smaller |ac| + |bc|, then
+ *    smaller index). It maximizes the smallest angle locally and never leaves a candidate
+ *    inside the new triangle. The chosen triangle is then validated, and the next best taken
+ *    if it fails:
+ *    - topology (pcs::SurfaceMesh, the front/edge structure shared with vtkCDTAdvancingFront
+ *      and vtkGreedySurfaceTriangulation): consistent orientation, at most two triangles per
+ *      edge, no vertex with a second fan;
+ *    - no overlap with the mesh nearby, decided with exact orientation predicates on the points
+ *      projected onto the plane of (a, b, y): the new triangle lies in the free angle between
+ *      the front edges at each of its vertices already meshed, its new edges cross no front
+ *      edge of the neighbourhood, and no point of the neighbourhood lies in the closed
+ *      triangle (points whose triangle with a, b would violate constraint 1 are on another
+ *      sheet and are ignored).
+ *    Front closing: when the chosen point is the front neighbour of a or b, the triangle is an
+ *    ear and closes the angle between two front edges. When it is another front vertex (two
+ *    parts of the front meet, e.g. around the tube of a torus), the triangle would pinch that
+ *    vertex; it is kept only together with the ear that removes the pinch at once (on either
+ *    side, under the same rules), otherwise it is taken back. Two parts grown from different
+ *    seeds with opposite orientations are made consistent first (one part is reversed).
+ * 4. Deferred edges and relaxation: a front edge without a valid candidate is set aside and
+ *    retried when the front has stalled and its neighbourhood has changed. When nothing else
+ *    can progress and RelaxConstraints is on, the edges set aside are retried with constraint 2
+ *    relaxed by a factor 2 ([MinimumEdgeRatio / 2, 2 MaximumEdgeRatio]) -- anisotropic
+ *    samplings such as the rings around the poles of a latitude-longitude sphere need it --
+ *    before a new seed is planted. Constraints 1, 3, 4 and the overlap tests are never relaxed.
+ * 5. Holes: the boundary loops of at most MaximumHoleEdges edges are closed by ears, the ear of
+ *    smallest angle first, each under constraint 1 towards both its neighbours, relaxed
+ *    constraint 2 and the validity tests above.
+ * 6. Each closed component is oriented outwards (positive signed volume).
+ *
+ * Output: all input points and point data, the triangles (consistently oriented), point data
+ * `Used` (1 for a vertex of a triangle, else 0) and `RepresentativeId` (the point that
+ * represents each input point: itself, the first of a group of exact duplicates, or -1 for a
+ * point with a NaN or infinite coordinate); field data `NumberOfInputPoints`,
+ * `NumberOfTriangles`, `NumberOfSeeds`, `NumberOfHolesClosed`, `NumberOfUnusedPoints` (distinct
+ * finite points no triangle uses), `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`
+ * (non-finite), `NumberOfBoundaryEdges` (edges of a single triangle left in the mesh).
+ *
+ * Cost: O(KN) for N points (the paper's bound): the neighbour search is done once, each front
+ * edge examines at most 2K candidates and their neighbourhood, and every topological query is
+ * O(1). Memory: about 4K + 200 bytes per point. The neighbour search is threaded (vtkSMPTools);
+ * the growth is sequential.
+ *
+ * @warning
+ * The method assumes a surface sampled densely enough that K neighbours reach across every
+ * triangle to be made (noise-free or lightly noisy scans; uniform or moderately non-uniform
+ * density). Features sharper than MaximumNormalAngle cannot be crossed by one triangle. Points
+ * that no valid triangle reaches (outliers, isolated points, thin features) are left unused and
+ * reported. Fewer than 3 distinct finite points, or collinear clouds, give a warning and an
+ * output without triangles.
+ *
+ * @sa
+ * vtkCDTAdvancingFront vtkGreedySurfaceTriangulation vtkReconstructionQuality
+ * vtkStaticPointLocator
+ */
+
+#ifndef vtkLocalOptimumGrowth_h
+#define vtkLocalOptimumGrowth_h
+
+#include "vtkPointCloudSurfaceFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class vtkStaticPointLocator;
+
+class VTKPOINTCLOUDSURFACEFILTERS_EXPORT vtkLocalOptimumGrowth : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLocalOptimumGrowth* New();
+  vtkTypeMacro(vtkLocalOptimumGrowth, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Number K of nearest neighbours of each point among which the triangles are made. Default
+   * 20; range [4, 200]. Larger values reach across sparser regions at a linear cost.
+   */
+  vtkSetClampMacro(NumberOfNeighbors, int, 4, 200);
+  vtkGetMacro(NumberOfNeighbors, int);
+  ///@}
+
+  ///@{
+  /**
+   * Constraint 1: largest angle, in degrees, between the normal of a new triangle and the
+   * normal of the triangle across the expanded edge. Default 60 (the paper's pi/3); range
+   * [1, 179].
+   */
+  vtkSetClampMacro(MaximumNormalAngle, double, 1.0, 179.0);
+  vtkGetMacro(MaximumNormalAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Constraint 2: the lengths |ac| and |bc| of the new edges must lie in [MinimumEdgeRatio d,
+   * MaximumEdgeRatio d], d = |ab| the expanded edge. Defaults 1/3 and 3 (the paper's k1, k2);
+   * ranges [0, 1] and [1, 1000].
+   */
+  vtkSetClampMacro(MinimumEdgeRatio, double, 0.0, 1.0);
+  vtkGetMacro(MinimumEdgeRatio, double);
+  vtkSetClampMacro(MaximumEdgeRatio, double, 1.0, 1000.0);
+  vtkGetMacro(MaximumEdgeRatio, double);
+  ///@}
+
+  ///@{
+  /**
+   * Constraint 3: largest angle, in degrees, of a new triangle at either end of the expanded
+   * edge; 90 keeps the projection of the new point on the edge (the paper's rule). Default 90;
+   * range [30, 179].
+   */
+  vtkSetClampMacro(MaximumBaseAngle, double, 30.0, 179.0);
+  vtkGetMacro(MaximumBaseAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Boundary loops of at most this many edges are closed at the end (0 closes none). Default
+   * 8; range [0, 1000].
+   */
+  vtkSetClampMacro(MaximumHoleEdges, int, 0, 1000);
+  vtkGetMacro(MaximumHoleEdges, int);
+  ///@}
+
+  ///@{
+  /**
+   * When the front stalls, retry the edges set aside with constraint 2 relaxed by a factor 2
+   * before planting a new seed. Default on; off applies the paper's constraints strictly.
+   */
+  vtkSetMacro(RelaxConstraints, bool);
+  vtkGetMacro(RelaxConstraints, bool);
+  vtkBooleanMacro(RelaxConstraints, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The point locator used for the K-nearest-neighbour search (a vtkStaticPointLocator is
+   * created when none is set).
+   */
+  void SetLocator(vtkStaticPointLocator* locator);
+  vtkGetObjectMacro(Locator, vtkStaticPointLocator);
+  ///@}
+
+  ///@{
+  /**
+   * Counts from the last execution (also in the output's field data).
+   */
+  vtkGetMacro(NumberOfInputPoints, vtkIdType);
+  vtkGetMacro(NumberOfTriangles, vtkIdType);
+  vtkGetMacro(NumberOfSeeds, vtkIdType);
+  vtkGetMacro(NumberOfHolesClosed, vtkIdType);
+  vtkGetMacro(NumberOfUnusedPoints, vtkIdType);
+  vtkGetMacro(NumberOfDuplicatePoints, vtkIdType);
+  vtkGetMacro(NumberOfSkippedPoints, vtkIdType);
+  vtkGetMacro(NumberOfBoundaryEdges, vtkIdType);
+  ///@}
+
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkLocalOptimumGrowth();
+  ~vtkLocalOptimumGrowth() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int NumberOfNeighbors = 20;
+  double MaximumNormalAngle = 60.0;
+  double MinimumEdgeRatio = 1.0 / 3.0;
+  double MaximumEdgeRatio = 3.0;
+  double MaximumBaseAngle = 90.0;
+  int MaximumHoleEdges = 8;
+  bool RelaxConstraints = true;
+  vtkStaticPointLocator* Locator = nullptr;
+
+  vtkIdType NumberOfInputPoints = 0;
+  vtkIdType NumberOfTriangles = 0;
+  vtkIdType NumberOfSeeds = 0;
+  vtkIdType NumberOfHolesClosed = 0;
+  vtkIdType NumberOfUnusedPoints = 0;
+  vtkIdType NumberOfDuplicatePoints = 0;
+  vtkIdType NumberOfSkippedPoints = 0;
+  vtkIdType NumberOfBoundaryEdges = 0;
+
+private:
+  vtkLocalOptimumGrowth(const vtkLocalOptimumGrowth&) = delete;
+  void operator=(const vtkLocalOptimumGrowth&) = delete;
+};
+
+#endif

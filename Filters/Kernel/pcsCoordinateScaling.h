@@ -1,0 +1,48 @@
+// Power-of-two scaling of coordinates into the range the exact predicates accept (private
+// kernel, shared by the filters that triangulate).
+#ifndef pcsCoordinateScaling_h
+#define pcsCoordinateScaling_h
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace pcs
+{
+/// The exact predicates assume that their products neither overflow nor underflow (degree 5 for
+/// insphere). Coordinates far from 1 in magnitude are therefore scaled by a power of two, which
+/// is exact, before triangulation: returns the exponent k (coordinates times 2^k), 0 when the
+/// largest magnitude of the referenced points is already within [2^-60, 2^60].
+inline int PredicateSafeExponent(const double* coords, int dim, const std::vector<int32_t>& ids)
+{
+  double largest = 0.0;
+  for (int32_t id : ids)
+  {
+    for (int i = 0; i < dim; ++i)
+    {
+      largest = std::max(largest, std::fabs(coords[dim * static_cast<int64_t>(id) + i]));
+    }
+  }
+  if (largest == 0.0 || (largest <= std::ldexp(1.0, 60) && largest >= std::ldexp(1.0, -60)))
+  {
+    return 0;
+  }
+  int exponent;
+  std::frexp(largest, &exponent);
+  return -exponent; // largest * 2^-exponent is in [0.5, 1)
+}
+
+/// The first `count` values of `coords` times 2^exponent.
+inline std::vector<double> ScaledCopy(const double* coords, size_t count, int exponent)
+{
+  std::vector<double> scaled(coords, coords + count);
+  for (double& c : scaled)
+  {
+    c = std::ldexp(c, exponent);
+  }
+  return scaled;
+}
+} // namespace pcs
+
+#endif

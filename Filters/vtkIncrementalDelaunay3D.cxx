@@ -2,6 +2,7 @@
 
 #include "pcsCoordinateScaling.h"
 #include "pcsDelaunay2D.h"
+#include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 #include "pcsDelaunay3D.h"
 
@@ -118,15 +119,6 @@ vtkSmartPointer<vtkCellArray> MakeCellArray(vtkTypeInt32Array* connectivity, int
   auto array = vtkSmartPointer<vtkCellArray>::New();
   array->SetData(offsets, connectivity);
   return array;
-}
-
-void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
-{
-  vtkNew<vtkIdTypeArray> array;
-  array->SetName(name);
-  array->SetNumberOfValues(1);
-  array->SetValue(0, value);
-  fd->AddArray(array);
 }
 
 // Orthonormal frame of the projection plane: origin and two in-plane axes.
@@ -725,10 +717,10 @@ int vtkIncrementalDelaunay3D::RequestData(
   surface->GetPointData()->AddArray(representative);
   auto finish = [&]() {
     vtkFieldData* fd = surface->GetFieldData();
-    AddCount(fd, "NumberOfInputPoints", this->NumberOfInputPoints);
-    AddCount(fd, "NumberOfDuplicatePoints", this->NumberOfDuplicatePoints);
-    AddCount(fd, "NumberOfSkippedPoints", this->NumberOfSkippedPoints);
-    AddCount(fd, this->Dimension == 3 ? "NumberOfTetrahedra" : "NumberOfTriangles",
+    pcs::AddFieldCount(fd, "NumberOfInputPoints", this->NumberOfInputPoints);
+    pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", this->NumberOfDuplicatePoints);
+    pcs::AddFieldCount(fd, "NumberOfSkippedPoints", this->NumberOfSkippedPoints);
+    pcs::AddFieldCount(fd, this->Dimension == 3 ? "NumberOfTetrahedra" : "NumberOfTriangles",
       this->NumberOfCells);
     if (this->GenerateTetrahedra)
     {

@@ -2,6 +2,7 @@
 
 #include "pcsCoordinateScaling.h"
 #include "pcsDelaunay3D.h"
+#include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 
 #include "vtkCellArray.h"
@@ -33,24 +34,6 @@ vtkStandardNewMacro(vtkPerimeterPeelSurface);
 
 namespace
 {
-void AddValue(vtkFieldData* fd, const char* name, double value)
-{
-  vtkNew<vtkDoubleArray> array;
-  array->SetName(name);
-  array->SetNumberOfValues(1);
-  array->SetValue(0, value);
-  fd->AddArray(array);
-}
-
-void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
-{
-  vtkNew<vtkIdTypeArray> array;
-  array->SetName(name);
-  array->SetNumberOfValues(1);
-  array->SetValue(0, value);
-  fd->AddArray(array);
-}
-
 // The solid being peeled: the finite tetrahedra of a Delaunay tetrahedralization, each inside or
 // removed, with the number of inside tetrahedra at each vertex.
 class PeelSolid
@@ -368,14 +351,14 @@ int vtkPerimeterPeelSurface::RequestData(
       usedPoints += used->GetValue(i);
     }
     vtkFieldData* fd = output->GetFieldData();
-    AddCount(fd, "NumberOfIterations", iterations);
-    AddValue(fd, "FinalThreshold", finalThreshold);
-    AddCount(fd, "NumberOfTetrahedra", tetrahedra);
-    AddCount(fd, "NumberOfRemovedTetrahedra", removedCount);
-    AddCount(fd, "NumberOfRestoredTetrahedra", restoredCount);
-    AddCount(fd, "NumberOfTriangles", polys->GetNumberOfCells());
-    AddCount(fd, "NumberOfUsedPoints", usedPoints);
-    AddCount(fd, "NumberOfUnusedPoints", numberOfPoints - usedPoints);
+    pcs::AddFieldCount(fd, "NumberOfIterations", iterations);
+    pcs::AddFieldValue(fd, "FinalThreshold", finalThreshold);
+    pcs::AddFieldCount(fd, "NumberOfTetrahedra", tetrahedra);
+    pcs::AddFieldCount(fd, "NumberOfRemovedTetrahedra", removedCount);
+    pcs::AddFieldCount(fd, "NumberOfRestoredTetrahedra", restoredCount);
+    pcs::AddFieldCount(fd, "NumberOfTriangles", polys->GetNumberOfCells());
+    pcs::AddFieldCount(fd, "NumberOfUsedPoints", usedPoints);
+    pcs::AddFieldCount(fd, "NumberOfUnusedPoints", numberOfPoints - usedPoints);
     if (numberOfPoints > usedPoints && polys->GetNumberOfCells() > 0)
     {
       vtkWarningMacro(<< numberOfPoints - usedPoints << " of " << numberOfPoints

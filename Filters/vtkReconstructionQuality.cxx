@@ -1,5 +1,6 @@
 #include "vtkReconstructionQuality.h"
 
+#include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 
 #include "pcsPredicates.h"
@@ -819,23 +820,6 @@ void MeanAndMax(const double* begin, const double* end, double& mean, double& ma
   mean = std::isnan(maximum) ? NaN : sum / static_cast<double>(end - begin);
 }
 
-void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
-{
-  vtkNew<vtkIdTypeArray> array;
-  array->SetName(name);
-  array->SetNumberOfValues(1);
-  array->SetValue(0, value);
-  fd->AddArray(array);
-}
-
-void AddValue(vtkFieldData* fd, const char* name, double value)
-{
-  vtkNew<vtkDoubleArray> array;
-  array->SetName(name);
-  array->SetNumberOfValues(1);
-  array->SetValue(0, value);
-  fd->AddArray(array);
-}
 } // namespace
 
 //------------------------------------------------------------------------------------------------
@@ -1145,22 +1129,22 @@ int vtkReconstructionQuality::RequestData(
   output->GetPointData()->AddArray(nonManifoldVertex);
 
   vtkFieldData* fd = output->GetFieldData();
-  AddCount(fd, "NumberOfTriangles", numberOfTriangles);
-  AddCount(fd, "NumberOfUsedPoints", numberOfUsedPoints);
-  AddValue(fd, "Coverage",
+  pcs::AddFieldCount(fd, "NumberOfTriangles", numberOfTriangles);
+  pcs::AddFieldCount(fd, "NumberOfUsedPoints", numberOfUsedPoints);
+  pcs::AddFieldValue(fd, "Coverage",
     numberOfPoints > 0 ? static_cast<double>(numberOfUsedPoints) / numberOfPoints : 0.0);
-  AddCount(fd, "NumberOfNonManifoldEdges", nonManifoldEdges);
-  AddCount(fd, "NumberOfNonManifoldVertices", nonManifoldVertices);
-  AddCount(fd, "NumberOfBoundaryEdges", boundaryEdges);
-  AddCount(fd, "NumberOfBoundaryLoops", boundaryLoops);
-  AddCount(fd, "NumberOfConnectedComponents", numberOfComponents);
-  AddCount(fd, "EulerCharacteristic", euler);
-  AddCount(fd, "Genus", genus);
-  AddValue(fd, "OrientationConsistency",
+  pcs::AddFieldCount(fd, "NumberOfNonManifoldEdges", nonManifoldEdges);
+  pcs::AddFieldCount(fd, "NumberOfNonManifoldVertices", nonManifoldVertices);
+  pcs::AddFieldCount(fd, "NumberOfBoundaryEdges", boundaryEdges);
+  pcs::AddFieldCount(fd, "NumberOfBoundaryLoops", boundaryLoops);
+  pcs::AddFieldCount(fd, "NumberOfConnectedComponents", numberOfComponents);
+  pcs::AddFieldCount(fd, "EulerCharacteristic", euler);
+  pcs::AddFieldCount(fd, "Genus", genus);
+  pcs::AddFieldValue(fd, "OrientationConsistency",
     interiorEdges > 0 ? static_cast<double>(consistentEdges) / interiorEdges : 1.0);
-  AddCount(fd, "NumberOfDegenerateTriangles", degenerate);
-  AddCount(fd, "NumberOfDuplicateTriangles", duplicates);
-  AddValue(fd, "MinAngleP1", minAngleP1);
+  pcs::AddFieldCount(fd, "NumberOfDegenerateTriangles", degenerate);
+  pcs::AddFieldCount(fd, "NumberOfDuplicateTriangles", duplicates);
+  pcs::AddFieldValue(fd, "MinAngleP1", minAngleP1);
   this->UpdateProgress(0.4);
 
   if (!reference || !this->ComputeDistances || this->GetAbortExecute())
@@ -1311,17 +1295,17 @@ int vtkReconstructionQuality::RequestData(
   }
   auto overSpacing = [meanSpacing](double d) { return meanSpacing > 0.0 ? d / meanSpacing : NaN; };
 
-  AddValue(fd, "AccuracyMean", accuracyMean);
-  AddValue(fd, "AccuracyMax", accuracyMax);
-  AddValue(fd, "CompletenessMean", completenessMean);
-  AddValue(fd, "CompletenessMax", completenessMax);
-  AddValue(fd, "Hausdorff", hausdorff);
-  AddValue(fd, "MeanSpacing", meanSpacing);
-  AddValue(fd, "AccuracyMeanOverSpacing", overSpacing(accuracyMean));
-  AddValue(fd, "AccuracyMaxOverSpacing", overSpacing(accuracyMax));
-  AddValue(fd, "CompletenessMeanOverSpacing", overSpacing(completenessMean));
-  AddValue(fd, "CompletenessMaxOverSpacing", overSpacing(completenessMax));
-  AddValue(fd, "HausdorffOverSpacing", overSpacing(hausdorff));
+  pcs::AddFieldValue(fd, "AccuracyMean", accuracyMean);
+  pcs::AddFieldValue(fd, "AccuracyMax", accuracyMax);
+  pcs::AddFieldValue(fd, "CompletenessMean", completenessMean);
+  pcs::AddFieldValue(fd, "CompletenessMax", completenessMax);
+  pcs::AddFieldValue(fd, "Hausdorff", hausdorff);
+  pcs::AddFieldValue(fd, "MeanSpacing", meanSpacing);
+  pcs::AddFieldValue(fd, "AccuracyMeanOverSpacing", overSpacing(accuracyMean));
+  pcs::AddFieldValue(fd, "AccuracyMaxOverSpacing", overSpacing(accuracyMax));
+  pcs::AddFieldValue(fd, "CompletenessMeanOverSpacing", overSpacing(completenessMean));
+  pcs::AddFieldValue(fd, "CompletenessMaxOverSpacing", overSpacing(completenessMax));
+  pcs::AddFieldValue(fd, "HausdorffOverSpacing", overSpacing(hausdorff));
   this->UpdateProgress(1.0);
   return 1;
 }

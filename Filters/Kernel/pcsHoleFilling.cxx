@@ -506,6 +506,30 @@ bool HoleFiller::HasUnambiguousProjection(const double* xyz, const std::vector<i
   return true;
 }
 
+bool HoleFiller::ProjectsToSimplePolygon(
+  const double* xyz, const std::vector<int32_t>& loop, Plane& plane) const
+{
+  const size_t n = loop.size();
+  if (n < 3 || !plane.Fit(xyz, loop.data(), n))
+  {
+    return false;
+  }
+  std::vector<double> uv(2 * n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    plane.Project(xyz + 3 * static_cast<int64_t>(loop[i]), &uv[2 * i]);
+  }
+  if (!IsSimplePolygon(uv))
+  {
+    return false;
+  }
+  if (SimplePolygonOrientation(uv) < 0)
+  {
+    plane.Flip();
+  }
+  return true;
+}
+
 // Split a piece by a chord (plane == nullptr: step 5, chosen in 3D) or by a diagonal of its
 // projection `uv` (a piece too large for one greedy triangulation).
 bool HoleFiller::SplitPiece(const double* xyz, const Piece& piece, const Plane* plane,
@@ -671,7 +695,7 @@ bool HoleFiller::FillPiece(const double* xyz, Piece& piece, std::vector<char>& t
     return false;
   }
   // A vertex met twice: the hole touches itself there; split it into two loops.
-  for (int i = 0; i < n; ++i)
+  for (int i = 0; i < n && this->SplitAtRepeatedVertices; ++i)
   {
     for (int j = i + 1; j < n; ++j)
     {
@@ -714,11 +738,31 @@ bool HoleFiller::FillPiece(const double* xyz, Piece& piece, std::vector<char>& t
     return okA && okB;
   };
 
-  // Step 5: split until the projection is unambiguous.
+  // Step 5: split until the projection is unambiguous. A piece that cannot be split is
+  // triangulated all the same when its projection is at least a simple polygon (the auxiliary
+  // point test is a heuristic; a triangle is its own only triangulation).
   Plane plane;
   if (!this->HasUnambiguousProjection(xyz, loop, piece.Vectors, plane))
   {
-    return splitAndFill(nullptr, nullptr);
+    Piece a, b;
+    const bool simple = n == 3 || this->ProjectsToSimplePolygon(xyz, loop, plane);
+    if (!simple || (n > 3 && this->SplitPiece(xyz, piece, nullptr, nullptr, a, b)))
+    {
+      return splitAndFill(nullptr, nullptr);
+    }
+    if (n == 3)
+    {
+      plane.Fit(xyz, loop.data(), 3);
+      std::vector<double> q(6);
+      for (int i = 0; i < 3; ++i)
+      {
+        plane.Project(xyz + 3 * static_cast<int64_t>(loop[i]), &q[2 * i]);
+      }
+      if (SignedArea2(q) < 0)
+      {
+        plane.Flip();
+      }
+    }
   }
 
   std::vector<double> uv(2 * static_cast<size_t>(n));
@@ -828,6 +872,12 @@ bool HoleFiller::Fill(const double* xyz, const std::vector<int32_t>& loop,
   piece.Vectors = boundaryVectors;
   piece.Vectors.resize(3 * loop.size(), 0.0);
   piece.Created = &created;
+  // The loop's own edges (bridges among them, which the mesh does not have yet) are never
+  // created again inside the hole.
+  for (size_t i = 0; i < loop.size(); ++i)
+  {
+    created.insert(EdgeKey(loop[i], loop[(i + 1) % loop.size()]));
+  }
   std::vector<char> taken(candidates.size(), 0);
   result.Complete = this->FillPiece(xyz, piece, taken, candidates, result, 0);
   return !result.Triangles.empty();

@@ -113,12 +113,18 @@ public:
   /// be created inside the hole (it would get a third triangle).
   std::function<bool(int32_t, int32_t)> EdgeExists;
 
+  /// A vertex met twice by the loop: true (default), the loop is cut there into two loops (a
+  /// hole touching itself at a vertex); false, the two occurrences are distinct boundary points
+  /// at the same place -- the paper's duplicated bridge end points A and A' -- and, since the
+  /// projection of such a loop is never simple, step 5 separates them with chords.
+  bool SplitAtRepeatedVertices = true;
+
   /// Triangulate the hole bounded by `loop` (point ids; the triangles follow its direction, see
   /// above). `boundaryVectors`: 3 per loop vertex, the direction from the vertex into the mesh
   /// around the hole (zero when unknown). `candidates`: ids of points that may lie inside the
   /// hole (each is used at most once, by the first piece that contains its projection).
-  /// Repeated vertices in the loop (a vertex where the hole touches itself) split it there
-  /// first. Returns false when nothing could be triangulated.
+  /// Repeated vertices: see SplitAtRepeatedVertices. Returns false when nothing could be
+  /// triangulated.
   bool Fill(const double* xyz, const std::vector<int32_t>& loop,
     const std::vector<double>& boundaryVectors, const std::vector<int32_t>& candidates,
     FillResult& result) const;
@@ -127,6 +133,11 @@ public:
   /// and oriented by the call so that the loop turns counter-clockwise). Exposed for the tests.
   bool HasUnambiguousProjection(const double* xyz, const std::vector<int32_t>& loop,
     const std::vector<double>& boundaryVectors, Plane& plane) const;
+
+  /// The projection of `loop` onto its average plane is a simple polygon; `plane` is fitted
+  /// and oriented so that the loop turns counter-clockwise.
+  bool ProjectsToSimplePolygon(
+    const double* xyz, const std::vector<int32_t>& loop, Plane& plane) const;
 
 private:
   struct Piece;

@@ -1,0 +1,1970 @@
+#include "vtkGreedySurfaceTriangulation.h"
+
+#include "pcsGatherInput.h"
+#include "pcsHoleFilling.h"
+#include "pcsPredicates.h"
+#include "pcsProjectedTests.h"
+#include "pcsSurfaceMesh.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkIncrementalOctreePointLocator.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPCANormalEstimation.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocalObject.h"
+#include "vtkSMPTools.h"
+#include "vtkStaticPointLocator.h"
+#include "vtkStringArray.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkGreedySurfaceTriangulation);
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
+// Point ids are 32-bit in the kernels (pcs::SurfaceMesh).
+constexpr vtkIdType MaximumNumberOfPoints = 500000000;
+
+void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
+{
+  vtkNew<vtkIdTypeArray> array;
+  array->SetName(name);
+  array->SetNumberOfValues(1);
+  array->SetValue(0, value);
+  fd->AddArray(array);
+}
+
+void AddValue(vtkFieldData* fd, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->SetNumberOfValues(1);
+  array->SetValue(0, value);
+  fd->AddArray(array);
+}
+
+inline double Distance(const double* a, const double* b)
+{
+  return std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+}
+
+// Distance between the segments pq and rs (floating point; a metric threshold only).
+double SegmentDistance(const double* p, const double* q, const double* r, const double* s)
+{
+  double u[3], v[3], w[3];
+  vtkMath::Subtract(q, p, u);
+  vtkMath::Subtract(s, r, v);
+  vtkMath::Subtract(p, r, w);
+  const double a = vtkMath::Dot(u, u), b = vtkMath::Dot(u, v), c = vtkMath::Dot(v, v);
+  const double d = vtkMath::Dot(u, w), e = vtkMath::Dot(v, w);
+  const double denominator = a * c - b * b;
+  double sN, sD = denominator, tN, tD = denominator;
+  if (denominator <= 1e-14 * a * c)
+  {
+    sN = 0.0;
+    sD = 1.0;
+    tN = e;
+    tD = c;
+  }
+  else
+  {
+    sN = b * e - c * d;
+    tN = a * e - b * d;
+    if (sN < 0.0)
+    {
+      sN = 0.0;
+      tN = e;
+      tD = c;
+    }
+    else if (sN > sD)
+    {
+      sN = sD;
+      tN = e + b;
+      tD = c;
+    }
+  }
+  if (tN < 0.0)
+  {
+    tN = 0.0;
+    sN = std::min(std::max(-d, 0.0), a);
+    sD = a > 0 ? a : 1.0;
+  }
+  else if (tN > tD)
+  {
+    tN = tD;
+    sN = std::min(std::max(b - d, 0.0), a);
+    sD = a > 0 ? a : 1.0;
+  }
+  const double sc = std::fabs(sN) > 0 && sD > 0 ? sN / sD : 0.0;
+  const double tc = std::fabs(tN) > 0 && tD > 0 ? tN / tD : 0.0;
+  double delta[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    delta[i] = w[i] + sc * u[i] - tc * v[i];
+  }
+  return vtkMath::Norm(delta);
+}
+
+//------------------------------------------------------------------------------------------------
+// The reconstruction of one cloud, on its distinct finite points (local ids 0..n-1).
+class Reconstruction
+{
+public:
+  vtkGreedySurfaceTriangulation* Self;
+  std::vector<double> X; // 3 per local point
+  int32_t N = 0;
+  int K = 0;
+  std::vector<int32_t> Neighbors; // K per point, nearest first, -1 padded
+  std::vector<double> Uniformity;
+  std::vector<double> Normals; // 3 per point (unoriented), for the projected crossing test
+  double Spacing = 0.0;
+  vtkSmartPointer<vtkStaticPointLocator> Locator;
+  vtkSmartPointer<vtkPolyData> Cloud;
+
+  // Step 1.
+  std::vector<int32_t> Step1Triangles;
+  // Step 2 onwards.
+  pcs::SurfaceMesh Mesh;
+  std::vector<uint8_t> Status;         // vtkGreedySurfaceTriangulation::PointStatus
+  std::vector<uint8_t> Stage;          // per mesh triangle id
+  std::vector<int32_t> Component;      // per vertex (-1 without triangles)
+  std::vector<double> BoundaryVectors; // 3 per vertex (boundary vertices only)
+  std::vector<std::array<int32_t, 2>> Links; // bridges and chords (step 7)
+
+  // Loops (steps 3 to 6).
+  struct Node
+  {
+    int32_t Vertex;
+    int32_t Next, Prev;
+    int32_t Loop; // original loop
+  };
+  std::vector<Node> Nodes;
+  std::vector<int32_t> NodeOf; // per vertex, -1 when not on a loop
+  std::vector<char> LoopIsHole;
+  std::vector<std::vector<int32_t>> FinalLoops; // node sequences after step 4
+  std::vector<char> FinalIsHole;
+
+  // Counts.
+  vtkIdType LostPoints = 0, Islands = 0, Holes = 0, Bridges = 0, Chords = 0, HolesFilled = 0,
+            HolesLeftOpen = 0, Swaps = 0;
+  bool Aborted = false;
+
+  const double* P(int32_t i) const { return &this->X[3 * static_cast<size_t>(i)]; }
+
+  bool Progress(double fraction)
+  {
+    this->Self->UpdateProgress(fraction);
+    this->Aborted = this->Aborted || this->Self->GetAbortExecute();
+    return !this->Aborted;
+  }
+
+  void FindNeighbors(double begin, double end);
+  void ComputeUniformity();
+  bool ComputeNormals();
+  void Step1GreedyEdges(double begin, double end);
+  void Step2Umbrella(double begin, double end);
+  void Step3Status();
+  void Step4Bridges();
+  void Step6FillHoles(double begin, double end);
+  void Step7Swaps();
+  void OrientOutwards();
+
+private:
+  enum class Umbrella
+  {
+    None,
+    Closed,
+    Open,
+    Fail
+  };
+  Umbrella CheckUmbrella(int32_t v, const std::vector<int64_t>& offsets,
+    const std::vector<int32_t>& vertexTriangles, const std::vector<char>& alive) const;
+  bool IsHole(const std::vector<int32_t>& vertices) const;
+  void ComputeComponents();
+};
+
+//------------------------------------------------------------------------------------------------
+// K nearest neighbours of every point (vtkStaticPointLocator), in blocks so that progress and
+// abort are handled between threaded passes.
+void Reconstruction::FindNeighbors(double begin, double end)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetArray(this->X.data(), 3 * static_cast<vtkIdType>(this->N), 1);
+  points->SetData(coordinates);
+  this->Cloud = vtkSmartPointer<vtkPolyData>::New();
+  this->Cloud->SetPoints(points);
+  this->Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+  this->Locator->SetDataSet(this->Cloud);
+  this->Locator->BuildLocator();
+
+  const int k = this->K;
+  this->Neighbors.assign(static_cast<size_t>(this->N) * k, -1);
+  vtkSMPThreadLocalObject<vtkIdList> lists;
+  const vtkIdType block = 65536;
+  for (vtkIdType first = 0; first < this->N; first += block)
+  {
+    if (!this->Progress(begin + (end - begin) * first / std::max<vtkIdType>(this->N, 1)))
+    {
+      return;
+    }
+    const vtkIdType last = std::min<vtkIdType>(first + block, this->N);
+    vtkSMPTools::For(first, last, [&](vtkIdType b, vtkIdType e) {
+      vtkIdList* list = lists.Local();
+      for (vtkIdType i = b; i < e; ++i)
+      {
+        this->Locator->FindClosestNPoints(k + 1, this->P(static_cast<int32_t>(i)), list);
+        int32_t* out = &this->Neighbors[static_cast<size_t>(i) * k];
+        int count = 0;
+        for (vtkIdType j = 0; j < list->GetNumberOfIds() && count < k; ++j)
+        {
+          if (list->GetId(j) != i)
+          {
+            out[count++] = static_cast<int32_t>(list->GetId(j));
+          }
+        }
+      }
+    });
+  }
+  double sum = 0.0;
+  vtkIdType counted = 0;
+  for (int32_t i = 0; i < this->N; ++i)
+  {
+    const int32_t j = this->Neighbors[static_cast<size_t>(i) * k];
+    if (j >= 0)
+    {
+      sum += Distance(this->P(i), this->P(j));
+      ++counted;
+    }
+  }
+  this->Spacing = counted > 0 ? sum / counted : 0.0;
+}
+
+// The local uniformity factor m of paper section 3 (see the class documentation).
+void Reconstruction::ComputeUniformity()
+{
+  const int k = this->K;
+  const int wanted = this->Self->GetUniformityNeighbors();
+  const double cosine = std::cos(vtkMath::RadiansFromDegrees(this->Self->GetUniformityAngle()));
+  this->Uniformity.assign(this->N, NaN);
+  vtkSMPTools::For(0, this->N, [&](int32_t b, int32_t e) {
+    std::vector<double> admitted;
+    for (int32_t i = b; i < e; ++i)
+    {
+      admitted.clear();
+      double longest = 0.0, shortest = VTK_DOUBLE_MAX;
+      for (int j = 0; j < k && static_cast<int>(admitted.size() / 3) < wanted; ++j)
+      {
+        const int32_t q = this->Neighbors[static_cast<size_t>(i) * k + j];
+        if (q < 0)
+        {
+          break;
+        }
+        double v[3];
+        vtkMath::Subtract(this->P(q), this->P(i), v);
+        const double length = vtkMath::Norm(v);
+        if (!(length > 0))
+        {
+          continue;
+        }
+        vtkMath::MultiplyScalar(v, 1.0 / length);
+        bool separate = true;
+        for (size_t a = 0; a < admitted.size() && separate; a += 3)
+        {
+          separate = vtkMath::Dot(v, &admitted[a]) <= cosine;
+        }
+        if (separate)
+        {
+          admitted.insert(admitted.end(), v, v + 3);
+          longest = std::max(longest, length);
+          shortest = std::min(shortest, length);
+        }
+      }
+      if (admitted.size() >= 6)
+      {
+        this->Uniformity[i] = longest / shortest;
+      }
+    }
+  });
+}
+
+// Unoriented normals of the points (vtkPCANormalEstimation over the same neighbours).
+bool Reconstruction::ComputeNormals()
+{
+  vtkNew<vtkPCANormalEstimation> pca;
+  pca->SetInputData(this->Cloud);
+  pca->SetLocator(this->Locator);
+  pca->SetSampleSize(this->K + 1);
+  pca->SetNormalOrientationToAsComputed();
+  pca->Update();
+  vtkDataArray* normals = pca->GetOutput()->GetPointData()->GetNormals();
+  if (!normals || normals->GetNumberOfTuples() != this->N)
+  {
+    return false;
+  }
+  this->Normals.resize(3 * static_cast<size_t>(this->N));
+  for (int32_t i = 0; i < this->N; ++i)
+  {
+    normals->GetTuple(i, &this->Normals[3 * static_cast<size_t>(i)]);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------------------------
+// Step 1: 3D greedy triangulation with the topological compatibility test.
+void Reconstruction::Step1GreedyEdges(double begin, double end)
+{
+  const int k = this->K;
+  struct Edge
+  {
+    float Length;
+    int32_t A, B;
+  };
+  // Candidate edges: each point to its neighbours, each pair once.
+  std::vector<int64_t> offsets(static_cast<size_t>(this->N) + 1, 0);
+  std::vector<Edge> edges;
+  edges.reserve(static_cast<size_t>(this->N) * k * 3 / 4);
+  for (int32_t i = 0; i < this->N; ++i)
+  {
+    const int32_t* mine = &this->Neighbors[static_cast<size_t>(i) * k];
+    for (int j = 0; j < k && mine[j] >= 0; ++j)
+    {
+      const int32_t q = mine[j];
+      bool keep = i < q;
+      if (!keep)
+      {
+        const int32_t* theirs = &this->Neighbors[static_cast<size_t>(q) * k];
+        keep = std::find(theirs, theirs + k, i) == theirs + k;
+      }
+      if (keep)
+      {
+        edges.push_back({ static_cast<float>(Distance(this->P(i), this->P(q))), std::min(i, q),
+          std::max(i, q) });
+        ++offsets[i + 1];
+        ++offsets[q + 1];
+      }
+    }
+  }
+  if (!this->Progress(begin + 0.1 * (end - begin)))
+  {
+    return;
+  }
+  vtkSMPTools::Sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) {
+    return a.Length != b.Length ? a.Length < b.Length : (a.A != b.A ? a.A < b.A : a.B < b.B);
+  });
+  if (!this->Progress(begin + 0.3 * (end - begin)))
+  {
+    return;
+  }
+
+  // Accepted edges: per vertex, room for all its candidate edges; triangle count per edge end.
+  for (int32_t i = 0; i < this->N; ++i)
+  {
+    offsets[i + 1] += offsets[i];
+  }
+  std::vector<int32_t> adjacent(offsets.back());
+  std::vector<uint8_t> triangles(offsets.back(), 0);
+  std::vector<int32_t> degree(this->N, 0);
+  auto slot = [&](int32_t a, int32_t b) -> int64_t {
+    for (int64_t s = offsets[a], e = offsets[a] + degree[a]; s < e; ++s)
+    {
+      if (adjacent[s] == b)
+      {
+        return s;
+      }
+    }
+    return -1;
+  };
+
+  // Optional guard: in the tangent plane of a and b (mean of their PCA normals), the new edge
+  // must not cross an accepted edge at a neighbour of a or b (exact 2D tests on the projected
+  // points). All accepted edges are shorter, so an edge crossing ab has an end point near a or b.
+  const bool crossing = !this->Normals.empty();
+  std::vector<int32_t> near;
+  auto crosses = [&](int32_t a, int32_t b) {
+    const double* na = &this->Normals[3 * static_cast<size_t>(a)];
+    const double* nb = &this->Normals[3 * static_cast<size_t>(b)];
+    double n[3];
+    const double s = vtkMath::Dot(na, nb) < 0 ? -1.0 : 1.0;
+    for (int i = 0; i < 3; ++i)
+    {
+      n[i] = na[i] + s * nb[i];
+    }
+    if (!(vtkMath::Normalize(n) > 0))
+    {
+      return false;
+    }
+    double u[3], w[3];
+    vtkMath::Perpendiculars(n, u, w, 0.0);
+    const double* pa = this->P(a);
+    auto project = [&](int32_t x, double q[2]) {
+      double d[3];
+      vtkMath::Subtract(this->P(x), pa, d);
+      q[0] = vtkMath::Dot(d, u);
+      q[1] = vtkMath::Dot(d, w);
+    };
+    const double qa[2] = { 0.0, 0.0 };
+    double qb[2];
+    project(b, qb);
+    const double lo[2] = { std::min(qa[0], qb[0]), std::min(qa[1], qb[1]) };
+    const double hi[2] = { std::max(qa[0], qb[0]), std::max(qa[1], qb[1]) };
+    near.clear();
+    for (int32_t x : { a, b })
+    {
+      const int32_t* list = &this->Neighbors[static_cast<size_t>(x) * k];
+      near.insert(near.end(), list, list + k);
+      near.insert(near.end(), adjacent.begin() + offsets[x], adjacent.begin() + offsets[x] + degree[x]);
+    }
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    for (int32_t c : near)
+    {
+      if (c < 0 || c == a || c == b)
+      {
+        continue;
+      }
+      double qc[2];
+      project(c, qc);
+      for (int64_t s2 = offsets[c], e2 = offsets[c] + degree[c]; s2 < e2; ++s2)
+      {
+        const int32_t d = adjacent[s2];
+        if (d == a || d == b || (d < c && std::binary_search(near.begin(), near.end(), d)))
+        {
+          continue; // shares an end point, or tested from d
+        }
+        double qd[2];
+        project(d, qd);
+        if (std::max(qc[0], qd[0]) < lo[0] || std::min(qc[0], qd[0]) > hi[0] ||
+          std::max(qc[1], qd[1]) < lo[1] || std::min(qc[1], qd[1]) > hi[1])
+        {
+          continue;
+        }
+        if (pcs::holes::SegmentsIntersect(qa, qb, qc, qd))
+        {
+          return true;
+        }
+      }
+    }
+    return false;
+  };
+
+  std::vector<int32_t>& result = this->Step1Triangles;
+  result.clear();
+  result.reserve(2 * static_cast<size_t>(this->N) * 3);
+  const size_t count = edges.size();
+  for (size_t e = 0; e < count; ++e)
+  {
+    if ((e & 0xffff) == 0 &&
+      !this->Progress(begin + (end - begin) * (0.3 + 0.7 * e / static_cast<double>(count))))
+    {
+      return;
+    }
+    const int32_t a = edges[e].A, b = edges[e].B;
+    // Common neighbours: the triangles the edge would close.
+    int32_t common[3];
+    int64_t commonSlotA[3];
+    int numberOfCommon = 0;
+    bool compatible = true;
+    for (int64_t s = offsets[a], end2 = offsets[a] + degree[a]; s < end2 && compatible; ++s)
+    {
+      const int32_t c = adjacent[s];
+      for (int64_t t = offsets[b], e2 = offsets[b] + degree[b]; t < e2; ++t)
+      {
+        if (adjacent[t] == c)
+        {
+          if (numberOfCommon == 2 || triangles[s] >= 2 || triangles[t] >= 2)
+          {
+            compatible = false; // an edge would get a third triangle
+          }
+          else
+          {
+            commonSlotA[numberOfCommon] = s;
+            common[numberOfCommon++] = c;
+          }
+          break;
+        }
+      }
+    }
+    if (!compatible)
+    {
+      continue;
+    }
+    // Two closed triangles whose third vertices are adjacent would close a tetrahedron.
+    if (numberOfCommon == 2 && slot(common[0], common[1]) >= 0)
+    {
+      continue;
+    }
+    // Guard: no exactly degenerate triangle.
+    bool degenerate = false;
+    for (int c = 0; c < numberOfCommon && !degenerate; ++c)
+    {
+      degenerate = pcs::projected::Collinear(this->P(a), this->P(b), this->P(common[c]));
+    }
+    if (degenerate)
+    {
+      continue;
+    }
+    if (crossing && crosses(a, b))
+    {
+      continue;
+    }
+    adjacent[offsets[a] + degree[a]] = b;
+    triangles[offsets[a] + degree[a]++] = static_cast<uint8_t>(numberOfCommon);
+    adjacent[offsets[b] + degree[b]] = a;
+    triangles[offsets[b] + degree[b]++] = static_cast<uint8_t>(numberOfCommon);
+    for (int c = 0; c < numberOfCommon; ++c)
+    {
+      const int32_t v = common[c];
+      ++triangles[commonSlotA[c]];
+      ++triangles[slot(v, a)];
+      ++triangles[slot(b, v)];
+      ++triangles[slot(v, b)];
+      result.insert(result.end(), { a, b, v });
+    }
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+// Step 2: the umbrella test of a vertex over its alive triangles.
+Reconstruction::Umbrella Reconstruction::CheckUmbrella(int32_t v,
+  const std::vector<int64_t>& offsets, const std::vector<int32_t>& vertexTriangles,
+  const std::vector<char>& alive) const
+{
+  // Link edges: the edge opposite v in each triangle.
+  constexpr int Capacity = 64;
+  int32_t linkA[Capacity], linkB[Capacity];
+  int k = 0;
+  for (int64_t s = offsets[v]; s < offsets[v + 1]; ++s)
+  {
+    const int32_t t = vertexTriangles[s];
+    if (!alive[t])
+    {
+      continue;
+    }
+    if (k == Capacity)
+    {
+      return Umbrella::Fail;
+    }
+    const int32_t* tri = &this->Step1Triangles[3 * static_cast<size_t>(t)];
+    const int j = tri[0] == v ? 0 : (tri[1] == v ? 1 : 2);
+    linkA[k] = tri[(j + 1) % 3];
+    linkB[k] = tri[(j + 2) % 3];
+    ++k;
+  }
+  if (k == 0)
+  {
+    return Umbrella::None;
+  }
+  // Link vertices and their (at most 2) link edges.
+  int32_t vertex[Capacity + 1];
+  int edgeOf[Capacity + 1][2];
+  int degreeOf[Capacity + 1];
+  int m = 0;
+  auto index = [&](int32_t x) {
+    for (int i = 0; i < m; ++i)
+    {
+      if (vertex[i] == x)
+      {
+        return i;
+      }
+    }
+    vertex[m] = x;
+    degreeOf[m] = 0;
+    return m++;
+  };
+  for (int e = 0; e < k; ++e)
+  {
+    for (int32_t x : { linkA[e], linkB[e] })
+    {
+      const int i = index(x);
+      if (degreeOf[i] == 2)
+      {
+        return Umbrella::Fail; // an edge with a third triangle (cannot happen after step 1)
+      }
+      edgeOf[i][degreeOf[i]++] = e;
+    }
+  }
+  int ends = 0, start = 0;
+  for (int i = 0; i < m; ++i)
+  {
+    if (degreeOf[i] == 1)
+    {
+      ++ends;
+      start = i;
+    }
+  }
+  if (ends != 0 && ends != 2)
+  {
+    return Umbrella::Fail; // several chains
+  }
+  const bool closed = ends == 0;
+  // Walk the chain: ordered link vertices.
+  int32_t chain[Capacity + 1];
+  int length = 0;
+  int current = start, previousEdge = -1;
+  for (int step = 0; step < k; ++step)
+  {
+    chain[length++] = vertex[current];
+    const int e = (degreeOf[current] == 2 && edgeOf[current][0] == previousEdge)
+      ? edgeOf[current][1]
+      : edgeOf[current][0];
+    if (e == previousEdge)
+    {
+      break;
+    }
+    const int32_t other = linkA[e] == vertex[current] ? linkB[e] : linkA[e];
+    previousEdge = e;
+    current = index(other);
+    if (closed && current == start && step + 1 < k)
+    {
+      return Umbrella::Fail; // back at the start early: several cycles
+    }
+  }
+  if (length != k)
+  {
+    return Umbrella::Fail; // not connected
+  }
+  if (!closed)
+  {
+    chain[length++] = vertex[current];
+  }
+  else if (vertex[current] != chain[0])
+  {
+    return Umbrella::Fail;
+  }
+  // Triangles (v, chain[i], chain[i + 1]) are consistently oriented along the chain.
+  const double* pv = this->P(v);
+  double normals[Capacity][3];
+  double mean[3] = { 0, 0, 0 };
+  for (int i = 0; i < k; ++i)
+  {
+    const int32_t x = chain[i], y = closed ? chain[(i + 1) % k] : chain[i + 1];
+    double a[3], b[3];
+    vtkMath::Subtract(this->P(x), pv, a);
+    vtkMath::Subtract(this->P(y), pv, b);
+    vtkMath::Cross(a, b, normals[i]);
+    const double length2 = vtkMath::Norm(normals[i]);
+    if (!(length2 > 0))
+    {
+      return Umbrella::Fail;
+    }
+    vtkMath::MultiplyScalar(normals[i], 1.0 / length2);
+    vtkMath::Add(mean, normals[i], mean);
+  }
+  // Smoothness (paper section 3): pairwise normal deviation.
+  const double cosine = std::cos(vtkMath::RadiansFromDegrees(this->Self->GetMaximumNormalDeviation()));
+  if (this->Self->GetMaximumNormalDeviation() < 180.0)
+  {
+    for (int i = 0; i < k; ++i)
+    {
+      for (int j = i + 1; j < k; ++j)
+      {
+        if (!(vtkMath::Dot(normals[i], normals[j]) > cosine))
+        {
+          return Umbrella::Fail;
+        }
+      }
+    }
+  }
+  // The chain projected onto the plane normal to the mean winds once around v.
+  if (!(vtkMath::Normalize(mean) > 0))
+  {
+    return Umbrella::Fail;
+  }
+  double u[3], w[3];
+  vtkMath::Perpendiculars(mean, u, w, 0.0);
+  const double origin[2] = { 0.0, 0.0 };
+  double total = 0.0;
+  for (int i = 0; i < k; ++i)
+  {
+    const int32_t x = chain[i], y = closed ? chain[(i + 1) % k] : chain[i + 1];
+    double a[3], b[3];
+    vtkMath::Subtract(this->P(x), pv, a);
+    vtkMath::Subtract(this->P(y), pv, b);
+    const double qa[2] = { vtkMath::Dot(a, u), vtkMath::Dot(a, w) };
+    const double qb[2] = { vtkMath::Dot(b, u), vtkMath::Dot(b, w) };
+    if (pcs::predicates::Orient2D(origin, qa, qb) <= 0)
+    {
+      return Umbrella::Fail;
+    }
+    total += std::atan2(qa[0] * qb[1] - qa[1] * qb[0], qa[0] * qb[0] + qa[1] * qb[1]);
+  }
+  if (closed ? total > 3 * Pi : total >= 2 * Pi)
+  {
+    return Umbrella::Fail; // the umbrella wraps more than once around the point
+  }
+  return closed ? Umbrella::Closed : Umbrella::Open;
+}
+
+// Step 2: umbrella filtering until stable, then the oriented manifold mesh.
+void Reconstruction::Step2Umbrella(double begin, double end)
+{
+  const size_t numberOfTriangles = this->Step1Triangles.size() / 3;
+  std::vector<int64_t> offsets(static_cast<size_t>(this->N) + 1, 0);
+  for (int32_t v : this->Step1Triangles)
+  {
+    ++offsets[v + 1];
+  }
+  for (int32_t i = 0; i < this->N; ++i)
+  {
+    offsets[i + 1] += offsets[i];
+  }
+  std::vector<int32_t> vertexTriangles(offsets.back());
+  {
+    std::vector<int64_t> fill(offsets.begin(), offsets.end() - 1);
+    for (size_t t = 0; t < numberOfTriangles; ++t)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        vertexTriangles[fill[this->Step1Triangles[3 * t + j]]++] = static_cast<int32_t>(t);
+      }
+    }
+  }
+  std::vector<char> alive(numberOfTriangles, 1);
+  std::vector<char> rejected(this->N, 0);
+
+  // First pass in parallel; then the cascade of the removals, sequentially.
+  std::vector<uint8_t> first(this->N);
+  vtkSMPTools::For(0, this->N, [&](int32_t b, int32_t e) {
+    for (int32_t v = b; v < e; ++v)
+    {
+      first[v] = static_cast<uint8_t>(this->CheckUmbrella(v, offsets, vertexTriangles, alive));
+    }
+  });
+  if (!this->Progress(begin + 0.4 * (end - begin)))
+  {
+    return;
+  }
+  std::vector<int32_t> work;
+  std::vector<char> queued(this->N, 0);
+  auto reject = [&](int32_t v) {
+    rejected[v] = 1;
+    for (int64_t s = offsets[v]; s < offsets[v + 1]; ++s)
+    {
+      const int32_t t = vertexTriangles[s];
+      if (!alive[t])
+      {
+        continue;
+      }
+      alive[t] = 0;
+      for (int j = 0; j < 3; ++j)
+      {
+        const int32_t x = this->Step1Triangles[3 * static_cast<size_t>(t) + j];
+        if (!rejected[x] && !queued[x])
+        {
+          queued[x] = 1;
+          work.push_back(x);
+        }
+      }
+    }
+  };
+  for (int32_t v = 0; v < this->N; ++v)
+  {
+    if (first[v] == static_cast<uint8_t>(Umbrella::Fail))
+    {
+      reject(v);
+    }
+  }
+  while (!work.empty())
+  {
+    const int32_t v = work.back();
+    work.pop_back();
+    queued[v] = 0;
+    if (!rejected[v] && this->CheckUmbrella(v, offsets, vertexTriangles, alive) == Umbrella::Fail)
+    {
+      reject(v);
+    }
+  }
+  if (!this->Progress(begin + 0.6 * (end - begin)))
+  {
+    return;
+  }
+
+  // Orientation: breadth-first over the alive triangles through their shared edges; each
+  // triangle is added to the oriented mesh with the orientation its parent imposes.
+  this->Mesh.Initialize(this->N);
+  this->Mesh.ReserveTriangles(static_cast<int64_t>(2.2 * this->N));
+  std::vector<char> visited(numberOfTriangles, 0);
+  std::vector<std::array<int32_t, 3>> queue;
+  auto neighbor = [&](int32_t t, int32_t a, int32_t b) -> int32_t {
+    for (int64_t s = offsets[a]; s < offsets[a + 1]; ++s)
+    {
+      const int32_t u = vertexTriangles[s];
+      if (u == t || !alive[u])
+      {
+        continue;
+      }
+      const int32_t* tri = &this->Step1Triangles[3 * static_cast<size_t>(u)];
+      if (tri[0] == b || tri[1] == b || tri[2] == b)
+      {
+        return u;
+      }
+    }
+    return -1;
+  };
+  std::vector<int32_t> queueIds;
+  for (size_t seed = 0; seed < numberOfTriangles; ++seed)
+  {
+    if (!alive[seed] || visited[seed])
+    {
+      continue;
+    }
+    visited[seed] = 1;
+    queueIds.assign(1, static_cast<int32_t>(seed));
+    queue.assign(1, { this->Step1Triangles[3 * seed], this->Step1Triangles[3 * seed + 1],
+                      this->Step1Triangles[3 * seed + 2] });
+    for (size_t q = 0; q < queue.size(); ++q)
+    {
+      const std::array<int32_t, 3> tri = queue[q];
+      const int32_t t = queueIds[q];
+      if (this->Mesh.AddTriangle(tri[0], tri[1], tri[2]) < 0)
+      {
+        alive[t] = 0; // a Moebius-like orientation conflict: dropped
+        continue;
+      }
+      for (int j = 0; j < 3; ++j)
+      {
+        const int32_t a = tri[j], b = tri[(j + 1) % 3];
+        const int32_t u = neighbor(t, a, b);
+        if (u < 0 || visited[u])
+        {
+          continue;
+        }
+        visited[u] = 1;
+        const int32_t* other = &this->Step1Triangles[3 * static_cast<size_t>(u)];
+        const int32_t c = other[0] != a && other[0] != b
+          ? other[0]
+          : (other[1] != a && other[1] != b ? other[1] : other[2]);
+        queue.push_back({ b, a, c }); // traverses the shared edge b -> a
+        queueIds.push_back(u);
+      }
+    }
+  }
+  // Vertices with several fans (after dropped triangles) lose their triangles, until none.
+  std::vector<int32_t> pending;
+  for (int32_t v = 0; v < this->N; ++v)
+  {
+    if (this->Mesh.GetNumberOfFans(v) > 1)
+    {
+      pending.push_back(v);
+    }
+  }
+  std::vector<int64_t> around;
+  while (!pending.empty())
+  {
+    const int32_t v = pending.back();
+    pending.pop_back();
+    if (this->Mesh.GetNumberOfFans(v) <= 1)
+    {
+      continue;
+    }
+    rejected[v] = 1;
+    around.resize(std::max(this->Mesh.GetVertexDegree(v), 1));
+    const int count = this->Mesh.GetVertexTriangles(v, around.data(), static_cast<int>(around.size()));
+    for (int i = 0; i < count; ++i)
+    {
+      const int32_t* tri = this->Mesh.GetTriangle(around[i]);
+      const int32_t others[3] = { tri[0], tri[1], tri[2] };
+      this->Mesh.RemoveTriangle(around[i]);
+      for (int32_t x : others)
+      {
+        if (x != v && this->Mesh.GetNumberOfFans(x) > 1)
+        {
+          pending.push_back(x);
+        }
+      }
+    }
+  }
+  this->Stage.assign(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 1);
+
+  this->Status.assign(this->N, vtkGreedySurfaceTriangulation::LOST);
+  for (int32_t v = 0; v < this->N; ++v)
+  {
+    switch (this->Mesh.GetVertexState(v))
+    {
+      case pcs::SurfaceMesh::VertexState::Interior:
+        this->Status[v] = vtkGreedySurfaceTriangulation::CORRECT;
+        break;
+      case pcs::SurfaceMesh::VertexState::Boundary:
+        this->Status[v] = vtkGreedySurfaceTriangulation::BOUNDARY;
+        break;
+      default:
+        ++this->LostPoints;
+        break;
+    }
+  }
+  this->ComputeComponents();
+}
+
+// Connected components of the mesh triangles (through shared edges), per vertex.
+void Reconstruction::ComputeComponents()
+{
+  this->Component.assign(this->N, -1);
+  const int64_t ids = this->Mesh.GetNumberOfTriangleIds();
+  std::vector<int32_t> component(ids, -1);
+  std::vector<int64_t> stack;
+  int32_t next = 0;
+  for (int64_t seed = 0; seed < ids; ++seed)
+  {
+    if (this->Mesh.IsTriangleRemoved(seed) || component[seed] >= 0)
+    {
+      continue;
+    }
+    component[seed] = next;
+    stack.assign(1, seed);
+    while (!stack.empty())
+    {
+      const int64_t t = stack.back();
+      stack.pop_back();
+      const int32_t* tri = this->Mesh.GetTriangle(t);
+      for (int j = 0; j < 3; ++j)
+      {
+        this->Component[tri[j]] = next;
+        const int64_t u = this->Mesh.FindTriangle(tri[(j + 1) % 3], tri[j]);
+        if (u >= 0 && component[u] < 0)
+        {
+          component[u] = next;
+          stack.push_back(u);
+        }
+      }
+    }
+    ++next;
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+// Step 3 test on a loop (vertex sequence in the direction of the mesh's boundary edges): true
+// for a hole.
+bool Reconstruction::IsHole(const std::vector<int32_t>& vertices) const
+{
+  const size_t n = vertices.size();
+  if (n < 3)
+  {
+    return false;
+  }
+  auto I = [this](int32_t v) { return &this->BoundaryVectors[3 * static_cast<size_t>(v)]; };
+  // The paper's test. P1 is searched among the loop points at least a third of the loop away
+  // from P0, so that it is never a neighbour of P0 on a thin loop.
+  const size_t gap = std::max<size_t>(1, (n + 2) / 3);
+  int positive = 0, negative = 0;
+  const size_t tries = std::min<size_t>(16, n);
+  for (size_t attempt = 0; attempt < tries; ++attempt)
+  {
+    const size_t i0 = (attempt * n) / tries;
+    const int32_t p0 = vertices[i0];
+    int32_t p1 = p0;
+    double farthest = -1.0;
+    for (size_t k = gap; k + gap <= n; ++k)
+    {
+      const int32_t v = vertices[(i0 + k) % n];
+      const double d = vtkMath::Distance2BetweenPoints(this->P(p0), this->P(v));
+      if (d > farthest)
+      {
+        farthest = d;
+        p1 = v;
+      }
+    }
+    double d01[3];
+    vtkMath::Subtract(this->P(p1), this->P(p0), d01);
+    const double s1 = vtkMath::Dot(d01, I(p1));
+    const double s0 = -vtkMath::Dot(d01, I(p0));
+    for (double s : { s0, s1 })
+    {
+      positive += s > 0 ? 1 : 0;
+      negative += s < 0 ? 1 : 0;
+    }
+    const int total = 2 * static_cast<int>(attempt + 1);
+    if (4 * positive >= 3 * total)
+    {
+      return true;
+    }
+    if (4 * negative >= 3 * total)
+    {
+      return false;
+    }
+  }
+  // Undecided: the orientation of the loop against the mesh beside it. The loop follows the
+  // boundary edges of consistently oriented triangles, so it turns clockwise around a hole and
+  // counter-clockwise around an island, seen along the normals of those triangles: the sign of
+  // (loop vector area) . (sum of the triangle normals), when that is clear (the two vectors
+  // within 60 degrees of parallel); otherwise an island (left open).
+  double area[3] = { 0, 0, 0 }, normal[3] = { 0, 0, 0 };
+  const double* origin = this->P(vertices[0]);
+  for (size_t i = 0; i < n; ++i)
+  {
+    const int32_t a = vertices[i], b = vertices[(i + 1) % n];
+    double pa[3], pb[3], cross[3];
+    vtkMath::Subtract(this->P(a), origin, pa);
+    vtkMath::Subtract(this->P(b), origin, pb);
+    vtkMath::Cross(pa, pb, cross);
+    vtkMath::Add(area, cross, area);
+    const int32_t c = this->Mesh.OppositeVertex(a, b);
+    if (c >= 0)
+    {
+      double u[3], w[3], t[3];
+      vtkMath::Subtract(this->P(b), this->P(a), u);
+      vtkMath::Subtract(this->P(c), this->P(a), w);
+      vtkMath::Cross(u, w, t);
+      vtkMath::Add(normal, t, normal);
+    }
+  }
+  const double scale = vtkMath::Norm(area) * vtkMath::Norm(normal);
+  const double cosine = scale > 0 ? vtkMath::Dot(area, normal) / scale : 0.0;
+  return cosine < -0.5;
+}
+
+void Reconstruction::Step3Status()
+{
+  std::vector<std::vector<int32_t>> loops;
+  this->Mesh.GetBoundaryLoops(loops);
+  this->NodeOf.assign(this->N, -1);
+  this->Nodes.clear();
+  this->BoundaryVectors.assign(3 * static_cast<size_t>(this->N), 0.0);
+
+  // Boundary vectors (paper Fig. 8): the direction from a boundary point into its region, as
+  // the sum of the unit inward perpendiculars of its two boundary edges, each in the plane of
+  // its triangle (see the class documentation for why not the paper's neighbourhood mean).
+  auto inward = [this](int32_t a, int32_t b, double* sum) {
+    const int32_t c = this->Mesh.OppositeVertex(a, b); // triangle (a, b, c) owns a -> b
+    if (c < 0)
+    {
+      return;
+    }
+    double e[3], f[3], n[3], d[3];
+    vtkMath::Subtract(this->P(b), this->P(a), e);
+    vtkMath::Subtract(this->P(c), this->P(a), f);
+    vtkMath::Cross(e, f, n);
+    vtkMath::Cross(n, e, d); // in the triangle's plane, towards c
+    if (vtkMath::Normalize(d) > 0)
+    {
+      vtkMath::Add(sum, d, sum);
+    }
+  };
+  for (const auto& loop : loops)
+  {
+    const size_t n = loop.size();
+    for (size_t i = 0; i < n; ++i)
+    {
+      const int32_t v = loop[i];
+      double* vector = &this->BoundaryVectors[3 * static_cast<size_t>(v)];
+      inward(loop[(i + n - 1) % n], v, vector);
+      inward(v, loop[(i + 1) % n], vector);
+    }
+  }
+
+  // Loop nodes (a doubly linked list per loop, in the direction of the mesh's boundary edges).
+  this->LoopIsHole.assign(loops.size(), 0);
+  for (size_t l = 0; l < loops.size(); ++l)
+  {
+    const auto& loop = loops[l];
+    const int32_t firstNode = static_cast<int32_t>(this->Nodes.size());
+    const int32_t n = static_cast<int32_t>(loop.size());
+    for (int32_t i = 0; i < n; ++i)
+    {
+      this->NodeOf[loop[i]] = firstNode + i;
+      this->Nodes.push_back(
+        { loop[i], firstNode + (i + 1) % n, firstNode + (i + n - 1) % n, static_cast<int32_t>(l) });
+    }
+    this->LoopIsHole[l] = this->IsHole(loop) ? 1 : 0;
+    this->Islands += this->LoopIsHole[l] ? 0 : 1;
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+// Step 4: bridges between islands, then the final loops and their status.
+void Reconstruction::Step4Bridges()
+{
+  const double limit = this->Self->GetMaximumBridgeLength() * this->Spacing;
+  std::vector<char> bridged(this->N, 0);
+  std::vector<int32_t> nodeChanged; // loops touched by a bridge
+  if (this->Self->GetBridgeIslands() && this->Islands > 0 && limit > 0 && !this->Nodes.empty())
+  {
+    struct Candidate
+    {
+      double Length;
+      int32_t A, B;
+    };
+    std::vector<Candidate> candidates;
+    vtkNew<vtkIdList> near;
+    auto I = [this](int32_t v) { return &this->BoundaryVectors[3 * static_cast<size_t>(v)]; };
+    auto leaves = [&](int32_t a, int32_t b) {
+      double d[3];
+      vtkMath::Subtract(this->P(b), this->P(a), d);
+      return vtkMath::Dot(d, I(a)) < 0;
+    };
+    std::vector<std::pair<double, int32_t>> best; // per other loop: (length, vertex)
+    for (const Node& node : this->Nodes)
+    {
+      if (this->LoopIsHole[node.Loop])
+      {
+        continue;
+      }
+      const int32_t a = node.Vertex;
+      this->Locator->FindPointsWithinRadius(limit, this->P(a), near);
+      best.clear();
+      for (vtkIdType j = 0; j < near->GetNumberOfIds(); ++j)
+      {
+        const int32_t b = static_cast<int32_t>(near->GetId(j));
+        const int32_t nb = this->NodeOf[b];
+        if (nb < 0 || this->Nodes[nb].Loop == node.Loop || !leaves(a, b) || !leaves(b, a))
+        {
+          continue;
+        }
+        const double length = Distance(this->P(a), this->P(b));
+        const int32_t loop = this->Nodes[nb].Loop;
+        auto it = std::find_if(best.begin(), best.end(), [&](const std::pair<double, int32_t>& x) {
+          return this->Nodes[this->NodeOf[x.second]].Loop == loop;
+        });
+        if (it == best.end())
+        {
+          best.emplace_back(length, b);
+        }
+        else if (length < it->first || (length == it->first && b < it->second))
+        {
+          *it = { length, b };
+        }
+      }
+      for (const auto& x : best)
+      {
+        candidates.push_back({ x.first, std::min(a, x.second), std::max(a, x.second) });
+      }
+    }
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
+      return x.Length != y.Length ? x.Length < y.Length : (x.A != y.A ? x.A < y.A : x.B < y.B);
+    });
+    candidates.erase(std::unique(candidates.begin(), candidates.end(),
+                       [](const Candidate& x, const Candidate& y) { return x.A == y.A && x.B == y.B; }),
+      candidates.end());
+
+    // Orientation groups of the components: union-find; a group is reversed as a whole.
+    const int32_t components =
+      1 + (this->Component.empty() ? -1 : *std::max_element(this->Component.begin(), this->Component.end()));
+    std::vector<int32_t> parent(std::max(components, 0));
+    std::iota(parent.begin(), parent.end(), 0);
+    std::vector<std::vector<int32_t>> members(parent.size());
+    for (int32_t c = 0; c < components; ++c)
+    {
+      members[c].push_back(c);
+    }
+    auto find = [&](int32_t c) {
+      while (parent[c] != c)
+      {
+        c = parent[c] = parent[parent[c]];
+      }
+      return c;
+    };
+    std::vector<std::vector<int32_t>> nodesOfComponent(parent.size());
+    for (int32_t i = 0; i < static_cast<int32_t>(this->Nodes.size()); ++i)
+    {
+      nodesOfComponent[this->Component[this->Nodes[i].Vertex]].push_back(i);
+    }
+    std::vector<int64_t> seeds(parent.size(), -1);
+    for (int64_t t = 0; t < this->Mesh.GetNumberOfTriangleIds(); ++t)
+    {
+      if (!this->Mesh.IsTriangleRemoved(t))
+      {
+        const int32_t c = this->Component[this->Mesh.GetTriangle(t)[0]];
+        if (seeds[c] < 0)
+        {
+          seeds[c] = t;
+        }
+      }
+    }
+    // Auxiliary point at about one spacing from node n along its loop (direction: +1 next).
+    auto along = [&](int32_t n, int direction) {
+      const double* origin = this->P(this->Nodes[n].Vertex);
+      int32_t m = n;
+      for (int step = 0; step < 8; ++step)
+      {
+        m = direction > 0 ? this->Nodes[m].Next : this->Nodes[m].Prev;
+        if (m == n || Distance(origin, this->P(this->Nodes[m].Vertex)) >= this->Spacing)
+        {
+          break;
+        }
+      }
+      return this->P(this->Nodes[m].Vertex);
+    };
+    auto angle = [](const double* p, const double* q, const double* r, const double* s) {
+      double u[3], v[3];
+      vtkMath::Subtract(q, p, u);
+      vtkMath::Subtract(s, r, v);
+      return vtkMath::AngleBetweenVectors(u, v);
+    };
+
+    vtkNew<vtkIncrementalOctreePointLocator> admitted;
+    {
+      vtkNew<vtkPoints> midpoints;
+      midpoints->SetDataTypeToDouble();
+      double bounds[6];
+      this->Cloud->GetBounds(bounds);
+      for (int i = 0; i < 3; ++i)
+      {
+        const double pad = limit + this->Spacing;
+        bounds[2 * i] -= pad;
+        bounds[2 * i + 1] += pad;
+      }
+      admitted->InitPointInsertion(midpoints, bounds);
+    }
+    std::vector<std::array<int32_t, 2>> installed;
+    const double separation = this->Self->GetMinimumBridgeSeparation() * this->Spacing;
+    for (const Candidate& c : candidates)
+    {
+      const int32_t a = c.A, b = c.B;
+      if (bridged[a] || bridged[b] || this->Mesh.GetEdgeValence(a, b) > 0)
+      {
+        continue;
+      }
+      // Separation from the admitted bridges (their midpoints within reach).
+      double middle[3];
+      for (int i = 0; i < 3; ++i)
+      {
+        middle[i] = 0.5 * (this->P(a)[i] + this->P(b)[i]);
+      }
+      bool separate = true;
+      if (!installed.empty())
+      {
+        admitted->FindPointsWithinRadius(limit + separation, middle, near);
+        for (vtkIdType j = 0; j < near->GetNumberOfIds() && separate; ++j)
+        {
+          const auto& other = installed[near->GetId(j)];
+          separate = SegmentDistance(this->P(a), this->P(b), this->P(other[0]), this->P(other[1])) >=
+            separation;
+        }
+      }
+      if (!separate)
+      {
+        continue;
+      }
+      const int32_t na = this->NodeOf[a], nb = this->NodeOf[b];
+      // The paper's angle rule with the auxiliary points A0, A1 (before / after A along its
+      // loop) and B0, B1: the splice below joins A0's side to B1's and A1's to B0's.
+      const double* a0 = along(na, -1);
+      const double* a1 = along(na, +1);
+      const double* b0 = along(nb, -1);
+      const double* b1 = along(nb, +1);
+      const bool consistent = angle(a0, b1, a1, b0) <= angle(a0, b0, a1, b1);
+      const int32_t ga = find(this->Component[a]), gb = find(this->Component[b]);
+      if (!consistent)
+      {
+        if (ga == gb)
+        {
+          continue; // would need to reverse a group it already belongs to
+        }
+        for (int32_t component : members[gb])
+        {
+          this->Mesh.ReverseComponent(seeds[component]);
+          for (int32_t n : nodesOfComponent[component])
+          {
+            std::swap(this->Nodes[n].Next, this->Nodes[n].Prev);
+          }
+        }
+      }
+      if (ga != gb)
+      {
+        parent[gb] = ga;
+        members[ga].insert(members[ga].end(), members[gb].begin(), members[gb].end());
+        members[gb].clear();
+      }
+      // Splice: ... A0 A -> B B1 ... B0 B' -> A' A1 ... (A', B' are new nodes on A, B).
+      const int32_t aCopy = static_cast<int32_t>(this->Nodes.size());
+      const int32_t bCopy = aCopy + 1;
+      const int32_t aNext = this->Nodes[na].Next, bPrev = this->Nodes[nb].Prev;
+      this->Nodes.push_back({ a, aNext, bCopy, this->Nodes[na].Loop });
+      this->Nodes.push_back({ b, aCopy, bPrev, this->Nodes[nb].Loop });
+      nodesOfComponent[this->Component[a]].push_back(aCopy);
+      nodesOfComponent[this->Component[b]].push_back(bCopy);
+      this->Nodes[aNext].Prev = aCopy;
+      this->Nodes[bPrev].Next = bCopy;
+      this->Nodes[na].Next = nb;
+      this->Nodes[nb].Prev = na;
+      bridged[a] = bridged[b] = 1;
+      installed.push_back({ a, b });
+      admitted->InsertNextPoint(middle);
+      this->Links.push_back({ a, b });
+    }
+    this->Bridges = static_cast<vtkIdType>(installed.size());
+  }
+
+  // The final loops: holes, and islands (left open).
+  std::vector<char> seen(this->Nodes.size(), 0);
+  for (int32_t start = 0; start < static_cast<int32_t>(this->Nodes.size()); ++start)
+  {
+    if (seen[start])
+    {
+      continue;
+    }
+    std::vector<int32_t> sequence;
+    bool changed = false, touchesHole = false;
+    for (int32_t n = start; !seen[n]; n = this->Nodes[n].Next)
+    {
+      seen[n] = 1;
+      sequence.push_back(n);
+      changed = changed || bridged[this->Nodes[n].Vertex] ||
+        this->Nodes[n].Loop != this->Nodes[start].Loop;
+      touchesHole = touchesHole || this->LoopIsHole[this->Nodes[n].Loop];
+    }
+    bool hole;
+    if (!changed)
+    {
+      hole = this->LoopIsHole[this->Nodes[start].Loop] != 0;
+    }
+    else if (touchesHole)
+    {
+      hole = true;
+    }
+    else
+    {
+      std::vector<int32_t> vertices;
+      for (int32_t n : sequence)
+      {
+        vertices.push_back(this->Nodes[n].Vertex);
+      }
+      hole = this->IsHole(vertices);
+    }
+    this->FinalLoops.push_back(std::move(sequence));
+    this->FinalIsHole.push_back(hole ? 1 : 0);
+    this->Holes += hole ? 1 : 0;
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+// Steps 5 and 6: every hole is split and triangulated with its lost points.
+void Reconstruction::Step6FillHoles(double begin, double end)
+{
+  if (!this->Self->GetFillHoles())
+  {
+    this->HolesLeftOpen = this->Holes;
+    return;
+  }
+  const double diameterLimit = this->Self->GetMaximumHoleDiameter();
+  pcs::holes::HoleFiller filler;
+  filler.AuxiliaryDistance = this->Self->GetAuxiliaryPointDistance() * this->Spacing;
+  filler.MaximumGreedyPoints = this->Self->GetMaximumHolePoints();
+  // A vertex twice in a loop is a bridge end point and its copy (A, A').
+  filler.SplitAtRepeatedVertices = false;
+  filler.EdgeExists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
+  vtkNew<vtkIdList> near;
+  std::vector<int32_t> loop, candidates;
+  std::vector<double> vectors;
+  std::vector<int64_t> added;
+  const size_t count = this->FinalLoops.size();
+  for (size_t l = 0; l < count; ++l)
+  {
+    if ((l & 63) == 0 && !this->Progress(begin + (end - begin) * l / static_cast<double>(count)))
+    {
+      return;
+    }
+    if (!this->FinalIsHole[l])
+    {
+      continue;
+    }
+    // The loop reversed: hole triangles traverse the boundary edges against the mesh.
+    const auto& sequence = this->FinalLoops[l];
+    loop.clear();
+    vectors.clear();
+    double centre[3] = { 0, 0, 0 };
+    for (auto it = sequence.rbegin(); it != sequence.rend(); ++it)
+    {
+      const int32_t v = this->Nodes[*it].Vertex;
+      loop.push_back(v);
+      const double* I = &this->BoundaryVectors[3 * static_cast<size_t>(v)];
+      vectors.insert(vectors.end(), I, I + 3);
+      vtkMath::Add(centre, this->P(v), centre);
+    }
+    vtkMath::MultiplyScalar(centre, 1.0 / loop.size());
+    double radius = 0.0;
+    for (int32_t v : loop)
+    {
+      radius = std::max(radius, Distance(centre, this->P(v)));
+    }
+    if (2 * radius > diameterLimit * this->Spacing)
+    {
+      ++this->HolesLeftOpen;
+      continue;
+    }
+    // A 3-vertex loop around an existing triangle is a one-triangle island, not a hole.
+    if (loop.size() == 3 && this->Mesh.OppositeVertex(loop[1], loop[0]) == loop[2])
+    {
+      ++this->HolesLeftOpen;
+      continue;
+    }
+    candidates.clear();
+    this->Locator->FindPointsWithinRadius(radius, centre, near);
+    for (vtkIdType j = 0; j < near->GetNumberOfIds(); ++j)
+    {
+      const int32_t q = static_cast<int32_t>(near->GetId(j));
+      if (this->Status[q] == vtkGreedySurfaceTriangulation::LOST && this->Mesh.IsFree(q))
+      {
+        candidates.push_back(q);
+      }
+    }
+    std::sort(candidates.begin(), candidates.end());
+    pcs::holes::FillResult result;
+    filler.Fill(this->X.data(), loop, vectors, candidates, result);
+    // Add the triangles; undo the whole hole if the mesh would not stay a manifold.
+    added.clear();
+    bool ok = !result.Triangles.empty();
+    for (size_t t = 0; t < result.Triangles.size() && ok; t += 3)
+    {
+      const int64_t id = this->Mesh.AddTriangle(
+        result.Triangles[t], result.Triangles[t + 1], result.Triangles[t + 2]);
+      ok = id >= 0;
+      if (ok)
+      {
+        added.push_back(id);
+      }
+    }
+    for (size_t t = 0; t < result.Triangles.size() && ok; ++t)
+    {
+      ok = this->Mesh.GetNumberOfFans(result.Triangles[t]) == 1;
+    }
+    if (!ok)
+    {
+      for (int64_t id : added)
+      {
+        this->Mesh.RemoveTriangle(id);
+      }
+      ++this->HolesLeftOpen;
+      continue;
+    }
+    this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 6);
+    for (int32_t q : result.UsedPoints)
+    {
+      this->Status[q] = vtkGreedySurfaceTriangulation::LOST_USED_BY_HOLE_FILLING;
+    }
+    for (const auto& chord : result.Chords)
+    {
+      this->Links.push_back(chord);
+    }
+    this->Chords += static_cast<vtkIdType>(result.Chords.size());
+    ++this->HolesFilled;
+    if (!result.Complete)
+    {
+      ++this->HolesLeftOpen; // partly filled
+    }
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+// Step 7: bridge and chord edges replaced by the shorter diagonal of their two triangles.
+void Reconstruction::Step7Swaps()
+{
+  if (!this->Self->GetSwapBridgeEdges())
+  {
+    return;
+  }
+  auto normal = [this](int32_t a, int32_t b, int32_t c, double n[3]) {
+    double u[3], v[3];
+    vtkMath::Subtract(this->P(b), this->P(a), u);
+    vtkMath::Subtract(this->P(c), this->P(a), v);
+    vtkMath::Cross(u, v, n);
+  };
+  for (const auto& link : this->Links)
+  {
+    const int32_t a = link[0], b = link[1];
+    if (this->Mesh.GetEdgeValence(a, b) != 2)
+    {
+      continue;
+    }
+    const int64_t t1 = this->Mesh.FindTriangle(a, b), t2 = this->Mesh.FindTriangle(b, a);
+    const int32_t c = this->Mesh.OppositeVertex(a, b), d = this->Mesh.OppositeVertex(b, a);
+    if (c < 0 || d < 0 || c == d || this->Mesh.GetEdgeValence(c, d) > 0 ||
+      !(Distance(this->P(c), this->P(d)) < Distance(this->P(a), this->P(b))))
+    {
+      continue;
+    }
+    // New triangles (c, a, d) and (d, b, c) must face like the old ones.
+    double n1[3], n2[3], old1[3], old2[3], sum[3];
+    normal(a, b, c, old1);
+    normal(b, a, d, old2);
+    vtkMath::Add(old1, old2, sum);
+    normal(c, a, d, n1);
+    normal(d, b, c, n2);
+    if (!(vtkMath::Dot(n1, sum) > 0 && vtkMath::Dot(n2, sum) > 0) ||
+      pcs::projected::Collinear(this->P(c), this->P(a), this->P(d)) ||
+      pcs::projected::Collinear(this->P(d), this->P(b), this->P(c)))
+    {
+      continue;
+    }
+    this->Mesh.RemoveTriangle(t1);
+    this->Mesh.RemoveTriangle(t2);
+    const int64_t u1 = this->Mesh.AddTriangle(c, a, d);
+    const int64_t u2 = u1 >= 0 ? this->Mesh.AddTriangle(d, b, c) : -1;
+    bool ok = u1 >= 0 && u2 >= 0;
+    for (int32_t v : { a, b, c, d })
+    {
+      ok = ok && this->Mesh.GetNumberOfFans(v) == 1;
+    }
+    if (!ok)
+    {
+      if (u2 >= 0)
+      {
+        this->Mesh.RemoveTriangle(u2);
+      }
+      if (u1 >= 0)
+      {
+        this->Mesh.RemoveTriangle(u1);
+      }
+      this->Mesh.AddTriangle(a, b, c);
+      this->Mesh.AddTriangle(b, a, d);
+      this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 6);
+      continue;
+    }
+    this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 7);
+    ++this->Swaps;
+  }
+}
+
+// Closed components are oriented outwards (positive signed volume).
+void Reconstruction::OrientOutwards()
+{
+  const int64_t ids = this->Mesh.GetNumberOfTriangleIds();
+  std::vector<char> seen(ids, 0);
+  std::vector<int64_t> stack;
+  for (int64_t seed = 0; seed < ids; ++seed)
+  {
+    if (this->Mesh.IsTriangleRemoved(seed) || seen[seed])
+    {
+      continue;
+    }
+    seen[seed] = 1;
+    stack.assign(1, seed);
+    bool closed = true;
+    double volume = 0.0;
+    const double* origin = this->P(this->Mesh.GetTriangle(seed)[0]);
+    while (!stack.empty())
+    {
+      const int64_t t = stack.back();
+      stack.pop_back();
+      const int32_t* tri = this->Mesh.GetTriangle(t);
+      double a[3], b[3], c[3], bc[3];
+      vtkMath::Subtract(this->P(tri[0]), origin, a);
+      vtkMath::Subtract(this->P(tri[1]), origin, b);
+      vtkMath::Subtract(this->P(tri[2]), origin, c);
+      vtkMath::Cross(b, c, bc);
+      volume += vtkMath::Dot(a, bc);
+      for (int j = 0; j < 3; ++j)
+      {
+        const int64_t u = this->Mesh.FindTriangle(tri[(j + 1) % 3], tri[j]);
+        if (u < 0)
+        {
+          closed = false;
+        }
+        else if (!seen[u])
+        {
+          seen[u] = 1;
+          stack.push_back(u);
+        }
+      }
+    }
+    if (closed && volume < 0)
+    {
+      this->Mesh.ReverseComponent(seed);
+    }
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------------------------
+vtkGreedySurfaceTriangulation::vtkGreedySurfaceTriangulation() = default;
+vtkGreedySurfaceTriangulation::~vtkGreedySurfaceTriangulation() = default;
+
+int vtkGreedySurfaceTriangulation::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+int vtkGreedySurfaceTriangulation::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  const auto start = std::chrono::steady_clock::now();
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  // Under MPI the whole cloud is reconstructed on process 0; the other outputs stay empty.
+  vtkSmartPointer<vtkPointSet> input =
+    pcs::GatherInputOnFirstProcess(vtkPointSet::GetData(inputVector[0]));
+  if (!input && output)
+  {
+    return 1;
+  }
+  if (!output)
+  {
+    vtkErrorMacro("Missing output data object.");
+    return 0;
+  }
+  this->NumberOfTriangles = 0;
+  this->NumberOfLostPoints = 0;
+  this->NumberOfIslands = 0;
+  this->NumberOfBridges = 0;
+  this->NumberOfHolesFilled = 0;
+  this->NumberOfUnusedPoints = 0;
+  this->MeanSpacing = 0.0;
+
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  if (input->GetPoints())
+  {
+    output->SetPoints(input->GetPoints());
+  }
+  output->GetPointData()->PassData(input->GetPointData());
+
+  vtkNew<vtkUnsignedCharArray> used;
+  used->SetName("Used");
+  used->SetNumberOfValues(numberOfPoints);
+  used->FillValue(0);
+  vtkNew<vtkUnsignedCharArray> status;
+  status->SetName("Status");
+  status->SetNumberOfValues(numberOfPoints);
+  status->FillValue(NOT_TRIANGULATED);
+  vtkNew<vtkDoubleArray> uniformity;
+  uniformity->SetName("LocalUniformity");
+  uniformity->SetNumberOfValues(numberOfPoints);
+  uniformity->FillValue(NaN);
+  vtkNew<vtkUnsignedCharArray> stage;
+  stage->SetName("Stage");
+
+  Reconstruction r;
+  r.Self = this;
+  vtkIdType duplicates = 0, skipped = 0;
+  std::string steps;
+  double ssrArea = 0.0, totalArea = 0.0, ssrUniformity = 0.0;
+  vtkIdType ssrPoints = 0, ssrUniformityCount = 0;
+  std::vector<int32_t> connectivity;
+  std::vector<vtkIdType> inputIds; // local -> input id
+  std::vector<int32_t> localOf;    // input id -> local id (-1: skipped)
+
+  auto finish = [&]() {
+    output->GetPointData()->AddArray(used);
+    output->GetPointData()->AddArray(status);
+    output->GetPointData()->AddArray(uniformity);
+    output->GetCellData()->AddArray(stage);
+    this->NumberOfTriangles = static_cast<vtkIdType>(connectivity.size() / 3);
+    this->NumberOfLostPoints = r.LostPoints;
+    this->NumberOfIslands = r.Islands;
+    this->NumberOfBridges = r.Bridges;
+    this->NumberOfHolesFilled = r.HolesFilled;
+    this->MeanSpacing = r.Spacing;
+    this->NumberOfUnusedPoints = 0;
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    {
+      this->NumberOfUnusedPoints += used->GetValue(i) ? 0 : 1;
+    }
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    vtkFieldData* fd = output->GetFieldData();
+    AddCount(fd, "NumberOfTriangles", this->NumberOfTriangles);
+    AddCount(fd, "NumberOfLostPoints", r.LostPoints);
+    AddCount(fd, "NumberOfIslands", r.Islands);
+    AddCount(fd, "NumberOfHoles", r.Holes);
+    AddCount(fd, "NumberOfBridges", r.Bridges);
+    AddCount(fd, "NumberOfChords", r.Chords);
+    AddCount(fd, "NumberOfHolesFilled", r.HolesFilled);
+    AddCount(fd, "NumberOfHolesLeftOpen", r.HolesLeftOpen);
+    AddCount(fd, "NumberOfSwaps", r.Swaps);
+    AddCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
+    AddCount(fd, "NumberOfDuplicatePoints", duplicates);
+    AddCount(fd, "NumberOfSkippedPoints", skipped);
+    AddValue(fd, "MeanSpacing", r.Spacing);
+    AddCount(fd, "NumberOfPoints", numberOfPoints);
+    AddValue(fd, "AverageUniformityInSSR",
+      ssrUniformityCount > 0 ? ssrUniformity / ssrUniformityCount : NaN);
+    AddValue(fd, "SSRAreaPercent", totalArea > 0 ? 100.0 * ssrArea / totalArea : 0.0);
+    AddValue(fd, "SSRPointsPercent",
+      r.N > 0 ? 100.0 * static_cast<double>(ssrPoints) / r.N : 0.0);
+    vtkNew<vtkStringArray> stepsArray;
+    stepsArray->SetName("StepsUsed");
+    stepsArray->InsertNextValue(steps);
+    fd->AddArray(stepsArray);
+    AddValue(fd, "Seconds", seconds);
+    AddValue(fd, "PointsPerSecond", seconds > 0 ? numberOfPoints / seconds : 0.0);
+    this->UpdateProgress(1.0);
+    return 1;
+  };
+
+  if (numberOfPoints == 0)
+  {
+    vtkWarningMacro("The input has no points: the output is empty.");
+    return finish();
+  }
+  if (numberOfPoints > MaximumNumberOfPoints)
+  {
+    vtkErrorMacro("The input has " << numberOfPoints << " points; at most "
+                                   << MaximumNumberOfPoints << " are supported.");
+    return finish();
+  }
+
+  // Distinct finite points: non-finite ones are skipped, exact duplicates merged.
+  std::vector<double> xyz(3 * static_cast<size_t>(numberOfPoints));
+  vtkPoints* points = input->GetPoints();
+  vtkSMPTools::For(0, numberOfPoints, [&](vtkIdType b, vtkIdType e) {
+    for (vtkIdType i = b; i < e; ++i)
+    {
+      points->GetPoint(i, &xyz[3 * i]);
+    }
+  });
+  std::vector<int32_t> order;
+  order.reserve(numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    const double* p = &xyz[3 * i];
+    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
+    {
+      order.push_back(static_cast<int32_t>(i));
+    }
+    else
+    {
+      ++skipped;
+    }
+  }
+  if (skipped > 0)
+  {
+    vtkWarningMacro("Skipped " << skipped << " point(s) with NaN or infinite coordinates.");
+  }
+  vtkSMPTools::Sort(order.begin(), order.end(), [&xyz](int32_t a, int32_t b) {
+    const double* pa = &xyz[3 * static_cast<size_t>(a)];
+    const double* pb = &xyz[3 * static_cast<size_t>(b)];
+    for (int i = 0; i < 3; ++i)
+    {
+      if (pa[i] != pb[i])
+      {
+        return pa[i] < pb[i];
+      }
+    }
+    return a < b;
+  });
+  localOf.assign(numberOfPoints, -1);
+  std::vector<int32_t> representative(numberOfPoints, -1);
+  for (size_t k = 0; k < order.size(); ++k)
+  {
+    const int32_t id = order[k];
+    if (k > 0)
+    {
+      const int32_t previous = order[k - 1];
+      if (std::equal(&xyz[3 * static_cast<size_t>(id)], &xyz[3 * static_cast<size_t>(id)] + 3,
+            &xyz[3 * static_cast<size_t>(previous)]))
+      {
+        representative[id] = representative[previous];
+        ++duplicates;
+        continue;
+      }
+    }
+    representative[id] = id;
+  }
+  // Local ids in input order.
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    if (representative[i] == i)
+    {
+      localOf[i] = static_cast<int32_t>(inputIds.size());
+      inputIds.push_back(i);
+    }
+  }
+  if (duplicates > 0)
+  {
+    vtkWarningMacro("Triangulated " << duplicates
+                                    << " exact duplicate point(s) once (Status 4 for the copies).");
+  }
+  r.N = static_cast<int32_t>(inputIds.size());
+  r.X.resize(3 * static_cast<size_t>(r.N));
+  for (int32_t i = 0; i < r.N; ++i)
+  {
+    std::copy_n(&xyz[3 * static_cast<size_t>(inputIds[i])], 3, &r.X[3 * static_cast<size_t>(i)]);
+  }
+  xyz.clear();
+  xyz.shrink_to_fit();
+  this->UpdateProgress(0.02);
+  if (r.N < 3)
+  {
+    vtkWarningMacro("Fewer than 3 distinct finite points (" << r.N
+                                                            << "): no surface can be made.");
+    return finish();
+  }
+
+  // Neighbours, spacing, uniformity.
+  r.K = std::min<int>(this->NumberOfNeighbors, r.N - 1);
+  r.FindNeighbors(0.02, 0.25);
+  if (r.Aborted)
+  {
+    return finish();
+  }
+  r.ComputeUniformity();
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    if (representative[i] >= 0)
+    {
+      uniformity->SetValue(i, r.Uniformity[localOf[representative[i]]]);
+    }
+  }
+  if (!(r.Spacing > 0))
+  {
+    vtkWarningMacro("The points have no measurable spacing: no surface can be made.");
+    return finish();
+  }
+
+  // Steps 1 to 7.
+  if (this->ProjectedCrossingTest && !r.ComputeNormals())
+  {
+    vtkWarningMacro("No normals could be estimated: step 1 uses the topological test only.");
+  }
+  if (!r.Progress(0.3))
+  {
+    return finish();
+  }
+  r.Step1GreedyEdges(0.3, 0.5);
+  if (r.Aborted)
+  {
+    return finish();
+  }
+  steps = "1";
+  r.Step2Umbrella(0.5, 0.6);
+  if (r.Aborted)
+  {
+    return finish();
+  }
+  steps += ", 2";
+  for (int32_t v = 0; v < r.N; ++v)
+  {
+    if (r.Status[v] == CORRECT || r.Status[v] == BOUNDARY)
+    {
+      ++ssrPoints;
+      if (std::isfinite(r.Uniformity[v]))
+      {
+        ssrUniformity += r.Uniformity[v];
+        ++ssrUniformityCount;
+      }
+    }
+  }
+  r.Step3Status();
+  if (!r.Progress(0.65))
+  {
+    return finish();
+  }
+  r.Step4Bridges();
+  if (!r.Progress(0.7))
+  {
+    return finish();
+  }
+  if (r.Bridges > 0)
+  {
+    steps += ", 3, 4";
+  }
+  r.Step6FillHoles(0.7, 0.97);
+  if (r.Aborted)
+  {
+    return finish();
+  }
+  if (r.Chords > 0)
+  {
+    steps += ", 5";
+  }
+  if (r.HolesFilled > 0)
+  {
+    steps += ", 6";
+  }
+  r.Step7Swaps();
+  if (r.Bridges + r.Chords > 0)
+  {
+    steps += ", 7";
+  }
+  r.OrientOutwards();
+
+  // Output triangles (input ids), stages, used points, areas.
+  const int64_t ids = r.Mesh.GetNumberOfTriangleIds();
+  r.Stage.resize(static_cast<size_t>(ids), 6);
+  vtkNew<vtkIdTypeArray> cellIds;
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->InsertNextValue(0);
+  for (int64_t t = 0; t < ids; ++t)
+  {
+    if (r.Mesh.IsTriangleRemoved(t))
+    {
+      continue;
+    }
+    const int32_t* tri = r.Mesh.GetTriangle(t);
+    for (int j = 0; j < 3; ++j)
+    {
+      connectivity.push_back(tri[j]);
+      cellIds->InsertNextValue(inputIds[tri[j]]);
+      used->SetValue(inputIds[tri[j]], 1);
+    }
+    offsets->InsertNextValue(cellIds->GetNumberOfValues());
+    stage->InsertNextValue(r.Stage[t]);
+    double u[3], v[3], n[3];
+    vtkMath::Subtract(r.P(tri[1]), r.P(tri[0]), u);
+    vtkMath::Subtract(r.P(tri[2]), r.P(tri[0]), v);
+    vtkMath::Cross(u, v, n);
+    const double area = 0.5 * vtkMath::Norm(n);
+    totalArea += area;
+    ssrArea += r.Stage[t] == 1 ? area : 0.0;
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, cellIds);
+  output->SetPolys(polys);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    if (representative[i] == i)
+    {
+      status->SetValue(i, r.Status[localOf[i]]);
+    }
+  }
+  if (connectivity.empty())
+  {
+    vtkWarningMacro("No triangle could be made from the " << r.N
+                                                          << " distinct points (collinear or too "
+                                                             "sparse points?).");
+  }
+  return finish();
+}
+
+//------------------------------------------------------------------------------------------------
+void vtkGreedySurfaceTriangulation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfNeighbors: " << this->NumberOfNeighbors << "\n";
+  os << indent << "ProjectedCrossingTest: " << this->ProjectedCrossingTest << "\n";
+  os << indent << "UniformityNeighbors: " << this->UniformityNeighbors << "\n";
+  os << indent << "UniformityAngle: " << this->UniformityAngle << "\n";
+  os << indent << "MaximumNormalDeviation: " << this->MaximumNormalDeviation << "\n";
+  os << indent << "BridgeIslands: " << this->BridgeIslands << "\n";
+  os << indent << "MaximumBridgeLength: " << this->MaximumBridgeLength << "\n";
+  os << indent << "MinimumBridgeSeparation: " << this->MinimumBridgeSeparation << "\n";
+  os << indent << "FillHoles: " << this->FillHoles << "\n";
+  os << indent << "MaximumHoleDiameter: " << this->MaximumHoleDiameter << "\n";
+  os << indent << "AuxiliaryPointDistance: " << this->AuxiliaryPointDistance << "\n";
+  os << indent << "MaximumHolePoints: " << this->MaximumHolePoints << "\n";
+  os << indent << "SwapBridgeEdges: " << this->SwapBridgeEdges << "\n";
+  os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";
+  os << indent << "NumberOfLostPoints: " << this->NumberOfLostPoints << "\n";
+  os << indent << "NumberOfIslands: " << this->NumberOfIslands << "\n";
+  os << indent << "NumberOfBridges: " << this->NumberOfBridges << "\n";
+  os << indent << "NumberOfHolesFilled: " << this->NumberOfHolesFilled << "\n";
+  os << indent << "NumberOfUnusedPoints: " << this->NumberOfUnusedPoints << "\n";
+  os << indent << "MeanSpacing: " << this->MeanSpacing << "\n";
+}

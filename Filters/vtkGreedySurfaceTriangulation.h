@@ -1,0 +1,320 @@
+/**
+ * @class   vtkGreedySurfaceTriangulation
+ * @brief   greedy surface triangulation of problem point clouds: well-sampled regions by a 3D
+ *          greedy triangulation, badly sampled regions repaired by bridges between islands and
+ *          projected hole triangulation.
+ *
+ * vtkGreedySurfaceTriangulation reconstructs a triangle mesh from the points of any vtkPointSet
+ * (its cells are ignored) after Emelyanov & Skala, "Surface Reconstruction from Problem Point
+ * Clouds" (paper 001). It is meant for scans whose well-sampled regions are separated by thin or
+ * empty ones: a fast greedy triangulation where the sampling is good, then repairs. The steps
+ * (paper section 3.2) and the choices made where the paper is silent:
+ *
+ * - Neighbours: the NumberOfNeighbors nearest neighbours of every point (vtkStaticPointLocator,
+ *   threaded with vtkSMPTools). Their distances give the cloud's mean spacing s (mean distance
+ *   to the nearest neighbour, field data `MeanSpacing`); every length parameter below is in
+ *   units of s, so the parameters do not depend on the cloud's scale. The local uniformity
+ *   factor m of section 3 (point data `LocalUniformity`): from the nearest neighbours in order,
+ *   a neighbour is admitted when its direction is at least UniformityAngle (a, paper 30 deg)
+ *   away from every direction admitted before, until UniformityNeighbors (N, paper 6) are
+ *   admitted; m = longest / shortest admitted distance (the formula lost from the paper's text:
+ *   its Table 1 reports m = 1.8 to 2.4 in well-sampled regions, which this ratio reproduces).
+ *   NaN when fewer than 2 directions are admitted among the neighbours.
+ * - Step 1 (section 3.2, Fig. 6): 3D greedy triangulation. Candidate edges join each point to
+ *   its neighbours; they are taken by increasing length and an edge is accepted when the
+ *   paper's purely topological test passes: no edge gets more than two triangles and no
+ *   tetrahedron appears. Triangles are the 3-cycles the accepted edges close; edges left without
+ *   triangles are dropped. Two guards are added. An edge that would close an exactly degenerate
+ *   triangle (collinear points, exact predicates) is refused. And, with ProjectedCrossingTest on
+ *   (the default), an edge is refused when it crosses an accepted edge in the tangent plane of
+ *   its end points (the mean of their unoriented normals from vtkPCANormalEstimation over the
+ *   same neighbours; exact 2D segment tests on the projected points): the 2D greedy
+ *   triangulation's compatibility rule, applied locally. The paper's test alone is meant for
+ *   scanner-regular clouds (its Table 1: m about 2); on random samples (m about 5) it leaves
+ *   only about 40 % of the points correctly connected after step 2, against 99 % with the
+ *   crossing test (5,000 random points on a sphere). The paper allows another step-1 method
+ *   for other clouds ("for other cases at the given step another algorithm can be used").
+ * - Step 2 (Fig. 7, 8): the umbrella test. A point is correct when its triangles form one
+ *   closed chain (one open chain at a border), as in the paper, and -- the smoothness condition
+ *   of section 3, which defines the well-sampled regions -- the normals of its triangles,
+ *   oriented along the chain, deviate by less than MaximumNormalDeviation (paper 90 deg)
+ *   pairwise, and the chain projected onto the plane normal to their mean winds once around the
+ *   point (each projected triangle positively oriented, decided exactly). Points failing the
+ *   test are lost; their triangles are removed and their neighbours tested again until every
+ *   remaining point passes. The remaining triangles are oriented consistently (pcs::SurfaceMesh,
+ *   the topology shared with the other growing filters) and their boundary loops extracted. The
+ *   boundary vector of a boundary point is the sum of the unit inward perpendiculars of its two
+ *   boundary edges, each in the plane of its triangle: a direction from the boundary into the
+ *   triangulated region. (The paper averages the vectors to the neighbours within a distance b;
+ *   for holes not much wider than b that mean mixes both sides of the hole and points anywhere:
+ *   on the 196 boundary loops of a clean 5,000-point sphere after step 2, all holes but two
+ *   one-triangle islands, the status test below called 17 (b = 3 spacings) to 45 (the fan of
+ *   triangles alone) of them islands and left 23 to 36 undecided; with the edge perpendiculars
+ *   it classifies all 196 correctly.)
+ * - Step 3 (Fig. 9): hole or island status of every loop. From a loop point P0, P1 is the loop
+ *   point farthest from it among those at least a third of the loop away (so that P1 is never a
+ *   neighbour of P0 on a thin loop); the dot products (P1 - P0) . I(P1) and (P0 - P1) . I(P0) are
+ *   both positive for a hole, both negative for an island. P0 runs over up to 16 points spread
+ *   along the loop and the test stops as soon as 3/4 or more of the dot products computed so far
+ *   have the same sign (the paper's rule). Without such a majority, the orientation of the loop
+ *   decides: it follows the boundary edges of consistently oriented triangles, so it turns
+ *   clockwise around a hole and counter-clockwise around an island seen along their normals; a
+ *   hole when the loop's vector area and the sum of the normals of the triangles on its edges
+ *   are within 60 degrees of opposite, otherwise an island (left open: the choice that never
+ *   closes an open surface by mistake).
+ * - Step 4 (Fig. 10, 11): bridges (when BridgeIslands is on). For every point of an island
+ *   loop, the shortest candidate bridge to each other loop within MaximumBridgeLength (paper: l;
+ *   spatial search with the locator) is made. Candidates are taken by increasing length and
+ *   admitted when (the conditions are lost from the paper's text; these are the choices): it
+ *   leaves both end points away from their regions (against both boundary vectors), neither end
+ *   point already has a bridge, it joins loops of different original boundaries (or the same
+ *   merged loop, closing a hole between two earlier bridges), it is not a mesh edge, and it
+ *   stays at least MinimumBridgeSeparation away from every admitted bridge (no crossing). The
+ *   connection order follows the paper's angle rule (auxiliary points at one spacing along each
+ *   boundary on both sides of A and B); it fixes the relative orientation of the two regions,
+ *   and one of them is reversed when needed (a bridge that would need a region bridged already
+ *   to flip is refused). Installing a bridge splices the loops at A and B (the paper's
+ *   duplicated points A', B'); afterwards every loop made of original loops is classified again
+ *   (step 3), a loop that contains a fragment of a hole is a hole.
+ * - Step 5 (Fig. 12, 13) and step 6: every hole whose diameter is at most MaximumHoleDiameter
+ *   (when FillHoles is on) is split recursively by chords until each piece projects
+ *   unambiguously onto its average plane (auxiliary points at AuxiliaryPointDistance, paper:
+ *   epsilon, along the boundary vectors must project outside), and each piece is triangulated
+ *   with the lost points inside it by the 2D greedy triangulation using 3D lengths
+ *   (pcsHoleFilling.h). A piece with more than MaximumHolePoints points is first split by a
+ *   diagonal. The lost points of a hole are those within its radius of its centroid, projecting
+ *   inside a piece and within half the piece's radius of its plane. A hole whose triangulation
+ *   would break the manifold (an edge with a third triangle, a vertex with two fans) is left open.
+ * - Step 7 (Fig. 14): the duplicated points are merged back (the mesh refers to the original
+ *   points throughout) and, when SwapBridgeEdges is on, every bridge or chord edge AB whose two
+ *   triangles ABC, BAD have |CD| < |AB| is replaced by CD, unless CD is an edge already or the
+ *   swap would fold the surface (a new triangle facing against the old ones).
+ * Finally every closed component is oriented outwards (positive volume).
+ *
+ * Output (vtkPolyData): all input points and their point data, the triangles (consistently
+ * oriented, an oriented 2-manifold with boundary), point data `Used` (1 for triangle vertices),
+ * `Status` (0: correct after step 2, 1: boundary of a correct region, 2: lost and left unused,
+ * 3: lost and used by hole filling, 4: not triangulated -- an exact duplicate of another point
+ * or non-finite), `LocalUniformity` (m); cell data `Stage` (1: step 1 triangle kept by step 2,
+ * 6: hole filling, 7: made by a step 7 swap); field data `NumberOfTriangles`,
+ * `NumberOfLostPoints` (after step 2), `NumberOfIslands`, `NumberOfHoles` (after step 4),
+ * `NumberOfBridges`, `NumberOfChords`, `NumberOfHolesFilled`, `NumberOfHolesLeftOpen`,
+ * `NumberOfSwaps`, `NumberOfUnusedPoints`, `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`,
+ * `MeanSpacing`, and the columns of the paper's Table 1: `NumberOfPoints`,
+ * `AverageUniformityInSSR` (mean m over the points of the well-sampled regions, i.e. correct or
+ * boundary after step 2), `SSRAreaPercent` (area of the step 1 triangles kept / output area),
+ * `SSRPointsPercent`, `StepsUsed` (a string such as "1, 2, 6"), `Seconds`, `PointsPerSecond`.
+ *
+ * Cost: the neighbour search and the uniformity factors are threaded; step 1 is a sort of about
+ * K N / 2 candidate edges and a linear pass; steps 2 to 4 are linear in the mesh and the loops;
+ * hole filling is quadratic in the size of each hole piece (bounded by MaximumHolePoints).
+ * Memory about 40 K + 300 bytes per point.
+ *
+ * @warning
+ * Fewer than 3 distinct finite points, or clouds where no triangle can be made (collinear
+ * points), give a warning and an output with the points and no triangles. Exact duplicates are
+ * triangulated once (Status 4 for the others); non-finite points are skipped, with a warning.
+ * Sharp edges (dihedral angles beyond MaximumNormalDeviation) fail the umbrella test and are
+ * rebuilt by hole filling, flatter than the original.
+ *
+ * @sa
+ * vtkIncrementalDelaunay3D vtkLocalOptimumGrowth vtkCDTAdvancingFront vtkReconstructionQuality
+ */
+
+#ifndef vtkGreedySurfaceTriangulation_h
+#define vtkGreedySurfaceTriangulation_h
+
+#include "vtkPointCloudSurfaceFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class VTKPOINTCLOUDSURFACEFILTERS_EXPORT vtkGreedySurfaceTriangulation : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkGreedySurfaceTriangulation* New();
+  vtkTypeMacro(vtkGreedySurfaceTriangulation, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Values of the point data array `Status`.
+  enum PointStatus
+  {
+    CORRECT = 0,
+    BOUNDARY = 1,
+    LOST = 2,
+    LOST_USED_BY_HOLE_FILLING = 3,
+    NOT_TRIANGULATED = 4
+  };
+
+  ///@{
+  /**
+   * Number of nearest neighbours of each point that give the candidate edges of step 1 and the
+   * uniformity factor. Default 12; range [3, 64].
+   */
+  vtkSetClampMacro(NumberOfNeighbors, int, 3, 64);
+  vtkGetMacro(NumberOfNeighbors, int);
+  ///@}
+
+  ///@{
+  /**
+   * Step 1: besides the paper's topological test, refuse an edge that crosses an accepted edge
+   * in the local tangent plane (see the class documentation). Default on; off gives the paper's
+   * purely topological test, meant for scanner-regular clouds.
+   */
+  vtkSetMacro(ProjectedCrossingTest, bool);
+  vtkGetMacro(ProjectedCrossingTest, bool);
+  vtkBooleanMacro(ProjectedCrossingTest, bool);
+  ///@}
+
+  ///@{
+  /**
+   * N of the local uniformity factor m (paper section 3): the number of admitted neighbour
+   * directions. Default 6 (the paper's); range [2, 64] (at most NumberOfNeighbors are examined).
+   */
+  vtkSetClampMacro(UniformityNeighbors, int, 2, 64);
+  vtkGetMacro(UniformityNeighbors, int);
+  ///@}
+
+  ///@{
+  /**
+   * a of the local uniformity factor m, in degrees: a neighbour direction is admitted when it
+   * is at least this far from every admitted one. Default 30 (the paper's); range [0, 90].
+   */
+  vtkSetClampMacro(UniformityAngle, double, 0.0, 90.0);
+  vtkGetMacro(UniformityAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Step 2: largest angle, in degrees, between the normals of two triangles around a point for
+   * the point to be correct (the paper's smoothness condition, section 3). Default 90; range
+   * [0, 180] (180 disables the smoothness test; the projected winding test remains).
+   */
+  vtkSetClampMacro(MaximumNormalDeviation, double, 0.0, 180.0);
+  vtkGetMacro(MaximumNormalDeviation, double);
+  ///@}
+
+  ///@{
+  /**
+   * Step 4: build bridges between islands. Default on.
+   */
+  vtkSetMacro(BridgeIslands, bool);
+  vtkGetMacro(BridgeIslands, bool);
+  vtkBooleanMacro(BridgeIslands, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Step 4: longest bridge (the paper's l), in units of the mean spacing. Default 10; range
+   * [0, VTK_DOUBLE_MAX].
+   */
+  vtkSetClampMacro(MaximumBridgeLength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumBridgeLength, double);
+  ///@}
+
+  ///@{
+  /**
+   * Step 4: smallest distance between two bridges, in units of the mean spacing (a closer
+   * bridge crosses or nearly touches an admitted one and is refused). Default 0.5; range
+   * [0, VTK_DOUBLE_MAX].
+   */
+  vtkSetClampMacro(MinimumBridgeSeparation, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MinimumBridgeSeparation, double);
+  ///@}
+
+  ///@{
+  /**
+   * Steps 5 and 6: triangulate the holes. Default on. Off stops after step 4 (with
+   * BridgeIslands off, after step 3: the well-sampled regions only).
+   */
+  vtkSetMacro(FillHoles, bool);
+  vtkGetMacro(FillHoles, bool);
+  vtkBooleanMacro(FillHoles, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Steps 5 and 6: holes wider than this (largest distance between two of their boundary
+   * points), in units of the mean spacing, are left open. Default VTK_DOUBLE_MAX (no limit);
+   * range [0, VTK_DOUBLE_MAX].
+   */
+  vtkSetClampMacro(MaximumHoleDiameter, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumHoleDiameter, double);
+  ///@}
+
+  ///@{
+  /**
+   * Step 5: distance epsilon of the auxiliary boundary points from their boundary points, in
+   * units of the mean spacing. Default 0.5; range [0, VTK_DOUBLE_MAX] (0 disables the auxiliary
+   * point test: only self-crossing projections are split).
+   */
+  vtkSetClampMacro(AuxiliaryPointDistance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(AuxiliaryPointDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Step 6: largest number of points (boundary and lost points) triangulated at once; larger
+   * hole pieces are split by a diagonal first (the greedy triangulation is quadratic). Default
+   * 256; range [16, 100000].
+   */
+  vtkSetClampMacro(MaximumHolePoints, int, 16, 100000);
+  vtkGetMacro(MaximumHolePoints, int);
+  ///@}
+
+  ///@{
+  /**
+   * Step 7: replace a bridge or chord edge AB by the shorter diagonal CD of its two triangles.
+   * Default on.
+   */
+  vtkSetMacro(SwapBridgeEdges, bool);
+  vtkGetMacro(SwapBridgeEdges, bool);
+  vtkBooleanMacro(SwapBridgeEdges, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Counts from the last execution (also in the output's field data).
+   */
+  vtkGetMacro(NumberOfTriangles, vtkIdType);
+  vtkGetMacro(NumberOfLostPoints, vtkIdType);
+  vtkGetMacro(NumberOfIslands, vtkIdType);
+  vtkGetMacro(NumberOfBridges, vtkIdType);
+  vtkGetMacro(NumberOfHolesFilled, vtkIdType);
+  vtkGetMacro(NumberOfUnusedPoints, vtkIdType);
+  vtkGetMacro(MeanSpacing, double);
+  ///@}
+
+protected:
+  vtkGreedySurfaceTriangulation();
+  ~vtkGreedySurfaceTriangulation() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int NumberOfNeighbors = 12;
+  bool ProjectedCrossingTest = true;
+  int UniformityNeighbors = 6;
+  double UniformityAngle = 30.0;
+  double MaximumNormalDeviation = 90.0;
+  bool BridgeIslands = true;
+  double MaximumBridgeLength = 10.0;
+  double MinimumBridgeSeparation = 0.5;
+  bool FillHoles = true;
+  double MaximumHoleDiameter = VTK_DOUBLE_MAX;
+  double AuxiliaryPointDistance = 0.5;
+  int MaximumHolePoints = 256;
+  bool SwapBridgeEdges = true;
+
+  vtkIdType NumberOfTriangles = 0;
+  vtkIdType NumberOfLostPoints = 0;
+  vtkIdType NumberOfIslands = 0;
+  vtkIdType NumberOfBridges = 0;
+  vtkIdType NumberOfHolesFilled = 0;
+  vtkIdType NumberOfUnusedPoints = 0;
+  double MeanSpacing = 0.0;
+
+private:
+  vtkGreedySurfaceTriangulation(const vtkGreedySurfaceTriangulation&) = delete;
+  void operator=(const vtkGreedySurfaceTriangulation&) = delete;
+};
+
+#endif

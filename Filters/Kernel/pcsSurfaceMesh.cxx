@@ -17,6 +17,8 @@ void SurfaceMesh::Initialize(int32_t numberOfVertices)
   this->Head.assign(numberOfVertices, -1);
   this->State.assign(numberOfVertices, 0);
   this->Fans.assign(numberOfVertices, 0);
+  this->FrontOut.assign(numberOfVertices, -1);
+  this->FrontIn.assign(numberOfVertices, -1);
   this->Blocks.clear();
   this->FreeBlocks.clear();
   this->NumberOfTriangles = 0;
@@ -32,11 +34,12 @@ size_t SurfaceMesh::GetMemorySize() const
 {
   return this->Triangles.capacity() * sizeof(int32_t) + this->Head.capacity() * sizeof(int32_t) +
     this->State.capacity() + this->Fans.capacity() + this->Blocks.capacity() * sizeof(Block) +
+    (this->FrontOut.capacity() + this->FrontIn.capacity()) * sizeof(int32_t) +
     this->FreeBlocks.capacity() * sizeof(int32_t);
 }
 
 //------------------------------------------------------------------------------------------------
-template<typename F>
+template <typename F>
 bool SurfaceMesh::ForEachWedge(int32_t v, F&& f) const
 {
   for (int32_t k = this->Head[v]; k >= 0; k = this->Blocks[k].Next)
@@ -191,32 +194,31 @@ void SurfaceMesh::UpdateVertex(int32_t v)
   int n = 0;
   int32_t* out = localOut;
   int32_t* in = localIn;
-  this->ForEachWedge(v,
-    [&](int32_t o, int32_t i, int32_t)
+  this->ForEachWedge(v, [&](int32_t o, int32_t i, int32_t) {
+    if (n == LocalCapacity && heapOut.empty())
     {
-      if (n == LocalCapacity && heapOut.empty())
-      {
-        heapOut.assign(localOut, localOut + n);
-        heapIn.assign(localIn, localIn + n);
-      }
-      if (n >= LocalCapacity)
-      {
-        heapOut.push_back(o);
-        heapIn.push_back(i);
-      }
-      else
-      {
-        localOut[n] = o;
-        localIn[n] = i;
-      }
-      ++n;
-      return false;
-    });
+      heapOut.assign(localOut, localOut + n);
+      heapIn.assign(localIn, localIn + n);
+    }
+    if (n >= LocalCapacity)
+    {
+      heapOut.push_back(o);
+      heapIn.push_back(i);
+    }
+    else
+    {
+      localOut[n] = o;
+      localIn[n] = i;
+    }
+    ++n;
+    return false;
+  });
   if (n > LocalCapacity)
   {
     out = heapOut.data();
     in = heapIn.data();
   }
+  this->FrontOut[v] = this->FrontIn[v] = -1;
   if (n == 0)
   {
     this->State[v] = static_cast<uint8_t>(VertexState::Free);
@@ -235,8 +237,7 @@ void SurfaceMesh::UpdateVertex(int32_t v)
   {
     std::fill(localVisited, localVisited + n, 0);
   }
-  auto successor = [&](int w)
-  {
+  auto successor = [&](int w) {
     for (int j = 0; j < n; ++j)
     {
       if (out[j] == in[w])
@@ -247,6 +248,7 @@ void SurfaceMesh::UpdateVertex(int32_t v)
     return -1;
   };
   int open = 0, closed = 0, seen = 0;
+  int32_t firstOut = -1, lastIn = -1;
   for (int w = 0; w < n; ++w)
   {
     bool first = true; // no wedge precedes w
@@ -263,10 +265,12 @@ void SurfaceMesh::UpdateVertex(int32_t v)
       continue;
     }
     ++open;
+    firstOut = out[w];
     for (int x = w; x >= 0 && !visited[x]; x = successor(x))
     {
       visited[x] = 1;
       ++seen;
+      lastIn = in[x];
     }
   }
   for (int w = 0; w < n && seen < n; ++w)
@@ -284,13 +288,16 @@ void SurfaceMesh::UpdateVertex(int32_t v)
   }
   this->State[v] = static_cast<uint8_t>(open > 0 ? VertexState::Boundary : VertexState::Interior);
   this->Fans[v] = static_cast<uint8_t>(std::min(open + closed, 255));
+  if (open == 1 && closed == 0)
+  {
+    this->FrontOut[v] = firstOut;
+    this->FrontIn[v] = lastIn;
+  }
 }
 
 //------------------------------------------------------------------------------------------------
-SurfaceMesh::Check SurfaceMesh::CanAddTriangle(int32_t a,
-  int32_t b,
-  int32_t c,
-  int32_t* vertex) const
+SurfaceMesh::Check SurfaceMesh::CanAddTriangle(
+  int32_t a, int32_t b, int32_t c, int32_t* vertex) const
 {
   const int32_t n = this->GetNumberOfVertices();
   if (a < 0 || b < 0 || c < 0 || a >= n || b >= n || c >= n)
@@ -314,17 +321,15 @@ SurfaceMesh::Check SurfaceMesh::CanAddTriangle(int32_t a,
       continue;
     }
     bool used = false, attached = false;
-    this->ForEachWedge(v,
-      [&](int32_t out, int32_t in, int32_t)
+    this->ForEachWedge(v, [&](int32_t out, int32_t in, int32_t) {
+      if (out == x || in == y)
       {
-        if (out == x || in == y)
-        {
-          used = true;
-          return true;
-        }
-        attached = attached || in == x || out == y;
-        return false;
-      });
+        used = true;
+        return true;
+      }
+      attached = attached || in == x || out == y;
+      return false;
+    });
     if (used)
     {
       return Check::HalfEdgeUsed;
@@ -419,9 +424,11 @@ int64_t SurfaceMesh::ReverseComponent(int64_t t)
   // Mirroring every triangle of the component swaps out and in of each of its wedges; fans and
   // states are unchanged, and no half-edge can collide (the component shares no edge with the
   // rest of the mesh).
+  std::vector<int32_t> touched;
   for (int64_t c : component)
   {
     int32_t* v = &this->Triangles[3 * c];
+    touched.insert(touched.end(), v, v + 3);
     std::swap(v[1], v[2]);
     for (int j = 0; j < 3; ++j)
     {
@@ -438,6 +445,13 @@ int64_t SurfaceMesh::ReverseComponent(int64_t t)
       }
     }
   }
+  // The cached front neighbours of the component's vertices change direction.
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  for (int32_t v : touched)
+  {
+    this->UpdateVertex(v);
+  }
   return static_cast<int64_t>(component.size());
 }
 
@@ -449,16 +463,14 @@ int64_t SurfaceMesh::FindTriangle(int32_t a, int32_t b) const
     return -1;
   }
   int64_t found = -1;
-  this->ForEachWedge(a,
-    [&](int32_t out, int32_t, int32_t tri)
+  this->ForEachWedge(a, [&](int32_t out, int32_t, int32_t tri) {
+    if (out == b)
     {
-      if (out == b)
-      {
-        found = tri;
-        return true;
-      }
-      return false;
-    });
+      found = tri;
+      return true;
+    }
+    return false;
+  });
   return found;
 }
 
@@ -469,16 +481,14 @@ int32_t SurfaceMesh::OppositeVertex(int32_t a, int32_t b) const
     return -1;
   }
   int32_t found = -1;
-  this->ForEachWedge(a,
-    [&](int32_t out, int32_t in, int32_t)
+  this->ForEachWedge(a, [&](int32_t out, int32_t in, int32_t) {
+    if (out == b)
     {
-      if (out == b)
-      {
-        found = in;
-        return true;
-      }
-      return false;
-    });
+      found = in;
+      return true;
+    }
+    return false;
+  });
   return found;
 }
 
@@ -499,15 +509,21 @@ bool SurfaceMesh::IsBoundaryHalfEdge(int32_t a, int32_t b) const
   {
     return false;
   }
+  if (this->FrontOut[a] >= 0) // a single open fan: its only front edge out of a
+  {
+    return this->FrontOut[a] == b;
+  }
+  if (this->State[a] != static_cast<uint8_t>(VertexState::Boundary))
+  {
+    return false;
+  }
   // a->b exists iff a has a wedge with out b; b->a exists iff a has a wedge with in b.
   bool forward = false, backward = false;
-  this->ForEachWedge(a,
-    [&](int32_t out, int32_t in, int32_t)
-    {
-      forward = forward || out == b;
-      backward = backward || in == b;
-      return false;
-    });
+  this->ForEachWedge(a, [&](int32_t out, int32_t in, int32_t) {
+    forward = forward || out == b;
+    backward = backward || in == b;
+    return false;
+  });
   return forward && !backward;
 }
 
@@ -527,20 +543,26 @@ int SurfaceMesh::GetBoundaryOutVertices(int32_t v, int32_t* out, int capacity) c
   {
     return 0;
   }
-  int count = 0;
-  this->ForEachWedge(v,
-    [&](int32_t x, int32_t, int32_t)
+  if (this->FrontOut[v] >= 0)
+  {
+    if (capacity > 0)
     {
-      if (!this->HasIn(v, x))
+      out[0] = this->FrontOut[v];
+    }
+    return 1;
+  }
+  int count = 0;
+  this->ForEachWedge(v, [&](int32_t x, int32_t, int32_t) {
+    if (!this->HasIn(v, x))
+    {
+      if (count < capacity)
       {
-        if (count < capacity)
-        {
-          out[count] = x;
-        }
-        ++count;
+        out[count] = x;
       }
-      return false;
-    });
+      ++count;
+    }
+    return false;
+  });
   return count;
 }
 
@@ -550,36 +572,40 @@ int SurfaceMesh::GetBoundaryInVertices(int32_t v, int32_t* in, int capacity) con
   {
     return 0;
   }
-  int count = 0;
-  this->ForEachWedge(v,
-    [&](int32_t, int32_t y, int32_t)
+  if (this->FrontIn[v] >= 0)
+  {
+    if (capacity > 0)
     {
-      if (!this->HasOut(v, y))
+      in[0] = this->FrontIn[v];
+    }
+    return 1;
+  }
+  int count = 0;
+  this->ForEachWedge(v, [&](int32_t, int32_t y, int32_t) {
+    if (!this->HasOut(v, y))
+    {
+      if (count < capacity)
       {
-        if (count < capacity)
-        {
-          in[count] = y;
-        }
-        ++count;
+        in[count] = y;
       }
-      return false;
-    });
+      ++count;
+    }
+    return false;
+  });
   return count;
 }
 
 int SurfaceMesh::GetVertexTriangles(int32_t v, int64_t* triangles, int capacity) const
 {
   int count = 0;
-  this->ForEachWedge(v,
-    [&](int32_t, int32_t, int32_t tri)
+  this->ForEachWedge(v, [&](int32_t, int32_t, int32_t tri) {
+    if (count < capacity)
     {
-      if (count < capacity)
-      {
-        triangles[count] = tri;
-      }
-      ++count;
-      return false;
-    });
+      triangles[count] = tri;
+    }
+    ++count;
+    return false;
+  });
   return count;
 }
 
@@ -590,6 +616,10 @@ int32_t SurfaceMesh::NextBoundaryVertex(int32_t a, int32_t b) const
   {
     return -1;
   }
+  if (this->FrontOut[b] >= 0)
+  {
+    return this->FrontOut[b];
+  }
   // At b, the triangle (a, b, y) is the wedge (out y, in a), the last of its fan
   // counter-clockwise; walk clockwise (to the wedge whose in is the current out) to the first.
   int32_t current = this->OppositeVertex(a, b);
@@ -597,16 +627,14 @@ int32_t SurfaceMesh::NextBoundaryVertex(int32_t a, int32_t b) const
   for (int step = 0; step <= degree; ++step)
   {
     int32_t previous = -1;
-    this->ForEachWedge(b,
-      [&](int32_t out, int32_t in, int32_t)
+    this->ForEachWedge(b, [&](int32_t out, int32_t in, int32_t) {
+      if (in == current)
       {
-        if (in == current)
-        {
-          previous = out;
-          return true;
-        }
-        return false;
-      });
+        previous = out;
+        return true;
+      }
+      return false;
+    });
     if (previous < 0)
     {
       return current;
@@ -622,33 +650,33 @@ int32_t SurfaceMesh::PreviousBoundaryVertex(int32_t a, int32_t b) const
   {
     return -1;
   }
+  if (this->FrontIn[a] >= 0)
+  {
+    return this->FrontIn[a];
+  }
   // At a, the triangle (a, b, y) is the wedge (out b, in y), the first of its fan; walk
   // counter-clockwise (to the wedge whose out is the current in) to the last.
   int32_t current = -1;
-  this->ForEachWedge(a,
-    [&](int32_t out, int32_t in, int32_t)
+  this->ForEachWedge(a, [&](int32_t out, int32_t in, int32_t) {
+    if (out == b)
     {
-      if (out == b)
-      {
-        current = in;
-        return true;
-      }
-      return false;
-    });
+      current = in;
+      return true;
+    }
+    return false;
+  });
   const int degree = this->GetVertexDegree(a);
   for (int step = 0; step <= degree; ++step)
   {
     int32_t next = -1;
-    this->ForEachWedge(a,
-      [&](int32_t out, int32_t in, int32_t)
+    this->ForEachWedge(a, [&](int32_t out, int32_t in, int32_t) {
+      if (out == current)
       {
-        if (out == current)
-        {
-          next = in;
-          return true;
-        }
-        return false;
-      });
+        next = in;
+        return true;
+      }
+      return false;
+    });
     if (next < 0)
     {
       return current;
@@ -670,20 +698,17 @@ void SurfaceMesh::GetBoundaryLoops(std::vector<std::vector<int32_t>>& loops) con
     {
       continue;
     }
-    this->ForEachWedge(v,
-      [&](int32_t x, int32_t, int32_t)
+    this->ForEachWedge(v, [&](int32_t x, int32_t, int32_t) {
+      if (!this->HasIn(v, x))
       {
-        if (!this->HasIn(v, x))
-        {
-          edges.emplace_back(v, x);
-        }
-        return false;
-      });
+        edges.emplace_back(v, x);
+      }
+      return false;
+    });
   }
   std::sort(edges.begin(), edges.end());
   std::vector<char> visited(edges.size(), 0);
-  auto index = [&edges](int32_t a, int32_t b)
-  {
+  auto index = [&edges](int32_t a, int32_t b) {
     const auto it = std::lower_bound(edges.begin(), edges.end(), std::make_pair(a, b));
     return it != edges.end() && it->first == a && it->second == b ? it - edges.begin()
                                                                   : static_cast<ptrdiff_t>(-1);
@@ -729,8 +754,7 @@ void SurfaceMesh::GetTriangles(std::vector<int32_t>& connectivity) const
 bool SurfaceMesh::CheckConsistency(std::string* why) const
 {
   std::ostringstream message;
-  auto fail = [&](const std::string& text)
-  {
+  auto fail = [&](const std::string& text) {
     if (why)
     {
       *why = text;
@@ -802,18 +826,16 @@ bool SurfaceMesh::CheckConsistency(std::string* why) const
     for (int64_t t : tris)
     {
       bool found = false;
-      this->ForEachWedge(v,
-        [&](int32_t out, int32_t in, int32_t tri)
+      this->ForEachWedge(v, [&](int32_t out, int32_t in, int32_t tri) {
+        if (tri != t)
         {
-          if (tri != t)
-          {
-            return false;
-          }
-          const int32_t* w = this->GetTriangle(t);
-          const int j = w[0] == v ? 0 : (w[1] == v ? 1 : 2);
-          found = out == w[(j + 1) % 3] && in == w[(j + 2) % 3];
-          return true;
-        });
+          return false;
+        }
+        const int32_t* w = this->GetTriangle(t);
+        const int j = w[0] == v ? 0 : (w[1] == v ? 1 : 2);
+        found = out == w[(j + 1) % 3] && in == w[(j + 2) % 3];
+        return true;
+      });
       if (!found)
       {
         message << "vertex " << v << ": wedge of triangle " << t << " missing or wrong";
@@ -823,8 +845,9 @@ bool SurfaceMesh::CheckConsistency(std::string* why) const
     // Fans: triangles at v linked when they share an edge {v, x}.
     std::vector<size_t> parent(tris.size());
     std::iota(parent.begin(), parent.end(), size_t(0));
-    std::function<size_t(size_t)> root = [&](size_t i)
-    { return parent[i] == i ? i : (parent[i] = root(parent[i])); };
+    std::function<size_t(size_t)> root = [&](size_t i) {
+      return parent[i] == i ? i : (parent[i] = root(parent[i]));
+    };
     bool open = false;
     for (size_t i = 0; i < tris.size(); ++i)
     {
@@ -860,6 +883,36 @@ bool SurfaceMesh::CheckConsistency(std::string* why) const
     }
     const VertexState expected =
       tris.empty() ? VertexState::Free : (open ? VertexState::Boundary : VertexState::Interior);
+    if (expected == VertexState::Boundary && fans == 1)
+    {
+      // The single fan's front edges, from the half-edge map.
+      int32_t out = -1, in = -1;
+      for (int64_t t : tris)
+      {
+        const int32_t* w = this->GetTriangle(t);
+        const int j = w[0] == v ? 0 : (w[1] == v ? 1 : 2);
+        if (!halfEdges.count(std::make_pair(w[(j + 1) % 3], v)))
+        {
+          out = w[(j + 1) % 3];
+        }
+        if (!halfEdges.count(std::make_pair(v, w[(j + 2) % 3])))
+        {
+          in = w[(j + 2) % 3];
+        }
+      }
+      if (out != this->FrontOut[v] || in != this->FrontIn[v])
+      {
+        message << "vertex " << v << ": cached front neighbours " << this->FrontIn[v] << "->v->"
+                << this->FrontOut[v] << ", actual " << in << "->v->" << out;
+        return fail(message.str());
+      }
+    }
+    else if (this->FrontOut[v] >= 0 || this->FrontIn[v] >= 0)
+    {
+      message << "vertex " << v
+              << ": front neighbours cached for a vertex without a single open fan";
+      return fail(message.str());
+    }
     if (expected != this->GetVertexState(v) || std::min(fans, 255) != this->GetNumberOfFans(v))
     {
       message << "vertex " << v << ": state " << int(this->GetVertexState(v)) << " fans "

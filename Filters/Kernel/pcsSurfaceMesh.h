@@ -35,8 +35,9 @@
 // structure of a vertex is a chain of its wedges (wedge W is followed, counter-clockwise, by the
 // wedge whose out is W's in), so every query is a scan of at most deg(v) wedges: O(1) for the
 // bounded degrees of surface meshes. A state byte and a fan count per vertex are cached.
-// Memory: 12 bytes per triangle, 128 bytes per used vertex (256 above degree 10), 2 bytes per
-// vertex.
+// Memory: 12 bytes per triangle, 128 bytes per used vertex (256 above degree 10), 14 bytes per
+// vertex (block index, state, fan count, and the two front neighbours of a single-fan vertex,
+// cached so that the front queries of the common case read no wedge list).
 #ifndef pcsSurfaceMesh_h
 #define pcsSurfaceMesh_h
 
@@ -202,7 +203,7 @@ private:
   };
 
   // Wedge scan over the blocks of v: f(out, in, tri) returns true to stop.
-  template<typename F>
+  template <typename F>
   bool ForEachWedge(int32_t v, F&& f) const;
   void AddWedge(int32_t v, int32_t out, int32_t in, int32_t tri);
   void RemoveWedge(int32_t v, int32_t tri);
@@ -215,6 +216,10 @@ private:
   std::vector<int32_t> Head; // first block of each vertex, -1 when free
   std::vector<uint8_t> State;
   std::vector<uint8_t> Fans;
+  // For a front vertex with a single fan: its front edges v->FrontOut[v] and FrontIn[v]->v
+  // (-1 otherwise), so that the front queries of the common case read no wedge list.
+  std::vector<int32_t> FrontOut;
+  std::vector<int32_t> FrontIn;
   std::vector<Block> Blocks;
   std::vector<int32_t> FreeBlocks;
   int64_t NumberOfTriangles = 0;

@@ -49,9 +49,8 @@ void ExpectConsistent(const SurfaceMesh& mesh, const std::string& where)
 }
 
 // Every consecutive pair of a loop is a front edge, and the loop's edges are all distinct.
-void ExpectValidLoops(const SurfaceMesh& mesh,
-  const std::vector<std::vector<int32_t>>& loops,
-  const std::string& where)
+void ExpectValidLoops(
+  const SurfaceMesh& mesh, const std::vector<std::vector<int32_t>>& loops, const std::string& where)
 {
   std::set<std::pair<int32_t, int32_t>> seen;
   size_t total = 0;
@@ -74,14 +73,8 @@ void ExpectValidLoops(const SurfaceMesh& mesh,
 void TestOctahedron()
 {
   // 0:+x 1:-x 2:+y 3:-y 4:+z 5:-z, faces oriented outwards.
-  const std::array<std::array<int32_t, 3>, 8> faces = { { { 0, 2, 4 },
-    { 2, 1, 4 },
-    { 1, 3, 4 },
-    { 3, 0, 4 },
-    { 2, 0, 5 },
-    { 1, 2, 5 },
-    { 3, 1, 5 },
-    { 0, 3, 5 } } };
+  const std::array<std::array<int32_t, 3>, 8> faces = { { { 0, 2, 4 }, { 2, 1, 4 }, { 1, 3, 4 },
+    { 3, 0, 4 }, { 2, 0, 5 }, { 1, 2, 5 }, { 3, 1, 5 }, { 0, 3, 5 } } };
   SurfaceMesh mesh(6);
   for (const auto& f : faces)
   {
@@ -229,16 +222,14 @@ void TestFanEarPinch()
 //------------------------------------------------------------------------------------------------
 // Grid patch of nx x ny cells (vertex (i, j) = j * (nx + 1) + i), two triangles per cell,
 // oriented counter-clockwise seen from +z; cells in `skip` are left out.
-std::vector<std::array<int32_t, 3>> GridTriangles(int nx,
-  int ny,
-  const std::set<std::pair<int, int>>& skip,
-  bool wrap)
+std::vector<std::array<int32_t, 3>> GridTriangles(
+  int nx, int ny, const std::set<std::pair<int, int>>& skip, bool wrap)
 {
   std::vector<std::array<int32_t, 3>> triangles;
   const int columns = wrap ? nx : nx + 1;
   const int rows = wrap ? ny : ny + 1;
-  auto id = [&](int i, int j)
-  { return static_cast<int32_t>((j % rows) * columns + (i % columns)); };
+  auto id = [&](
+              int i, int j) { return static_cast<int32_t>((j % rows) * columns + (i % columns)); };
   for (int j = 0; j < ny; ++j)
   {
     for (int i = 0; i < nx; ++i)

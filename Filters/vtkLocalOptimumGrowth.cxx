@@ -1660,6 +1660,11 @@ int vtkLocalOptimumGrowth::RequestData(vtkInformation*,
         vtkIdList* list = lists.Local();
         for (vtkIdType i = begin; i < end; ++i)
         {
+          // Abort: stop early (the growth is then skipped; the output has no triangles).
+          if ((i & 4095) == 0 && this->GetAbortExecute())
+          {
+            break;
+          }
           locator->FindClosestNPoints(k + 1, &x[3 * i], list);
           Id* out = &knn[static_cast<size_t>(i) * k];
           int count = 0;
@@ -1692,7 +1697,10 @@ int vtkLocalOptimumGrowth::RequestData(vtkInformation*,
   parameters.MaxHoleEdges = this->MaximumHoleEdges;
   parameters.Relax = this->RelaxConstraints;
   Grower grower(x.data(), n, knn, parameters, this);
-  grower.Run();
+  if (!this->GetAbortExecute())
+  {
+    grower.Run();
+  }
   this->UpdateProgress(0.9);
 
   // Output: triangles over the input point ids.

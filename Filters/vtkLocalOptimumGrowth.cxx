@@ -1,6 +1,9 @@
 #include "vtkLocalOptimumGrowth.h"
 
+#include "pcsCoordinateScaling.h"
+#include "pcsFieldData.h"
 #include "pcsGatherInput.h"
+#include "pcsHoleFilling.h"
 #include "pcsPredicates.h"
 #include "pcsProjectedTests.h"
 #include "pcsSpatialSort.h"
@@ -37,39 +40,8 @@
 vtkStandardNewMacro(vtkLocalOptimumGrowth);
 vtkCxxSetObjectMacro(vtkLocalOptimumGrowth, Locator, vtkStaticPointLocator);
 
-#include <cstdio>
-#include <cstdlib>
 namespace
 {
-struct DebugCounters
-{
-  long long c[16] = {};
-  ~DebugCounters()
-  {
-    if (std::getenv("PCS_LOG_DEBUG"))
-    {
-      const char* names[] = { "noAdmissible",
-        "collinear",
-        "kernelUsed",
-        "pinchOther",
-        "orient",
-        "wedge",
-        "cross",
-        "blocked",
-        "bridgeFail",
-        "reversed",
-        "expandFail",
-        "added",
-        "bridges",
-        "earKernel",
-        "earRatio",
-        "earNormal" };
-      for (int i = 0; i < 16; ++i)
-        std::fprintf(stderr, "%s=%lld ", names[i], c[i]);
-      std::fprintf(stderr, "\n");
-    }
-  }
-} Dbg;
 using Id = int32_t;
 namespace P = pcs::predicates;
 
@@ -136,10 +108,7 @@ struct Parameters
 class Grower
 {
 public:
-  Grower(const double* x,
-    Id n,
-    const std::vector<Id>& knn,
-    const Parameters& parameters,
+  Grower(const double* x, Id n, const std::vector<Id>& knn, const Parameters& parameters,
     vtkAlgorithm* algorithm)
     : X(x)
     , N(n)
@@ -162,9 +131,8 @@ public:
   pcs::SurfaceMesh Mesh;
   vtkIdType Seeds = 0;
   vtkIdType HolesClosed = 0;
+  vtkIdType Inserted = 0;
   bool Aborted = false;
-  int LastReason = 0;
-  int EarWhy = 0;
 
 private:
   struct Item
@@ -210,7 +178,9 @@ private:
   bool RetryDeferred();
   bool Changed(const Deferred& d) const;
   void FillHoles();
-  bool FillHole(std::vector<Id> loop);
+  void InsertOrphans();
+  bool InsertOrphan(Id q);
+  bool FillHole(const std::vector<Id>& frontLoop);
   void OrientComponents();
   void ReportProgress();
 
@@ -224,37 +194,15 @@ private:
   bool InWedge(Id apex, Id from, Id to, Id q);
   bool WedgesOk(Id x, Id y, Id z);
   bool CrossesFront(Id x, Id y, Id z);
+  bool FacesFrame(Id s, Id e) const;
   bool Blocked(Id x, Id y, Id z);
   bool ProjectedValid(Id x, Id y, Id z)
   {
     this->Extend(x);
     this->Extend(y);
     this->Extend(z);
-    if (P::Orient2D(this->P2(x), this->P2(y), this->P2(z)) <= 0)
-    {
-      Dbg.c[4]++;
-      LastReason = 4;
-      return false;
-    }
-    if (!this->WedgesOk(x, y, z))
-    {
-      Dbg.c[5]++;
-      LastReason = 5;
-      return false;
-    }
-    if (this->CrossesFront(x, y, z))
-    {
-      Dbg.c[6]++;
-      LastReason = 6;
-      return false;
-    }
-    if (this->Blocked(x, y, z))
-    {
-      Dbg.c[7]++;
-      LastReason = 7;
-      return false;
-    }
-    return true;
+    return P::Orient2D(this->P2(x), this->P2(y), this->P2(z)) > 0 && this->WedgesOk(x, y, z) &&
+      !this->CrossesFront(x, y, z) && !this->Blocked(x, y, z);
   }
   // Ear (v, u, w) closing the front angle u->v->w: the smallest cosine of the angles between its
   // normal and its neighbours' (constraint 1), or -2 when invalid.
@@ -294,6 +242,7 @@ private:
   uint64_t Clock = 1;
   std::vector<int32_t> Labels;      // per triangle id: seed label
   std::vector<int32_t> LabelParent; // union-find over the seed labels
+  std::vector<char> LabelReversed;  // per root label: its part was reversed once already
   std::vector<char> SeedFailed;
   std::vector<Id> SeedOrder;
   size_t SeedCursor = 0;
@@ -311,6 +260,7 @@ private:
   std::vector<Id> Centers;  // vertices whose K-neighbourhood is in Near
   std::vector<Id> Blockers; // points that no new triangle may cover
   std::vector<std::pair<Id, Id>> FrontEdges;
+  bool FrontEdgesReady = false; // FrontEdges is collected when first needed
   std::vector<Id> Admissible;
 };
 
@@ -339,9 +289,8 @@ void Grower::SetFrame(const double* origin, const double* u, const double* w)
   if (!(length > 0.0))
   {
     // u parallel to w: any perpendicular axis.
-    const double axis[3] = {
-      std::fabs(this->W[0]) < 0.9 ? 1.0 : 0.0, std::fabs(this->W[0]) < 0.9 ? 0.0 : 1.0, 0.0
-    };
+    const double axis[3] = { std::fabs(this->W[0]) < 0.9 ? 1.0 : 0.0,
+      std::fabs(this->W[0]) < 0.9 ? 0.0 : 1.0, 0.0 };
     Cross(this->W, axis, this->U);
     length = std::sqrt(Dot(this->U, this->U));
   }
@@ -361,8 +310,7 @@ void Grower::CollectVertices(const Id* centers, int count)
   }
   this->Near.clear();
   this->Centers.assign(centers, centers + count);
-  auto add = [this](Id v)
-  {
+  auto add = [this](Id v) {
     if (v >= 0 && this->Mark[v] != this->MarkStamp)
     {
       this->Mark[v] = this->MarkStamp;
@@ -386,10 +334,10 @@ void Grower::CollectVertices(const Id* centers, int count)
   }
 }
 
-// The front edges at the front vertices of Near, facing the frame's side (their triangle's
-// normal makes an acute angle with W: a sheet facing the other way is another surface).
+// The front edges at the front vertices of Near.
 void Grower::CollectFrontEdges()
 {
+  this->FrontEdgesReady = true;
   this->FrontEdges.clear();
   for (Id v : this->Near)
   {
@@ -404,15 +352,7 @@ void Grower::AddFrontEdges(Id v)
     return;
   }
   Id buffer[16];
-  auto add = [this](Id s, Id e)
-  {
-    const Id o = this->Mesh.OppositeVertex(s, e);
-    double n[3];
-    if (o >= 0 && UnitNormal(this->P3(s), this->P3(e), this->P3(o), n) && Dot(n, this->W) > 0.0)
-    {
-      this->FrontEdges.emplace_back(s, e);
-    }
-  };
+  auto add = [this](Id s, Id e) { this->FrontEdges.emplace_back(s, e); };
   const int outs = std::min(this->Mesh.GetBoundaryOutVertices(v, buffer, 16), 16);
   for (int i = 0; i < outs; ++i)
   {
@@ -450,7 +390,10 @@ void Grower::Extend(Id v)
     {
       this->Near.push_back(q);
       this->Blockers.push_back(q);
-      this->AddFrontEdges(q);
+      if (this->FrontEdgesReady)
+      {
+        this->AddFrontEdges(q);
+      }
     }
   }
 }
@@ -545,6 +488,10 @@ bool SegmentsMeet(const double* p, const double* q, const double* r, const doubl
 // neighbourhood that does not share an end point with it.
 bool Grower::CrossesFront(Id x, Id y, Id z)
 {
+  if (!this->FrontEdgesReady)
+  {
+    this->CollectFrontEdges();
+  }
   const Id t[3] = { x, y, z };
   for (int i = 0; i < 3; ++i)
   {
@@ -561,13 +508,23 @@ bool Grower::CrossesFront(Id x, Id y, Id z)
       {
         continue;
       }
-      if (SegmentsMeet(ps, pe, this->P2(f.first), this->P2(f.second)))
+      if (SegmentsMeet(ps, pe, this->P2(f.first), this->P2(f.second)) &&
+        this->FacesFrame(f.first, f.second))
       {
         return true;
       }
     }
   }
   return false;
+}
+
+// The triangle of the front edge s->e faces the frame's side (its normal makes an acute angle
+// with W); a sheet facing the other way is another surface and does not conflict.
+bool Grower::FacesFrame(Id s, Id e) const
+{
+  const Id o = this->Mesh.OppositeVertex(s, e);
+  double n[3];
+  return o >= 0 && UnitNormal(this->P3(s), this->P3(e), this->P3(o), n) && Dot(n, this->W) > 0.0;
 }
 
 // A blocking point lies in the closed projected triangle (x, y, z) (counter-clockwise).
@@ -582,8 +539,7 @@ bool Grower::Blocked(Id x, Id y, Id z)
   // do not block.
   const double level = (this->Height(x) + this->Height(y) + this->Height(z)) / 3.0;
   const double reach = std::sqrt(std::max({ Distance2(this->P3(x), this->P3(y)),
-    Distance2(this->P3(y), this->P3(z)),
-    Distance2(this->P3(z), this->P3(x)) }));
+    Distance2(this->P3(y), this->P3(z)), Distance2(this->P3(z), this->P3(x)) }));
   for (Id q : this->Blockers)
   {
     if (q == x || q == y || q == z)
@@ -653,12 +609,14 @@ void Grower::Register(int64_t t)
     else if (other != label)
     {
       this->LabelParent[other] = label;
+      this->LabelReversed[label] = this->LabelReversed[label] | this->LabelReversed[other];
     }
   }
   if (label < 0)
   {
     label = static_cast<int32_t>(this->LabelParent.size());
     this->LabelParent.push_back(label);
+    this->LabelReversed.push_back(0);
   }
   if (static_cast<int64_t>(this->Labels.size()) <= t)
   {
@@ -681,32 +639,10 @@ void Grower::Register(int64_t t)
 // tests. Returns the smallest cosine of constraint 1, or -2 when the ear is not valid.
 double Grower::EarScore(Id v, Id u, Id w, double cosNormal, double minimumRatio)
 {
-  {
-    Id off = -1;
-    auto ck = this->Mesh.CanAddTriangle(v, u, w, &off);
-    if (ck != pcs::SurfaceMesh::Check::Ok)
-    {
-      Dbg.c[13]++;
-      EarWhy = 10 + int(ck);
-      if (std::getenv("PCS_LOG_DEBUG2"))
-        std::fprintf(stderr,
-          "ear (%d %d %d) kernel %d off %d fans %d %d %d\n",
-          v,
-          u,
-          w,
-          int(ck),
-          off,
-          Mesh.GetNumberOfFans(v),
-          Mesh.GetNumberOfFans(u),
-          Mesh.GetNumberOfFans(w));
-      return -2.0;
-    }
-  }
-  if (pcs::projected::Collinear(this->P3(v), this->P3(u), this->P3(w)) ||
+  if (this->Mesh.CanAddTriangle(v, u, w) != pcs::SurfaceMesh::Check::Ok ||
+    pcs::projected::Collinear(this->P3(v), this->P3(u), this->P3(w)) ||
     !this->EdgeRatiosOk(v, u, w, minimumRatio))
   {
-    Dbg.c[14]++;
-    EarWhy = 20;
     return -2.0;
   }
   double n[3];
@@ -731,17 +667,8 @@ double Grower::EarScore(Id v, Id u, Id w, double cosNormal, double minimumRatio)
       return -2.0;
     }
     worst = std::min(worst, Dot(n, m));
-    if (std::getenv("PCS_LOG_DEBUG2") && Dot(n, m) < this->Par.CosNormal)
-      std::fprintf(
-        stderr, "ear (%d %d %d) vs tri (%d %d %d) cos %g\n", v, u, w, s, e, o, Dot(n, m));
   }
-  if (worst < cosNormal)
-  {
-    Dbg.c[15]++;
-    EarWhy = worst < 0 ? 31 : 30;
-    return -2.0;
-  }
-  if (!this->ProjectedValid(v, u, w))
+  if (worst < cosNormal || !this->ProjectedValid(v, u, w))
   {
     return -2.0;
   }
@@ -777,7 +704,7 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
       this->Near.push_back(v);
     }
   }
-  this->CollectFrontEdges();
+  this->FrontEdgesReady = false;
 
   // Candidates on the far side of the edge, on this sheet (constraint 1), not interior; the
   // admissible ones also meet constraints 2 and 3.
@@ -801,6 +728,25 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
     {
       continue;
     }
+    // Constraint 2 (an ear has no lower bound: it closes an angle of the front) and
+    // constraint 3: the angles at a and b.
+    double ac[3], bc[3];
+    Sub(this->P3(c), this->P3(a), ac);
+    Sub(this->P3(c), this->P3(b), bc);
+    const double la2 = Dot(ac, ac), lb2 = Dot(bc, bc);
+    const bool ear = c == n || c == p;
+    if ((!ear && (la2 < minimum * minimum * d2 || lb2 < minimum * minimum * d2)) ||
+      la2 > maximum * maximum * d2 || lb2 > maximum * maximum * d2)
+    {
+      continue;
+    }
+    const double dotA = Dot(ab, ac), dotB = -Dot(ab, bc);
+    if (dotA < this->Par.CosBase * dab * std::sqrt(la2) ||
+      dotB < this->Par.CosBase * dab * std::sqrt(lb2))
+    {
+      continue;
+    }
+    // Constraint 1: the angle between the normals of (b, a, c) and (a, b, y).
     double nt[3];
     if (!UnitNormal(this->P3(b), this->P3(a), this->P3(c), nt))
     {
@@ -817,27 +763,8 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
         continue;
       }
     }
-    double ac[3], bc[3];
-    Sub(this->P3(c), this->P3(a), ac);
-    Sub(this->P3(c), this->P3(b), bc);
-    const double la2 = Dot(ac, ac), lb2 = Dot(bc, bc);
-    const bool ear = c == n || c == p;
-    if ((!ear && (la2 < minimum * minimum * d2 || lb2 < minimum * minimum * d2)) ||
-      la2 > maximum * maximum * d2 || lb2 > maximum * maximum * d2)
-    {
-      continue;
-    }
-    // Constraint 3: angles at a and at b. An ear is not limited at the vertex it shares with
-    // the edge (its angle there is the front's angle, which the ear closes).
-    if ((Dot(ab, ac) < this->Par.CosBase * dab * std::sqrt(la2)) ||
-      (-Dot(ab, bc) < this->Par.CosBase * dab * std::sqrt(lb2)))
-    {
-      continue;
-    }
     this->Admissible.push_back(c);
   }
-  if (this->Admissible.empty())
-    Dbg.c[0]++;
 
   while (!this->Admissible.empty())
   {
@@ -869,7 +796,6 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
 
     if (pcs::projected::Collinear(this->P3(a), this->P3(b), this->P3(c)))
     {
-      Dbg.c[1]++;
       continue;
     }
     Id offending = -1;
@@ -886,7 +812,6 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
     if (check != pcs::SurfaceMesh::Check::NonManifoldVertex || offending != c ||
       this->Mesh.GetNumberOfFans(c) != 1)
     {
-      Dbg.c[check == pcs::SurfaceMesh::Check::HalfEdgeUsed ? 2 : 3]++;
       continue;
     }
     // c is a front vertex away from a and b: a bridge between two parts of the front.
@@ -908,10 +833,13 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
       // and expand this edge again; within one part this is a fold, refused.
       const int64_t tc = this->Mesh.FindTriangle(c, nc);
       const int64_t tab = this->Mesh.FindTriangle(a, b);
-      if (mayReverse && this->TriangleLabel(tc) != this->TriangleLabel(tab))
+      const int32_t labelC = this->TriangleLabel(tc);
+      if (mayReverse && labelC != this->TriangleLabel(tab) && !this->LabelReversed[labelC])
       {
+        // Once per part: two parts that face each other for good (the two sides of a thin
+        // feature) would otherwise reverse each other in turn.
+        this->LabelReversed[labelC] = 1;
         this->Mesh.ReverseComponent(tc);
-        Dbg.c[9]++;
         // The reversed part's front edges now run the other way: queue them again lazily.
         const int32_t* tri = this->Mesh.GetTriangle(tc);
         for (int j = 0; j < 3; ++j)
@@ -931,71 +859,17 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
     {
       continue;
     }
-    this->CollectFrontEdges();
+    this->FrontEdgesReady = false;
     // The pinch at c is removed by the ear on either side: (c, a, nc) or (c, pc, b).
     const double scoreA = this->EarScore(c, a, nc, this->Par.CosNormal, 0.5 * this->Par.MinRatio);
-    LastReason = 0;
-    EarWhy = 0;
-    const double scoreA0 = this->EarScore(c, a, nc, this->Par.CosNormal, 0.5 * this->Par.MinRatio);
-    const int whyA = EarWhy ? EarWhy : LastReason;
-    EarWhy = 0;
-    LastReason = 0;
-    (void)scoreA0;
     const double scoreB = this->EarScore(c, pc, b, this->Par.CosNormal, 0.5 * this->Par.MinRatio);
-    const int whyB = EarWhy ? EarWhy : LastReason;
-    if (std::getenv("PCS_LOG_DEBUG3"))
-      std::fprintf(stderr, "BR %d %d\n", whyA, whyB);
-    static int dumped = 0;
-    if (std::getenv("PCS_LOG_DUMP") && whyA == 5 && whyB == 5 &&
-      dumped++ == std::atoi(std::getenv("PCS_LOG_DUMP")))
-    {
-      FILE* f = std::fopen("/tmp/log/dump.txt", "w");
-      std::fprintf(f, "K %d %d %d %d %d %d %d\n", a, b, c, pc, nc, n, p);
-      for (Id v : this->Near)
-      {
-        int64_t tr[64];
-        int m = Mesh.GetVertexTriangles(v, tr, 64);
-        for (int i = 0; i < m; ++i)
-        {
-          const int32_t* t = Mesh.GetTriangle(tr[i]);
-          std::fprintf(f, "T %d %d %d\n", t[0], t[1], t[2]);
-        }
-      }
-      for (Id v = 0; v < N; ++v)
-        if (ProjectionStamp[v] == Frame)
-          std::fprintf(
-            f, "P %d %.9g %.9g %d\n", v, P2(v)[0], P2(v)[1], int(Mesh.GetVertexState(v)));
-      for (auto& e : FrontEdges)
-        std::fprintf(f, "F %d %d\n", e.first, e.second);
-      std::fclose(f);
-    }
-    if (std::getenv("PCS_LOG_DEBUG2"))
-    {
-      std::fprintf(stderr,
-        "bridge a=%d b=%d c=%d pc=%d nc=%d n=%d p=%d  A=%g B=%g reasonB=%d\n",
-        a,
-        b,
-        c,
-        pc,
-        nc,
-        n,
-        p,
-        scoreA,
-        scoreB,
-        LastReason);
-      for (Id v : { a, b, c, pc, nc, n, p })
-        if (v >= 0)
-          std::fprintf(stderr, "   %d: %g %g h=%g\n", v, P2(v)[0], P2(v)[1], Height(v));
-    }
     if (std::max(scoreA, scoreB) < -1.0)
     {
       this->Mesh.RemoveTriangle(t1);
-      this->CollectFrontEdges();
-      Dbg.c[8]++;
+      this->FrontEdgesReady = false;
       continue;
     }
     this->Register(t1);
-    Dbg.c[12]++;
     if (scoreA >= scoreB)
     {
       this->Commit(c, a, nc);
@@ -1102,14 +976,11 @@ bool Grower::PlantSeed()
     this->SeedOrder.resize(this->N);
     std::iota(this->SeedOrder.begin(), this->SeedOrder.end(), 0);
     const double* x = this->X;
-    vtkSMPTools::Sort(this->SeedOrder.begin(),
-      this->SeedOrder.end(),
-      [x](Id i, Id j)
-      {
-        const double* p = x + 3 * static_cast<size_t>(i);
-        const double* q = x + 3 * static_cast<size_t>(j);
-        return p[0] != q[0] ? p[0] > q[0] : (p[1] != q[1] ? p[1] > q[1] : p[2] > q[2]);
-      });
+    vtkSMPTools::Sort(this->SeedOrder.begin(), this->SeedOrder.end(), [x](Id i, Id j) {
+      const double* p = x + 3 * static_cast<size_t>(i);
+      const double* q = x + 3 * static_cast<size_t>(j);
+      return p[0] != q[0] ? p[0] > q[0] : (p[1] != q[1] ? p[1] > q[1] : p[2] > q[2]);
+    });
   }
   for (; this->SeedCursor < this->SeedOrder.size(); ++this->SeedCursor)
   {
@@ -1161,7 +1032,6 @@ void Grower::ProcessQueue()
     this->ReportProgress();
     if (!this->Expand(a, b, item.Level))
     {
-      Dbg.c[10]++;
       this->DeferredEdges.push_back({ a, b, this->Clock, item.Level });
     }
   }
@@ -1236,75 +1106,94 @@ bool Grower::RetryDeferred()
 }
 
 //------------------------------------------------------------------------------------------------
-bool Grower::FillHole(std::vector<Id> loop)
+// A boundary loop closed with the shared hole triangulation kernel (pcs::holes::HoleFiller,
+// paper 001 steps 5-6: projection on the loop's average plane, chord splitting until the
+// projection is unambiguous, 2D greedy triangulation with the unused points inside). The
+// triangles are kept only when they all fit the mesh (no edge with a third triangle, no vertex
+// with a second fan) and face the side of the triangles around the loop.
+bool Grower::FillHole(const std::vector<Id>& frontLoop)
 {
-  while (loop.size() >= 3)
+  const size_t m = frontLoop.size();
+  // The hole's triangles own the twins of the front edges: the loop is walked backwards.
+  std::vector<Id> loop(frontLoop.rbegin(), frontLoop.rend());
+  std::vector<double> boundaryVectors(3 * m, 0.0);
+  double normal[3] = { 0, 0, 0 };
+  double perimeter = 0.0;
+  for (size_t i = 0; i < m; ++i)
   {
-    const size_t m = loop.size();
-    // Frame: the mean normal of the triangles along the loop.
-    double normal[3] = { 0, 0, 0 };
-    double longest = 0.0;
-    for (size_t i = 0; i < m; ++i)
-    {
-      const Id s = loop[i], e = loop[(i + 1) % m];
-      const Id o = this->Mesh.OppositeVertex(s, e);
-      double t[3];
-      if (o >= 0 && UnitNormal(this->P3(s), this->P3(e), this->P3(o), t))
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          normal[k] += t[k];
-        }
-      }
-      longest = std::max(longest, Distance2(this->P3(s), this->P3(e)));
-    }
-    longest = std::sqrt(longest);
-    if (!(Dot(normal, normal) > 0.0))
+    const Id s = frontLoop[i], e = frontLoop[(i + 1) % m];
+    const Id o = this->Mesh.OppositeVertex(s, e);
+    double t[3];
+    if (o < 0 || !UnitNormal(this->P3(s), this->P3(e), this->P3(o), t))
     {
       return false;
     }
-    double u[3];
-    Sub(this->P3(loop[1]), this->P3(loop[0]), u);
-    this->SetFrame(this->P3(loop[0]), u, normal);
-    this->CollectVertices(loop.data(), static_cast<int>(m));
-    this->CollectFrontEdges();
-    this->Blockers = this->Near;
-    // The valid ear of smallest angle.
-    size_t best = m;
-    double bestCos = -2.0;
-    for (size_t i = 0; i < m; ++i)
+    for (int k = 0; k < 3; ++k)
     {
-      const Id v = loop[i], u0 = loop[(i + m - 1) % m], w = loop[(i + 1) % m];
-      EarWhy = 0;
-      LastReason = 0;
-      if (this->EarScore(v, u0, w, std::min(this->Par.CosNormal, 0.0), 0.0) < -1.0)
+      normal[k] += t[k];
+    }
+    perimeter += std::sqrt(Distance2(this->P3(s), this->P3(e)));
+    // Towards the mesh: from both end points of the edge to the third vertex of its triangle.
+    for (Id v : { s, e })
+    {
+      const size_t j = (m - 1) - static_cast<size_t>(v == s ? i : (i + 1) % m);
+      for (int k = 0; k < 3; ++k)
       {
-        if (std::getenv("PCS_LOG_DEBUG5"))
-          std::fprintf(
-            stderr, "hole m=%zu ear (%d %d %d) why %d %d\n", m, v, u0, w, EarWhy, LastReason);
-        continue;
-      }
-      double e1[3], e2[3];
-      Sub(this->P3(u0), this->P3(v), e1);
-      Sub(this->P3(w), this->P3(v), e2);
-      const double c = Dot(e1, e2) / std::sqrt(Dot(e1, e1) * Dot(e2, e2));
-      if (c > bestCos)
-      {
-        bestCos = c;
-        best = i;
+        boundaryVectors[3 * j + k] += this->P3(o)[k] - this->P3(v)[k];
       }
     }
-    if (best == m)
+  }
+  std::vector<Id> candidates;
+  const Id* const centers = frontLoop.data();
+  this->CollectVertices(centers, static_cast<int>(m));
+  for (Id q : this->Near)
+  {
+    if (this->Mesh.IsFree(q))
     {
-      return false;
+      candidates.push_back(q);
     }
-    const Id v = loop[best];
-    this->Commit(v, loop[(best + m - 1) % m], loop[(best + 1) % m]);
-    loop.erase(loop.begin() + static_cast<std::ptrdiff_t>(best));
-    if (loop.size() == 2)
+  }
+  pcs::holes::HoleFiller filler;
+  filler.AuxiliaryDistance = 0.05 * perimeter / static_cast<double>(m);
+  filler.EdgeExists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
+  pcs::holes::FillResult result;
+  if (!filler.Fill(this->X, loop, boundaryVectors, candidates, result) || !result.Complete)
+  {
+    return false;
+  }
+  std::vector<int64_t> added;
+  bool ok = true;
+  for (size_t t = 0; ok && t + 2 < result.Triangles.size(); t += 3)
+  {
+    const Id* v = &result.Triangles[t];
+    ok = !pcs::projected::Collinear(this->P3(v[0]), this->P3(v[1]), this->P3(v[2]));
+    const int64_t id = ok ? this->Mesh.AddTriangle(v[0], v[1], v[2]) : -1;
+    ok = ok && id >= 0;
+    if (ok)
     {
-      break;
+      added.push_back(id);
     }
+  }
+  for (size_t t = 0; ok && t < result.Triangles.size(); ++t)
+  {
+    ok = this->Mesh.GetNumberOfFans(result.Triangles[t]) == 1;
+  }
+  if (!ok)
+  {
+    for (auto it = added.rbegin(); it != added.rend(); ++it)
+    {
+      this->Mesh.RemoveTriangle(*it);
+    }
+    return false;
+  }
+  for (Id q : result.UsedPoints)
+  {
+    ++this->UsedVertices;
+    (void)q;
+  }
+  for (int64_t id : added)
+  {
+    this->Register(id);
   }
   return true;
 }
@@ -1332,6 +1221,163 @@ void Grower::FillHoles()
     if (this->FillHole(loop))
     {
       ++this->HolesClosed;
+    }
+  }
+}
+
+// A free point that the growth left under a triangle (it lies within the triangle's projection
+// onto its plane, typically very close to an edge, where the triangle across that edge could
+// only have been a needle) is inserted by splitting: the triangle into three, or, when the point
+// is close to an edge shared with another triangle, the two triangles into four. Points farther
+// from the triangle's plane than its longest edge are not on the surface and stay unused.
+bool Grower::InsertOrphan(Id q)
+{
+  // The nearest triangle of the neighbourhood: its plane's distance when q projects inside it
+  // (decided exactly on the projection), else the distance to its nearest edge.
+  int64_t best = -1;
+  int bestEdge = -1;
+  bool bestInside = false;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  std::vector<int64_t> seen;
+  int64_t around[64];
+  const Id* nb = this->Neighbors(q);
+  const double* x = this->P3(q);
+  for (int j = 0; j < this->K && nb[j] >= 0; ++j)
+  {
+    const int count = std::min(this->Mesh.GetVertexTriangles(nb[j], around, 64), 64);
+    for (int i = 0; i < count; ++i)
+    {
+      const int64_t t = around[i];
+      if (std::find(seen.begin(), seen.end(), t) != seen.end())
+      {
+        continue;
+      }
+      seen.push_back(t);
+      const int32_t* v = this->Mesh.GetTriangle(t);
+      double normal[3], u[3];
+      if (!UnitNormal(this->P3(v[0]), this->P3(v[1]), this->P3(v[2]), normal))
+      {
+        continue;
+      }
+      Sub(this->P3(v[1]), this->P3(v[0]), u);
+      this->SetFrame(this->P3(v[0]), u, normal);
+      const double* pq = this->P2(q);
+      int outside = -1; // an edge q is beyond
+      for (int e = 0; e < 3 && outside < 0; ++e)
+      {
+        if (P::Orient2D(this->P2(v[e]), this->P2(v[(e + 1) % 3]), pq) <= 0)
+        {
+          outside = e;
+        }
+      }
+      double distance = std::fabs(this->Height(q));
+      int edge = -1;
+      if (outside >= 0)
+      {
+        distance = std::numeric_limits<double>::infinity();
+        for (int e = 0; e < 3; ++e)
+        {
+          const double* s0 = this->P3(v[e]);
+          const double* s1 = this->P3(v[(e + 1) % 3]);
+          double d[3], w[3];
+          Sub(s1, s0, d);
+          Sub(x, s0, w);
+          const double f = std::min(1.0, std::max(0.0, Dot(w, d) / Dot(d, d)));
+          const double c[3] = { s0[0] + f * d[0], s0[1] + f * d[1], s0[2] + f * d[2] };
+          const double dc = std::sqrt(Distance2(x, c));
+          if (dc < distance)
+          {
+            distance = dc;
+            edge = e;
+          }
+        }
+      }
+      const double reach = std::sqrt(std::max({ Distance2(this->P3(v[0]), this->P3(v[1])),
+        Distance2(this->P3(v[1]), this->P3(v[2])), Distance2(this->P3(v[2]), this->P3(v[0])) }));
+      if (distance <= reach && distance < bestDistance)
+      {
+        best = t;
+        bestDistance = distance;
+        bestInside = outside < 0;
+        bestEdge = edge;
+      }
+    }
+  }
+  if (best < 0)
+  {
+    return false;
+  }
+  const int32_t* v = this->Mesh.GetTriangle(best);
+  const Id t3[3] = { v[0], v[1], v[2] };
+  double normal[3];
+  UnitNormal(this->P3(t3[0]), this->P3(t3[1]), this->P3(t3[2]), normal);
+  if (bestInside)
+  {
+    // Inside: split the edge whose angle at q is beyond 150 degrees, if any.
+    double widest = -0.8660254037844386;
+    for (int i = 0; i < 3; ++i)
+    {
+      double e1[3], e2[3];
+      Sub(this->P3(t3[i]), x, e1);
+      Sub(this->P3(t3[(i + 1) % 3]), x, e2);
+      const double c = Dot(e1, e2) / std::sqrt(Dot(e1, e1) * Dot(e2, e2));
+      if (c < widest)
+      {
+        widest = c;
+        bestEdge = i;
+      }
+    }
+  }
+  std::vector<std::array<Id, 3>> added;
+  if (bestEdge >= 0)
+  {
+    const Id u = t3[bestEdge], w = t3[(bestEdge + 1) % 3], z = t3[(bestEdge + 2) % 3];
+    const int64_t other = this->Mesh.FindTriangle(w, u);
+    const Id zo = other >= 0 ? this->Mesh.OppositeVertex(w, u) : -1;
+    if (zo >= 0)
+    {
+      added = { { { w, z, q } }, { { z, u, q } }, { { u, zo, q } }, { { zo, w, q } } };
+      bool facing = true;
+      for (const auto& t : added)
+      {
+        double n[3];
+        facing = facing && UnitNormal(this->P3(t[0]), this->P3(t[1]), this->P3(t[2]), n) &&
+          Dot(n, normal) > 0.0;
+      }
+      if (facing)
+      {
+        this->Mesh.RemoveTriangle(best);
+        this->Mesh.RemoveTriangle(other);
+      }
+      else
+      {
+        added.clear();
+      }
+    }
+  }
+  if (added.empty())
+  {
+    if (!bestInside)
+    {
+      return false;
+    }
+    this->Mesh.RemoveTriangle(best);
+    added = { { { t3[0], t3[1], q } }, { { t3[1], t3[2], q } }, { { t3[2], t3[0], q } } };
+  }
+  for (const auto& t : added)
+  {
+    this->Commit(t[0], t[1], t[2]);
+  }
+  return true;
+}
+
+void Grower::InsertOrphans()
+{
+  for (Id q = 0; q < this->N; ++q)
+  {
+    if (this->Mesh.IsFree(q) && this->InsertOrphan(q))
+    {
+      ++this->Inserted;
     }
   }
 }
@@ -1403,19 +1449,39 @@ void Grower::Run()
   }
   if (!this->Aborted)
   {
+    this->InsertOrphans();
     this->FillHoles();
   }
   this->OrientComponents();
 }
 
-void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
+// A radius whose ball holds about K + 1 points of a surface sample: from the mean distance to
+// the nearest neighbour of a few hundred points (2D density: the K-th neighbour lies about
+// sqrt(K) nearest-neighbour distances away). Only a starting value: every query adapts it.
+double EstimateNeighborRadius(vtkStaticPointLocator* locator, const double* x, Id n, int k)
 {
-  vtkNew<vtkIdTypeArray> array;
-  array->SetName(name);
-  array->SetNumberOfValues(1);
-  array->SetValue(0, value);
-  fd->AddArray(array);
+  vtkNew<vtkIdList> list;
+  double sum = 0.0;
+  int samples = 0;
+  const Id step = std::max<Id>(1, n / 256);
+  for (Id i = 0; i < n; i += step)
+  {
+    locator->FindClosestNPoints(2, x + 3 * static_cast<size_t>(i), list);
+    for (vtkIdType j = 0; j < list->GetNumberOfIds(); ++j)
+    {
+      const vtkIdType id = list->GetId(j);
+      if (id != i)
+      {
+        sum += std::sqrt(Distance2(x + 3 * static_cast<size_t>(i), x + 3 * id));
+        ++samples;
+        break;
+      }
+    }
+  }
+  const double spacing = samples > 0 && sum > 0.0 ? sum / samples : 1.0;
+  return 1.2 * spacing * std::sqrt(4.0 * (k + 1.0) / vtkMath::Pi());
 }
+
 } // namespace
 
 //------------------------------------------------------------------------------------------------
@@ -1443,9 +1509,8 @@ int vtkLocalOptimumGrowth::FillInputPortInformation(int, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------------------------
-int vtkLocalOptimumGrowth::RequestData(vtkInformation*,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
+int vtkLocalOptimumGrowth::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   // Under MPI the whole cloud is meshed on process 0; the other processes' outputs stay empty.
@@ -1483,17 +1548,16 @@ int vtkLocalOptimumGrowth::RequestData(vtkInformation*,
   vtkNew<vtkCellArray> polys;
   output->SetPolys(polys);
 
-  auto finish = [&]()
-  {
+  auto finish = [&]() {
     vtkFieldData* fd = output->GetFieldData();
-    AddCount(fd, "NumberOfInputPoints", this->NumberOfInputPoints);
-    AddCount(fd, "NumberOfTriangles", this->NumberOfTriangles);
-    AddCount(fd, "NumberOfSeeds", this->NumberOfSeeds);
-    AddCount(fd, "NumberOfHolesClosed", this->NumberOfHolesClosed);
-    AddCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
-    AddCount(fd, "NumberOfDuplicatePoints", this->NumberOfDuplicatePoints);
-    AddCount(fd, "NumberOfSkippedPoints", this->NumberOfSkippedPoints);
-    AddCount(fd, "NumberOfBoundaryEdges", this->NumberOfBoundaryEdges);
+    pcs::AddFieldCount(fd, "NumberOfInputPoints", this->NumberOfInputPoints);
+    pcs::AddFieldCount(fd, "NumberOfTriangles", this->NumberOfTriangles);
+    pcs::AddFieldCount(fd, "NumberOfSeeds", this->NumberOfSeeds);
+    pcs::AddFieldCount(fd, "NumberOfHolesClosed", this->NumberOfHolesClosed);
+    pcs::AddFieldCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
+    pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", this->NumberOfDuplicatePoints);
+    pcs::AddFieldCount(fd, "NumberOfSkippedPoints", this->NumberOfSkippedPoints);
+    pcs::AddFieldCount(fd, "NumberOfBoundaryEdges", this->NumberOfBoundaryEdges);
     return 1;
   };
 
@@ -1511,29 +1575,24 @@ int vtkLocalOptimumGrowth::RequestData(vtkInformation*,
     return finish();
   }
 
-  // Coordinates as doubles, scaled by a power of two (exact) so that the largest magnitude is
-  // about 1: squared lengths and the predicates never overflow or underflow.
+  // Coordinates as doubles; those far from 1 in magnitude are scaled by a power of two (exact),
+  // so that squared lengths and the predicates never overflow or underflow.
   std::vector<double> xyz(3 * static_cast<size_t>(numberOfPoints));
   vtkPoints* points = input->GetPoints();
-  vtkSMPTools::For(0,
-    numberOfPoints,
-    [&](vtkIdType begin, vtkIdType end)
+  vtkSMPTools::For(0, numberOfPoints, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
     {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        points->GetPoint(i, &xyz[3 * i]);
-      }
-    });
+      points->GetPoint(i, &xyz[3 * i]);
+    }
+  });
   std::vector<Id> ids;
   ids.reserve(numberOfPoints);
-  double largest = 0.0;
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
     const double* p = &xyz[3 * i];
     if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
     {
       ids.push_back(static_cast<Id>(i));
-      largest = std::max({ largest, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
     }
     else
     {
@@ -1546,16 +1605,15 @@ int vtkLocalOptimumGrowth::RequestData(vtkInformation*,
     vtkWarningMacro(
       "Skipped " << this->NumberOfSkippedPoints << " point(s) with NaN or infinite coordinates.");
   }
-  if (largest > 0.0)
+  const int exponent = pcs::PredicateSafeExponent(xyz.data(), 3, ids);
+  if (exponent != 0)
   {
-    int exponent = 0;
-    std::frexp(largest, &exponent);
     for (Id i : ids)
     {
-      for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 3; ++c)
       {
-        xyz[3 * static_cast<size_t>(i) + k] =
-          std::ldexp(xyz[3 * static_cast<size_t>(i) + k], -exponent);
+        xyz[3 * static_cast<size_t>(i) + c] =
+          std::ldexp(xyz[3 * static_cast<size_t>(i) + c], exponent);
       }
     }
   }
@@ -1566,22 +1624,19 @@ int vtkLocalOptimumGrowth::RequestData(vtkInformation*,
     std::vector<Id> rank(ids.size());
     std::iota(rank.begin(), rank.end(), 0);
     const double* x = xyz.data();
-    vtkSMPTools::Sort(rank.begin(),
-      rank.end(),
-      [x, &ids](Id r, Id s)
+    vtkSMPTools::Sort(rank.begin(), rank.end(), [x, &ids](Id r, Id s) {
+      const double* p = x + 3 * static_cast<size_t>(ids[r]);
+      const double* q = x + 3 * static_cast<size_t>(ids[s]);
+      if (p[0] != q[0])
       {
-        const double* p = x + 3 * static_cast<size_t>(ids[r]);
-        const double* q = x + 3 * static_cast<size_t>(ids[s]);
-        if (p[0] != q[0])
-        {
-          return p[0] < q[0];
-        }
-        if (p[1] != q[1])
-        {
-          return p[1] < q[1];
-        }
-        return p[2] != q[2] ? p[2] < q[2] : r < s;
-      });
+        return p[0] < q[0];
+      }
+      if (p[1] != q[1])
+      {
+        return p[1] < q[1];
+      }
+      return p[2] != q[2] ? p[2] < q[2] : r < s;
+    });
     std::vector<char> keep(ids.size(), 1);
     for (size_t k = 0; k < rank.size(); ++k)
     {
@@ -1652,32 +1707,62 @@ int vtkLocalOptimumGrowth::RequestData(vtkInformation*,
     }
     locator->SetDataSet(cloud);
     locator->BuildLocator();
+    // K nearest neighbours by radius queries (much faster than FindClosestNPoints): the radius
+    // starts from the previous point's (Hilbert order: similar density) and grows until the
+    // ball holds K other points; the K nearest are then selected, ties broken by index.
+    const double startRadius = EstimateNeighborRadius(locator, x.data(), n, k);
     vtkSMPThreadLocalObject<vtkIdList> lists;
-    vtkSMPTools::For(0,
-      n,
-      [&](vtkIdType begin, vtkIdType end)
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+      vtkIdList* list = lists.Local();
+      std::vector<std::pair<double, Id>> found;
+      double radius = startRadius;
+      for (vtkIdType i = begin; i < end; ++i)
       {
-        vtkIdList* list = lists.Local();
-        for (vtkIdType i = begin; i < end; ++i)
+        // Abort: stop early (the growth is then skipped; the output has no triangles).
+        if ((i & 4095) == 0 && this->GetAbortExecute())
         {
-          // Abort: stop early (the growth is then skipped; the output has no triangles).
-          if ((i & 4095) == 0 && this->GetAbortExecute())
+          break;
+        }
+        const double* p = &x[3 * i];
+        for (int attempt = 0;; ++attempt)
+        {
+          locator->FindPointsWithinRadius(radius, p, list);
+          if (list->GetNumberOfIds() > k || attempt > 60)
           {
             break;
           }
-          locator->FindClosestNPoints(k + 1, &x[3 * i], list);
-          Id* out = &knn[static_cast<size_t>(i) * k];
-          int count = 0;
-          for (vtkIdType j = 0; j < list->GetNumberOfIds() && count < k; ++j)
+          radius *= list->GetNumberOfIds() > 1
+            ? std::min(2.0, 1.1 * std::sqrt((k + 1.0) / list->GetNumberOfIds()))
+            : 2.0;
+        }
+        const vtkIdType count = list->GetNumberOfIds();
+        found.clear();
+        for (vtkIdType j = 0; j < count; ++j)
+        {
+          const vtkIdType id = list->GetId(j);
+          if (id != i)
           {
-            const vtkIdType id = list->GetId(j);
-            if (id != i)
-            {
-              out[count++] = static_cast<Id>(id);
-            }
+            found.emplace_back(Distance2(p, &x[3 * id]), static_cast<Id>(id));
           }
         }
-      });
+        const size_t keep = std::min<size_t>(k, found.size());
+        if (keep < found.size())
+        {
+          std::nth_element(found.begin(), found.begin() + keep, found.end());
+        }
+        std::sort(found.begin(), found.begin() + keep);
+        Id* out = &knn[static_cast<size_t>(i) * k];
+        for (size_t j = 0; j < keep; ++j)
+        {
+          out[j] = found[j].second;
+        }
+        // Next start: a little beyond this point's K-th neighbour (similar density nearby).
+        if (keep > 0)
+        {
+          radius = 1.1 * std::sqrt(found[keep - 1].first);
+        }
+      }
+    });
     if (this->Locator)
     {
       this->Locator->SetDataSet(nullptr);

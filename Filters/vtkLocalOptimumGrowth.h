@@ -205,7 +205,7 @@ protected:
   double MaximumNormalAngle = 60.0;
   double MinimumEdgeRatio = 1.0 / 3.0;
   double MaximumEdgeRatio = 3.0;
-  double MaximumBaseAngle = 90.0;
+  double MaximumBaseAngle = 120.0;
   int MaximumHoleEdges = 8;
   bool RelaxConstraints = true;
   vtkStaticPointLocator* Locator = nullptr;

@@ -1,5 +1,6 @@
 #include "vtkGreedySurfaceTriangulation.h"
 
+#include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 #include "pcsHoleFilling.h"
 #include "pcsPredicates.h"
@@ -41,6 +42,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include <iostream>
+#include <cstdlib>
 
 vtkStandardNewMacro(vtkGreedySurfaceTriangulation);
 
@@ -50,24 +53,6 @@ constexpr double Pi = 3.14159265358979323846;
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 // Point ids are 32-bit in the kernels (pcs::SurfaceMesh).
 constexpr vtkIdType MaximumNumberOfPoints = 500000000;
-
-void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
-{
-  vtkNew<vtkIdTypeArray> array;
-  array->SetName(name);
-  array->SetNumberOfValues(1);
-  array->SetValue(0, value);
-  fd->AddArray(array);
-}
-
-void AddValue(vtkFieldData* fd, const char* name, double value)
-{
-  vtkNew<vtkDoubleArray> array;
-  array->SetName(name);
-  array->SetNumberOfValues(1);
-  array->SetValue(0, value);
-  fd->AddArray(array);
-}
 
 inline double Distance(const double* a, const double* b)
 {
@@ -1679,31 +1664,31 @@ int vtkGreedySurfaceTriangulation::RequestData(
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     vtkFieldData* fd = output->GetFieldData();
-    AddCount(fd, "NumberOfTriangles", this->NumberOfTriangles);
-    AddCount(fd, "NumberOfLostPoints", r.LostPoints);
-    AddCount(fd, "NumberOfIslands", r.Islands);
-    AddCount(fd, "NumberOfHoles", r.Holes);
-    AddCount(fd, "NumberOfBridges", r.Bridges);
-    AddCount(fd, "NumberOfChords", r.Chords);
-    AddCount(fd, "NumberOfHolesFilled", r.HolesFilled);
-    AddCount(fd, "NumberOfHolesLeftOpen", r.HolesLeftOpen);
-    AddCount(fd, "NumberOfSwaps", r.Swaps);
-    AddCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
-    AddCount(fd, "NumberOfDuplicatePoints", duplicates);
-    AddCount(fd, "NumberOfSkippedPoints", skipped);
-    AddValue(fd, "MeanSpacing", r.Spacing);
-    AddCount(fd, "NumberOfPoints", numberOfPoints);
-    AddValue(fd, "AverageUniformityInSSR",
+    pcs::AddFieldCount(fd, "NumberOfTriangles", this->NumberOfTriangles);
+    pcs::AddFieldCount(fd, "NumberOfLostPoints", r.LostPoints);
+    pcs::AddFieldCount(fd, "NumberOfIslands", r.Islands);
+    pcs::AddFieldCount(fd, "NumberOfHoles", r.Holes);
+    pcs::AddFieldCount(fd, "NumberOfBridges", r.Bridges);
+    pcs::AddFieldCount(fd, "NumberOfChords", r.Chords);
+    pcs::AddFieldCount(fd, "NumberOfHolesFilled", r.HolesFilled);
+    pcs::AddFieldCount(fd, "NumberOfHolesLeftOpen", r.HolesLeftOpen);
+    pcs::AddFieldCount(fd, "NumberOfSwaps", r.Swaps);
+    pcs::AddFieldCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
+    pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", duplicates);
+    pcs::AddFieldCount(fd, "NumberOfSkippedPoints", skipped);
+    pcs::AddFieldValue(fd, "MeanSpacing", r.Spacing);
+    pcs::AddFieldCount(fd, "NumberOfPoints", numberOfPoints);
+    pcs::AddFieldValue(fd, "AverageUniformityInSSR",
       ssrUniformityCount > 0 ? ssrUniformity / ssrUniformityCount : NaN);
-    AddValue(fd, "SSRAreaPercent", totalArea > 0 ? 100.0 * ssrArea / totalArea : 0.0);
-    AddValue(fd, "SSRPointsPercent",
+    pcs::AddFieldValue(fd, "SSRAreaPercent", totalArea > 0 ? 100.0 * ssrArea / totalArea : 0.0);
+    pcs::AddFieldValue(fd, "SSRPointsPercent",
       r.N > 0 ? 100.0 * static_cast<double>(ssrPoints) / r.N : 0.0);
     vtkNew<vtkStringArray> stepsArray;
     stepsArray->SetName("StepsUsed");
     stepsArray->InsertNextValue(steps);
     fd->AddArray(stepsArray);
-    AddValue(fd, "Seconds", seconds);
-    AddValue(fd, "PointsPerSecond", seconds > 0 ? numberOfPoints / seconds : 0.0);
+    pcs::AddFieldValue(fd, "Seconds", seconds);
+    pcs::AddFieldValue(fd, "PointsPerSecond", seconds > 0 ? numberOfPoints / seconds : 0.0);
     this->UpdateProgress(1.0);
     return 1;
   };
@@ -1810,11 +1795,13 @@ int vtkGreedySurfaceTriangulation::RequestData(
   // Neighbours, spacing, uniformity.
   r.K = std::min<int>(this->NumberOfNeighbors, r.N - 1);
   r.FindNeighbors(0.02, 0.25);
+  if (std::getenv("PCS_T")) std::cerr << "r.FindNeighbors(0.02, 0.25); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (r.Aborted)
   {
     return finish();
   }
   r.ComputeUniformity();
+  if (std::getenv("PCS_T")) std::cerr << "r.ComputeUniformity(); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
     if (representative[i] >= 0)
@@ -1829,6 +1816,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
   }
 
   // Steps 1 to 7.
+  if (std::getenv("PCS_T")) std::cerr << "before normals " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (this->ProjectedCrossingTest && !r.ComputeNormals())
   {
     vtkWarningMacro("No normals could be estimated: step 1 uses the topological test only.");
@@ -1838,12 +1826,14 @@ int vtkGreedySurfaceTriangulation::RequestData(
     return finish();
   }
   r.Step1GreedyEdges(0.3, 0.5);
+  if (std::getenv("PCS_T")) std::cerr << "r.Step1GreedyEdges(0.3, 0.5); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (r.Aborted)
   {
     return finish();
   }
   steps = "1";
   r.Step2Umbrella(0.5, 0.6);
+  if (std::getenv("PCS_T")) std::cerr << "r.Step2Umbrella(0.5, 0.6); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (r.Aborted)
   {
     return finish();
@@ -1862,11 +1852,13 @@ int vtkGreedySurfaceTriangulation::RequestData(
     }
   }
   r.Step3Status();
+  if (std::getenv("PCS_T")) std::cerr << "r.Step3Status(); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (!r.Progress(0.65))
   {
     return finish();
   }
   r.Step4Bridges();
+  if (std::getenv("PCS_T")) std::cerr << "r.Step4Bridges(); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (!r.Progress(0.7))
   {
     return finish();
@@ -1876,6 +1868,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
     steps += ", 3, 4";
   }
   r.Step6FillHoles(0.7, 0.97);
+  if (std::getenv("PCS_T")) std::cerr << "r.Step6FillHoles(0.7, 0.97); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (r.Aborted)
   {
     return finish();
@@ -1889,11 +1882,13 @@ int vtkGreedySurfaceTriangulation::RequestData(
     steps += ", 6";
   }
   r.Step7Swaps();
+  if (std::getenv("PCS_T")) std::cerr << "r.Step7Swaps(); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (r.Bridges + r.Chords > 0)
   {
     steps += ", 7";
   }
   r.OrientOutwards();
+  if (std::getenv("PCS_T")) std::cerr << "r.OrientOutwards(); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
 
   // Output triangles (input ids), stages, used points, areas.
   const int64_t ids = r.Mesh.GetNumberOfTriangleIds();

@@ -3,6 +3,7 @@
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 #include "pcsHoleFilling.h"
+#include "pcsNearestNeighbors.h"
 #include "pcsPredicates.h"
 #include "pcsProjectedTests.h"
 #include "pcsSurfaceMesh.h"
@@ -42,8 +43,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-#include <iostream>
-#include <cstdlib>
 
 vtkStandardNewMacro(vtkGreedySurfaceTriangulation);
 
@@ -127,6 +126,7 @@ public:
   int K = 0;
   std::vector<int32_t> Neighbors; // K per point, nearest first, -1 padded
   std::vector<double> Uniformity;
+  double MedianUniformity = NaN;
   std::vector<double> Normals; // 3 per point (unoriented), for the projected crossing test
   double Spacing = 0.0;
   vtkSmartPointer<vtkStaticPointLocator> Locator;
@@ -212,32 +212,10 @@ void Reconstruction::FindNeighbors(double begin, double end)
   this->Locator->BuildLocator();
 
   const int k = this->K;
-  this->Neighbors.assign(static_cast<size_t>(this->N) * k, -1);
-  vtkSMPThreadLocalObject<vtkIdList> lists;
-  const vtkIdType block = 65536;
-  for (vtkIdType first = 0; first < this->N; first += block)
+  if (!pcs::FindNearestNeighbors(this->Locator, this->X.data(), this->N, k, this->Neighbors,
+        [&](double fraction) { return this->Progress(begin + (end - begin) * fraction); }))
   {
-    if (!this->Progress(begin + (end - begin) * first / std::max<vtkIdType>(this->N, 1)))
-    {
-      return;
-    }
-    const vtkIdType last = std::min<vtkIdType>(first + block, this->N);
-    vtkSMPTools::For(first, last, [&](vtkIdType b, vtkIdType e) {
-      vtkIdList* list = lists.Local();
-      for (vtkIdType i = b; i < e; ++i)
-      {
-        this->Locator->FindClosestNPoints(k + 1, this->P(static_cast<int32_t>(i)), list);
-        int32_t* out = &this->Neighbors[static_cast<size_t>(i) * k];
-        int count = 0;
-        for (vtkIdType j = 0; j < list->GetNumberOfIds() && count < k; ++j)
-        {
-          if (list->GetId(j) != i)
-          {
-            out[count++] = static_cast<int32_t>(list->GetId(j));
-          }
-        }
-      }
-    });
+    return;
   }
   double sum = 0.0;
   vtkIdType counted = 0;
@@ -1795,13 +1773,11 @@ int vtkGreedySurfaceTriangulation::RequestData(
   // Neighbours, spacing, uniformity.
   r.K = std::min<int>(this->NumberOfNeighbors, r.N - 1);
   r.FindNeighbors(0.02, 0.25);
-  if (std::getenv("PCS_T")) std::cerr << "r.FindNeighbors(0.02, 0.25); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (r.Aborted)
   {
     return finish();
   }
   r.ComputeUniformity();
-  if (std::getenv("PCS_T")) std::cerr << "r.ComputeUniformity(); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
     if (representative[i] >= 0)
@@ -1816,8 +1792,26 @@ int vtkGreedySurfaceTriangulation::RequestData(
   }
 
   // Steps 1 to 7.
-  if (std::getenv("PCS_T")) std::cerr << "before normals " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
-  if (this->ProjectedCrossingTest && !r.ComputeNormals())
+  bool crossing = this->CrossingTest == CROSSING_TEST_ON;
+  if (this->CrossingTest == CROSSING_TEST_AUTOMATIC)
+  {
+    std::vector<double> finite;
+    finite.reserve(r.Uniformity.size());
+    for (double m : r.Uniformity)
+    {
+      if (std::isfinite(m))
+      {
+        finite.push_back(m);
+      }
+    }
+    if (!finite.empty())
+    {
+      std::nth_element(finite.begin(), finite.begin() + finite.size() / 2, finite.end());
+      r.MedianUniformity = finite[finite.size() / 2];
+    }
+    crossing = !(r.MedianUniformity <= this->AutomaticUniformityLimit);
+  }
+  if (crossing && !r.ComputeNormals())
   {
     vtkWarningMacro("No normals could be estimated: step 1 uses the topological test only.");
   }
@@ -1826,14 +1820,12 @@ int vtkGreedySurfaceTriangulation::RequestData(
     return finish();
   }
   r.Step1GreedyEdges(0.3, 0.5);
-  if (std::getenv("PCS_T")) std::cerr << "r.Step1GreedyEdges(0.3, 0.5); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (r.Aborted)
   {
     return finish();
   }
   steps = "1";
   r.Step2Umbrella(0.5, 0.6);
-  if (std::getenv("PCS_T")) std::cerr << "r.Step2Umbrella(0.5, 0.6); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (r.Aborted)
   {
     return finish();
@@ -1852,13 +1844,11 @@ int vtkGreedySurfaceTriangulation::RequestData(
     }
   }
   r.Step3Status();
-  if (std::getenv("PCS_T")) std::cerr << "r.Step3Status(); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (!r.Progress(0.65))
   {
     return finish();
   }
   r.Step4Bridges();
-  if (std::getenv("PCS_T")) std::cerr << "r.Step4Bridges(); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (!r.Progress(0.7))
   {
     return finish();
@@ -1868,7 +1858,6 @@ int vtkGreedySurfaceTriangulation::RequestData(
     steps += ", 3, 4";
   }
   r.Step6FillHoles(0.7, 0.97);
-  if (std::getenv("PCS_T")) std::cerr << "r.Step6FillHoles(0.7, 0.97); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (r.Aborted)
   {
     return finish();
@@ -1882,13 +1871,11 @@ int vtkGreedySurfaceTriangulation::RequestData(
     steps += ", 6";
   }
   r.Step7Swaps();
-  if (std::getenv("PCS_T")) std::cerr << "r.Step7Swaps(); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
   if (r.Bridges + r.Chords > 0)
   {
     steps += ", 7";
   }
   r.OrientOutwards();
-  if (std::getenv("PCS_T")) std::cerr << "r.OrientOutwards(); " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
 
   // Output triangles (input ids), stages, used points, areas.
   const int64_t ids = r.Mesh.GetNumberOfTriangleIds();
@@ -1943,7 +1930,8 @@ void vtkGreedySurfaceTriangulation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfNeighbors: " << this->NumberOfNeighbors << "\n";
-  os << indent << "ProjectedCrossingTest: " << this->ProjectedCrossingTest << "\n";
+  os << indent << "CrossingTest: " << this->CrossingTest << "\n";
+  os << indent << "AutomaticUniformityLimit: " << this->AutomaticUniformityLimit << "\n";
   os << indent << "UniformityNeighbors: " << this->UniformityNeighbors << "\n";
   os << indent << "UniformityAngle: " << this->UniformityAngle << "\n";
   os << indent << "MaximumNormalDeviation: " << this->MaximumNormalDeviation << "\n";

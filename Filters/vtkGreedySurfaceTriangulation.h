@@ -25,8 +25,8 @@
  *   paper's purely topological test passes: no edge gets more than two triangles and no
  *   tetrahedron appears. Triangles are the 3-cycles the accepted edges close; edges left without
  *   triangles are dropped. Two guards are added. An edge that would close an exactly degenerate
- *   triangle (collinear points, exact predicates) is refused. And, with ProjectedCrossingTest on
- *   (the default), an edge is refused when it crosses an accepted edge in the tangent plane of
+ *   triangle (collinear points, exact predicates) is refused. And, with the CrossingTest, an
+ *   edge is refused when it crosses an accepted edge in the tangent plane of
  *   its end points (the mean of their unoriented normals from vtkPCANormalEstimation over the
  *   same neighbours; exact 2D segment tests on the projected points): the 2D greedy
  *   triangulation's compatibility rule, applied locally. The paper's test alone is meant for
@@ -153,15 +153,37 @@ public:
   vtkGetMacro(NumberOfNeighbors, int);
   ///@}
 
+  /// Values of CrossingTest.
+  enum CrossingTests
+  {
+    CROSSING_TEST_OFF = 0,
+    CROSSING_TEST_ON = 1,
+    CROSSING_TEST_AUTOMATIC = 2
+  };
+
   ///@{
   /**
    * Step 1: besides the paper's topological test, refuse an edge that crosses an accepted edge
-   * in the local tangent plane (see the class documentation). Default on; off gives the paper's
-   * purely topological test, meant for scanner-regular clouds.
+   * in the local tangent plane (see the class documentation). CROSSING_TEST_OFF (0): the paper's
+   * purely topological test; CROSSING_TEST_ON (1); CROSSING_TEST_AUTOMATIC (2, default): on when
+   * the median local uniformity factor m of the cloud exceeds AutomaticUniformityLimit (random
+   * samples), off for scanner-regular clouds. Range [0, 2].
    */
-  vtkSetMacro(ProjectedCrossingTest, bool);
-  vtkGetMacro(ProjectedCrossingTest, bool);
-  vtkBooleanMacro(ProjectedCrossingTest, bool);
+  vtkSetClampMacro(CrossingTest, int, CROSSING_TEST_OFF, CROSSING_TEST_AUTOMATIC);
+  vtkGetMacro(CrossingTest, int);
+  void SetCrossingTestToOff() { this->SetCrossingTest(CROSSING_TEST_OFF); }
+  void SetCrossingTestToOn() { this->SetCrossingTest(CROSSING_TEST_ON); }
+  void SetCrossingTestToAutomatic() { this->SetCrossingTest(CROSSING_TEST_AUTOMATIC); }
+  ///@}
+
+  ///@{
+  /**
+   * Step 1, CROSSING_TEST_AUTOMATIC: the median of the local uniformity factor m above which the
+   * crossing test is used. Default 3 (the paper's scans have m of about 2 in their well-sampled
+   * regions, uniform random samples about 5); range [1, VTK_DOUBLE_MAX].
+   */
+  vtkSetClampMacro(AutomaticUniformityLimit, double, 1.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(AutomaticUniformityLimit, double);
   ///@}
 
   ///@{
@@ -291,7 +313,8 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int NumberOfNeighbors = 12;
-  bool ProjectedCrossingTest = true;
+  int CrossingTest = CROSSING_TEST_AUTOMATIC;
+  double AutomaticUniformityLimit = 3.0;
   int UniformityNeighbors = 6;
   double UniformityAngle = 30.0;
   double MaximumNormalDeviation = 90.0;

@@ -1,0 +1,121 @@
+#include "pcsNearestNeighbors.h"
+
+#include "vtkDataSet.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPThreadLocalObject.h"
+#include "vtkSMPTools.h"
+#include "vtkStaticPointLocator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace pcs
+{
+namespace
+{
+inline double Distance2(const double* a, const double* b)
+{
+  const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+  return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+}
+}
+
+bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int32_t n, int k,
+  std::vector<int32_t>& neighbors, const std::function<bool(double)>& progress)
+{
+  neighbors.assign(static_cast<size_t>(std::max(n, 0)) * std::max(k, 0), -1);
+  if (n < 2 || k < 1)
+  {
+    return true;
+  }
+  // Starting radius: the k-th neighbour of a surface sample lies about sqrt(k) nearest-neighbour
+  // distances away; the mean nearest-neighbour distance comes from a few hundred points.
+  double sum = 0.0;
+  int samples = 0;
+  {
+    vtkNew<vtkIdList> list;
+    const int32_t step = std::max<int32_t>(1, n / 256);
+    for (int32_t i = 0; i < n; i += step)
+    {
+      locator->FindClosestNPoints(2, xyz + 3 * static_cast<size_t>(i), list);
+      for (vtkIdType j = 0; j < list->GetNumberOfIds(); ++j)
+      {
+        if (list->GetId(j) != i)
+        {
+          sum += std::sqrt(Distance2(xyz + 3 * static_cast<size_t>(i), xyz + 3 * list->GetId(j)));
+          ++samples;
+          break;
+        }
+      }
+    }
+  }
+  double start = samples > 0 ? 1.5 * std::sqrt(static_cast<double>(k)) * sum / samples : 0.0;
+  if (!(start > 0) || !std::isfinite(start))
+  {
+    double bounds[6];
+    locator->GetDataSet()->GetBounds(bounds);
+    start = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+    start = start > 0 && std::isfinite(start) ? start * 1e-3 : 1.0;
+  }
+
+  vtkSMPThreadLocalObject<vtkIdList> lists;
+  vtkSMPThreadLocal<double> radii(start);
+  const int32_t block = 65536;
+  for (int32_t first = 0; first < n; first += block)
+  {
+    if (progress && !progress(static_cast<double>(first) / n))
+    {
+      return false;
+    }
+    const int32_t last = std::min<int32_t>(first + block, n);
+    vtkSMPTools::For(first, last, [&](int32_t begin, int32_t end) {
+      vtkIdList* list = lists.Local();
+      double& radius = radii.Local();
+      std::vector<std::pair<double, int32_t>> found;
+      for (int32_t i = begin; i < end; ++i)
+      {
+        const double* p = xyz + 3 * static_cast<size_t>(i);
+        for (int attempt = 0;; ++attempt)
+        {
+          locator->FindPointsWithinRadius(radius, p, list);
+          if (list->GetNumberOfIds() > k || list->GetNumberOfIds() >= n || attempt > 200)
+          {
+            break;
+          }
+          radius *= list->GetNumberOfIds() > 1
+            ? std::min(2.0, 1.1 * std::sqrt((k + 1.0) / list->GetNumberOfIds()))
+            : 2.0;
+        }
+        found.clear();
+        for (vtkIdType j = 0; j < list->GetNumberOfIds(); ++j)
+        {
+          const int32_t id = static_cast<int32_t>(list->GetId(j));
+          if (id != i)
+          {
+            found.emplace_back(Distance2(p, xyz + 3 * static_cast<size_t>(id)), id);
+          }
+        }
+        const size_t keep = std::min<size_t>(k, found.size());
+        if (keep < found.size())
+        {
+          std::nth_element(found.begin(), found.begin() + keep, found.end());
+        }
+        std::sort(found.begin(), found.begin() + keep);
+        int32_t* out = &neighbors[static_cast<size_t>(i) * k];
+        for (size_t j = 0; j < keep; ++j)
+        {
+          out[j] = found[j].second;
+        }
+        if (keep > 0 && found[keep - 1].first > 0)
+        {
+          radius = 1.1 * std::sqrt(found[keep - 1].first);
+        }
+      }
+    });
+  }
+  return !progress || progress(1.0);
+}
+}

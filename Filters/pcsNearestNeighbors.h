@@ -1,0 +1,30 @@
+// K nearest neighbours of every point of a cloud through vtkStaticPointLocator (private helper of
+// the surface filters, not wrapped).
+#ifndef pcsNearestNeighbors_h
+#define pcsNearestNeighbors_h
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+class vtkStaticPointLocator;
+
+namespace pcs
+{
+/// For each of the `n` points of `xyz` (packed x, y, z; `locator` built on exactly these points,
+/// in this order), its `k` nearest other points, nearest first, ties broken by the smaller id:
+/// `neighbors` gets n * k ids (-1 where a point has fewer than k others). Exact duplicates of a
+/// point are neighbours like any other point.
+///
+/// The search uses radius queries (vtkStaticPointLocator::FindPointsWithinRadius), several times
+/// faster than FindClosestNPoints for surface samples: each query starts from a radius a little
+/// beyond the previous point's k-th neighbour (the first from the mean nearest-neighbour distance
+/// of a sample) and grows until the ball holds k other points. The result does not depend on
+/// those radii, nor on the number of threads (vtkSMPTools, in blocks). `progress` (optional)
+/// receives the fraction done between blocks; returning false stops the search (the function
+/// then returns false and the table is incomplete).
+bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int32_t n, int k,
+  std::vector<int32_t>& neighbors, const std::function<bool(double)>& progress = nullptr);
+}
+
+#endif

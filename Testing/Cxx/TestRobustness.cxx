@@ -105,6 +105,50 @@ std::vector<std::pair<std::string, std::function<void(vtkPolyDataAlgorithm*)>>> 
         { static_cast<vtkIncrementalDelaunay3D*>(a)->GenerateVoronoiOn(); } },
     };
   }
+#ifdef PCS_HAVE_CDT
+  if (name == "vtkCDTAdvancingFront")
+  {
+    auto cdt = [](vtkPolyDataAlgorithm* a) { return static_cast<vtkCDTAdvancingFront*>(a); };
+    return {
+      { "NeighborhoodRadius = max", [cdt](vtkPolyDataAlgorithm* a)
+        { cdt(a)->SetNeighborhoodRadius(VTK_DOUBLE_MAX); } },
+      { "NeighborhoodRadius = -1 (clamped to 0: automatic)", [cdt](vtkPolyDataAlgorithm* a)
+        { cdt(a)->SetNeighborhoodRadius(-1.0); } },
+      { "NeighborhoodRadiusFactor = 1", [cdt](vtkPolyDataAlgorithm* a)
+        { cdt(a)->SetNeighborhoodRadiusFactor(0.0); } },
+      { "NeighborhoodRadiusFactor = 100", [cdt](vtkPolyDataAlgorithm* a)
+        { cdt(a)->SetNeighborhoodRadiusFactor(1e9); } },
+      { "MinimumNormalDot = 0", [cdt](vtkPolyDataAlgorithm* a)
+        { cdt(a)->SetMinimumNormalDot(-3.0); } },
+      { "MinimumNormalDot = 1", [cdt](vtkPolyDataAlgorithm* a)
+        { cdt(a)->SetMinimumNormalDot(7.0); } },
+      { "MaximumRayDistance = max", [cdt](vtkPolyDataAlgorithm* a)
+        { cdt(a)->SetMaximumRayDistance(VTK_DOUBLE_MAX); } },
+      { "MinimumTriangleArea = max", [cdt](vtkPolyDataAlgorithm* a)
+        { cdt(a)->SetMinimumTriangleArea(VTK_DOUBLE_MAX); } },
+      { "HoleFilling off", [cdt](vtkPolyDataAlgorithm* a) { cdt(a)->HoleFillingOff(); } },
+      { "HoleFillingRadiusFactor = 1, HoleFillingMinimumNormalDot = 0", [cdt](vtkPolyDataAlgorithm* a)
+        {
+          cdt(a)->SetHoleFillingRadiusFactor(5.0);
+          cdt(a)->SetHoleFillingMinimumNormalDot(-1.0);
+        } },
+      { "HoleFillingRadiusFactor = 0.01, HoleFillingMinimumNormalDot = 1", [cdt](vtkPolyDataAlgorithm* a)
+        {
+          cdt(a)->SetHoleFillingRadiusFactor(0.0);
+          cdt(a)->SetHoleFillingMinimumNormalDot(2.0);
+        } },
+      { "NormalSampleSize = 3", [cdt](vtkPolyDataAlgorithm* a)
+        { cdt(a)->SetNormalSampleSize(0); } },
+      { "NormalSampleSize = 100", [cdt](vtkPolyDataAlgorithm* a)
+        { cdt(a)->SetNormalSampleSize(VTK_INT_MAX); } },
+      { "UseInputNormals off", [cdt](vtkPolyDataAlgorithm* a) { cdt(a)->UseInputNormalsOff(); } },
+      { "MaximumNumberOfCandidates = 1", [cdt](vtkPolyDataAlgorithm* a)
+        { cdt(a)->SetMaximumNumberOfCandidates(-4); } },
+      { "MaximumNumberOfCandidates = 100000", [cdt](vtkPolyDataAlgorithm* a)
+        { cdt(a)->SetMaximumNumberOfCandidates(VTK_INT_MAX); } },
+    };
+  }
+#endif
   if (name == "vtkReconstructionQuality")
   {
     return {

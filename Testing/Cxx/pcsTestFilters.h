@@ -65,7 +65,7 @@ inline std::vector<FilterInfo> AllFilters()
 #endif
 #ifdef PCS_HAVE_CDT
   filters.push_back(
-    { "vtkCDTAdvancingFront", NewFilter<vtkCDTAdvancingFront>, false, false, true });
+    { "vtkCDTAdvancingFront", NewFilter<vtkCDTAdvancingFront>, false, true, true });
 #endif
 #ifdef PCS_HAVE_GREEDY
   filters.push_back({ "vtkGreedySurfaceTriangulation",

@@ -1,0 +1,1240 @@
+#include "vtkCDTAdvancingFront.h"
+
+#include "pcsCoordinateScaling.h"
+#include "pcsFieldData.h"
+#include "pcsGatherInput.h"
+#include "pcsProjectedTests.h"
+#include "pcsSurfaceMesh.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPCANormalEstimation.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocalObject.h"
+#include "vtkSMPTools.h"
+#include "vtkStaticPointLocator.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+vtkStandardNewMacro(vtkCDTAdvancingFront);
+
+namespace
+{
+using Id = int32_t;
+constexpr Id None = -1;
+
+// Points are numbered with 32-bit ids in the kernel.
+constexpr vtkIdType MaximumNumberOfPoints = std::numeric_limits<int32_t>::max() - 1;
+
+// Why a point takes no part in the mesh.
+enum PointStatus : uint8_t
+{
+  Usable = 0,
+  NonFinite = 1, // NaN or infinite coordinates
+  BadNormal = 2, // non-finite or zero-length normal
+  Duplicate = 3  // same coordinates as a usable point of smaller id
+};
+
+inline double Dot(const double* a, const double* b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+inline double Distance2(const double* a, const double* b)
+{
+  const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+  return Dot(d, d);
+}
+
+// Squared distance from x to the segment a b.
+double SegmentDistance2(const double* a, const double* b, const double* x)
+{
+  const double ab[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double ax[3] = { x[0] - a[0], x[1] - a[1], x[2] - a[2] };
+  const double length2 = Dot(ab, ab);
+  double s = length2 > 0.0 ? Dot(ax, ab) / length2 : 0.0;
+  s = std::min(1.0, std::max(0.0, s));
+  const double d[3] = { ax[0] - s * ab[0], ax[1] - s * ab[1], ax[2] - s * ab[2] };
+  return Dot(d, d);
+}
+
+//------------------------------------------------------------------------------------------------
+// Queries on the shared front/edge topology (pcs::SurfaceMesh) used by the front.
+
+// The vertices joined to v by an edge (appended).
+void GetVertexNeighbors(
+  const pcs::SurfaceMesh& mesh, Id v, std::vector<int64_t>& triangles, std::vector<Id>& neighbors)
+{
+  const int degree = mesh.GetVertexDegree(v);
+  triangles.resize(static_cast<size_t>(degree));
+  mesh.GetVertexTriangles(v, triangles.data(), degree);
+  const size_t first = neighbors.size();
+  for (int64_t t : triangles)
+  {
+    const int32_t* tri = mesh.GetTriangle(t);
+    for (int i = 0; i < 3; ++i)
+    {
+      if (tri[i] != v &&
+        std::find(neighbors.begin() + first, neighbors.end(), tri[i]) == neighbors.end())
+      {
+        neighbors.push_back(tri[i]);
+      }
+    }
+  }
+}
+
+// The front (boundary) half-edges at v, leaving and entering it (appended).
+void GetBoundaryHalfEdges(const pcs::SurfaceMesh& mesh, Id v, std::vector<std::pair<Id, Id>>& out)
+{
+  int32_t ends[16];
+  const int leaving = std::min(mesh.GetBoundaryOutVertices(v, ends, 16), 16);
+  for (int k = 0; k < leaving; ++k)
+  {
+    out.emplace_back(v, ends[k]);
+  }
+  const int entering = std::min(mesh.GetBoundaryInVertices(v, ends, 16), 16);
+  for (int k = 0; k < entering; ++k)
+  {
+    out.emplace_back(ends[k], v);
+  }
+}
+
+// Makes every vertex manifold again once the fronts have stopped: at each vertex with more than
+// one fan (where two fronts touched without merging), the triangles of all its fans but the
+// largest are removed, until no vertex has more than one fan. Returns the number removed.
+vtkIdType RemovePinches(pcs::SurfaceMesh& mesh)
+{
+  vtkIdType removed = 0;
+  std::vector<Id> work;
+  for (Id v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    if (mesh.GetNumberOfFans(v) > 1)
+    {
+      work.push_back(v);
+    }
+  }
+  std::vector<int64_t> triangles;
+  std::vector<int> fan;
+  while (!work.empty())
+  {
+    const Id v = work.back();
+    work.pop_back();
+    if (mesh.GetNumberOfFans(v) < 2)
+    {
+      continue;
+    }
+    // The fans: triangles (v, x, y) and (v, y, z) are linked through the edge v y.
+    const int degree = mesh.GetVertexDegree(v);
+    triangles.resize(static_cast<size_t>(degree));
+    mesh.GetVertexTriangles(v, triangles.data(), degree);
+    fan.assign(triangles.size(), -1);
+    auto wedge = [&](int64_t t, Id& out, Id& in)
+    {
+      const int32_t* tri = mesh.GetTriangle(t);
+      const int i = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+      out = tri[(i + 1) % 3];
+      in = tri[(i + 2) % 3];
+    };
+    int fans = 0;
+    for (size_t k = 0; k < triangles.size(); ++k)
+    {
+      if (fan[k] >= 0)
+      {
+        continue;
+      }
+      fan[k] = fans;
+      for (bool grown = true; grown;)
+      {
+        grown = false;
+        for (size_t i = 0; i < triangles.size(); ++i)
+        {
+          if (fan[i] != fans)
+          {
+            continue;
+          }
+          Id out, in;
+          wedge(triangles[i], out, in);
+          for (size_t j = 0; j < triangles.size(); ++j)
+          {
+            Id out2, in2;
+            wedge(triangles[j], out2, in2);
+            if (fan[j] < 0 && (out2 == in || in2 == out))
+            {
+              fan[j] = fans;
+              grown = true;
+            }
+          }
+        }
+      }
+      ++fans;
+    }
+    std::vector<int> size(static_cast<size_t>(fans), 0);
+    for (int f : fan)
+    {
+      ++size[f];
+    }
+    const int largest = static_cast<int>(std::max_element(size.begin(), size.end()) - size.begin());
+    for (size_t k = 0; k < triangles.size(); ++k)
+    {
+      if (fan[k] != largest)
+      {
+        const int32_t* tri = mesh.GetTriangle(triangles[k]);
+        const Id vertices[3] = { tri[0], tri[1], tri[2] };
+        mesh.RemoveTriangle(triangles[k]);
+        ++removed;
+        work.insert(work.end(), vertices, vertices + 3);
+      }
+    }
+  }
+  return removed;
+}
+
+//------------------------------------------------------------------------------------------------
+// The rules of paper 003 in one place: which triangles are valid, and the front that grows them.
+struct Parameters
+{
+  double Radius = 0;           // II.A neighbourhood of a front edge's midpoint
+  double MinimumNormalDot = 0; // II.C.2
+  double MaximumRay = 0;       // II.D
+  double MinimumArea = 0;      // II.E
+  int MaximumCandidates = 0;   // candidates submitted to the II.D tests per edge
+};
+
+class Front
+{
+public:
+  Front(vtkCDTAdvancingFront* self, const double* xyz, const double* normals,
+    const std::vector<uint8_t>& status, vtkStaticPointLocator* locator, pcs::SurfaceMesh& mesh)
+    : Self(self)
+    , XYZ(xyz)
+    , Normals(normals)
+    , Status(status)
+    , Locator(locator)
+    , Mesh(mesh)
+    , Stamp(status.size(), 0)
+    , MaxIncident(status.size(), 0.0)
+  {
+    double bounds[6];
+    locator->GetDataSet()->GetBounds(bounds);
+    this->Diagonal = 1.01 *
+        std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+          (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+          (bounds[5] - bounds[4]) * (bounds[5] - bounds[4])) +
+      std::numeric_limits<double>::min();
+  }
+
+  // The triangles made, their origin (0 seed, 1 front, 2 hole filling).
+  std::vector<uint8_t> Origin;
+  vtkIdType NumberOfSeeds = 0;
+
+  // III.A: a seed triangle from point p; false when none is valid.
+  bool Seed(Id p, const Parameters& parameters);
+
+  // III.B / III.C: expand the queued front edges until none is left.
+  bool Advance(const Parameters& parameters, bool relaxed, uint8_t origin);
+
+  // Queue the boundary half-edge a -> b (and nothing if it is not one when processed).
+  void Queue(Id a, Id b) { this->Edges.emplace_back(a, b); }
+
+  // Aborted by the user.
+  bool Aborted = false;
+
+  // Accept triangles that pinch a front vertex (see CanAdd).
+  bool AllowPinches = true;
+
+private:
+  const double* P(Id i) const { return this->XYZ + 3 * static_cast<size_t>(i); }
+  const double* N(Id i) const { return this->Normals + 3 * static_cast<size_t>(i); }
+
+  // Is the oriented triangle (e0, e1, third) valid? (e0, e1) is the edge it is built on,
+  // `opposite` the third vertex of the triangle already on that edge (None for a seed).
+  bool IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& parameters);
+
+  // Best valid third point for the oriented edge (e0, e1) (new triangle e0, e1, x), None if none.
+  Id BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters, bool relaxed);
+
+  // The points within `radius` of x. Every query centre lies in the bounding box of the points,
+  // so a ball larger than its diagonal holds them all: the radius is capped there (a huge radius
+  // would overflow the locator's squared distances).
+  void FindPoints(double radius, const double* x, vtkIdList* result)
+  {
+    this->Locator->FindPointsWithinRadius(std::min(radius, this->Diagonal), x, result);
+  }
+
+  bool CanAdd(Id a, Id b, Id c) const;
+  int64_t Add(Id a, Id b, Id c, uint8_t origin);
+  void Progress();
+
+  vtkCDTAdvancingFront* Self;
+  const double* XYZ;
+  const double* Normals;
+  const std::vector<uint8_t>& Status;
+  vtkStaticPointLocator* Locator;
+  double Diagonal = 0.0; // of the bounding box of the points, slightly enlarged
+  pcs::SurfaceMesh& Mesh;
+  std::deque<std::pair<Id, Id>> Edges;
+
+  // Scratch.
+  vtkNew<vtkIdList> Near;
+  vtkNew<vtkIdList> Ball;
+  std::vector<std::pair<double, Id>> Candidates;
+  std::vector<Id> Neighbors;
+  std::vector<int64_t> VertexTriangles;
+  std::vector<std::pair<Id, Id>> HalfEdges;
+  std::vector<unsigned> Stamp;
+  unsigned CurrentStamp = 0;
+  double LongestEdge = 0;          // of the mesh: bounds the reach of an edge crossing a triangle
+  std::vector<double> MaxIncident; // per point: its longest edge
+  vtkIdType Steps = 0;
+  int ProjectionTests = 0; // of the current edge
+};
+
+bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& parameters)
+{
+  if (this->Status[third] != Usable || !this->CanAdd(e0, e1, third))
+  {
+    return false;
+  }
+  const double *n0 = this->N(e0), *n1 = this->N(e1), *n2 = this->N(third);
+  // II.C.1: the edge's end-point normals agree with the third point's.
+  if (Dot(n0, n2) <= 0.0 || Dot(n1, n2) <= 0.0)
+  {
+    return false;
+  }
+  // II.E: not collinear (exact), area large enough.
+  pcs::projected::TrianglePlane plane;
+  if (!plane.Set(this->P(e0), this->P(e1), this->P(third)))
+  {
+    return false;
+  }
+  const double* normal = plane.GetNormal();
+  const double length = std::sqrt(Dot(normal, normal));
+  if (!(0.5 * length >= parameters.MinimumArea) || !(length > 0.0))
+  {
+    return false;
+  }
+  // Orientation agrees with the vertex normals (the mesh is oriented like the normals).
+  const double sum[3] = { n0[0] + n1[0] + n2[0], n0[1] + n1[1] + n2[1], n0[2] + n1[2] + n2[2] };
+  if (Dot(normal, sum) <= 0.0)
+  {
+    return false;
+  }
+  // II.C.2: no dangling triangle (a weaker bound in the hole-filling step).
+  {
+    const double bound = parameters.MinimumNormalDot * length;
+    if (std::fabs(Dot(n0, normal)) < bound || std::fabs(Dot(n1, normal)) < bound ||
+      std::fabs(Dot(n2, normal)) < bound)
+    {
+      return false;
+    }
+  }
+  // II.C.3: the third vertices of the two triangles of the edge lie on different sides of the
+  // edge plane, unless their normals are opposite (Fig. 2b).
+  if (opposite != None && Dot(this->N(opposite), n2) >= 0.0)
+  {
+    const double* a = this->P(e0);
+    const double* b = this->P(e1);
+    const double* c = this->P(opposite);
+    // Normal of the existing triangle (e1, e0, opposite).
+    const double u[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+    const double v[3] = { c[0] - b[0], c[1] - b[1], c[2] - b[2] };
+    const double existing[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+      u[0] * v[1] - u[1] * v[0] };
+    const int sideOpposite = pcs::projected::EdgePlaneSide(a, b, existing, c);
+    const int sideThird = pcs::projected::EdgePlaneSide(a, b, existing, this->P(third));
+    if (sideOpposite * sideThird >= 0)
+    {
+      return false;
+    }
+  }
+
+  // The projection tests are the costly part: at most MaximumCandidates candidates of a front
+  // edge (or of a seed edge) get that far.
+  if (this->ProjectionTests >= parameters.MaximumCandidates)
+  {
+    return false;
+  }
+  ++this->ProjectionTests;
+
+  // II.D: the neighbourhood of the triangle (centroid g, vertices within `reach` of g). A point
+  // blocks it only when its normal line meets the triangle within MaximumRay: the point is
+  // within reach + MaximumRay of g. An edge u w crosses it only if a point of the projected
+  // segment, (1 - s) u' + s w' with u' = u + t_u n_u, |t_u| <= MaximumRay (the same for w), is in
+  // the triangle: the segment u w passes within reach + MaximumRay of g, and u is within that
+  // plus |u w| <= LongestEdge of g. These bounds only select what the exact tests then decide
+  // (1 % of margin against rounding).
+  const Id v[3] = { e0, e1, third };
+  double centroid[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    centroid[k] = (this->P(e0)[k] + this->P(e1)[k] + this->P(third)[k]) / 3.0;
+  }
+  double reach = 0.0;
+  for (Id i : v)
+  {
+    reach = std::max(reach, std::sqrt(Distance2(this->P(i), centroid)));
+  }
+  const double pointReach = reach + parameters.MaximumRay;
+  const double edgeReach = 1.01 * pointReach + this->LongestEdge;
+  const double segmentReach2 = 1.0201 * pointReach * pointReach;
+  this->FindPoints(edgeReach, centroid, this->Ball);
+  const vtkIdType count = this->Ball->GetNumberOfIds();
+  const double pointReach2 = pointReach * pointReach;
+
+  // II.D.1: neighbouring points (Fig. 3).
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    const Id p = static_cast<Id>(this->Ball->GetId(k));
+    if (p == e0 || p == e1 || p == third || this->Status[p] != Usable ||
+      Distance2(this->P(p), centroid) > pointReach2)
+    {
+      continue;
+    }
+    const double* np = this->N(p);
+    if (Dot(np, n0) <= 0.0 || Dot(np, n1) <= 0.0 || Dot(np, n2) <= 0.0)
+    {
+      continue; // Fig. 3b: the other side of a thin sheet
+    }
+    if (pcs::projected::LineCrossesTriangle(
+          this->P(p), np, this->P(e0), this->P(e1), this->P(third)))
+    {
+      double t;
+      if (pcs::projected::RayParameter(this->P(p), np, this->P(e0), normal, t) &&
+        std::fabs(t) <= parameters.MaximumRay)
+      {
+        return false;
+      }
+    }
+  }
+
+  // II.D.2: projected neighbouring edges (Fig. 4), each edge once (from its end point in the
+  // ball of smaller id, or the one end point in the ball).
+  ++this->CurrentStamp;
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    this->Stamp[this->Ball->GetId(k)] = this->CurrentStamp;
+  }
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    const Id u = static_cast<Id>(this->Ball->GetId(k));
+    const double uReach = 1.01 * pointReach + this->MaxIncident[u];
+    if (this->Mesh.IsFree(u) || Distance2(this->P(u), centroid) > uReach * uReach)
+    {
+      continue; // no edge of u reaches the triangle
+    }
+    this->Neighbors.clear();
+    GetVertexNeighbors(this->Mesh, u, this->VertexTriangles, this->Neighbors);
+    const bool uIsVertex = u == e0 || u == e1 || u == third;
+    for (Id w : this->Neighbors)
+    {
+      if (this->Stamp[w] == this->CurrentStamp && w < u)
+      {
+        continue; // seen from w
+      }
+      const bool wIsVertex = w == e0 || w == e1 || w == third;
+      if (uIsVertex && wIsVertex)
+      {
+        continue; // an edge of the triangle itself
+      }
+      if (SegmentDistance2(this->P(u), this->P(w), centroid) > segmentReach2)
+      {
+        continue; // too far to cross
+      }
+      const double *nu = this->N(u), *nw = this->N(w);
+      const double edgeNormal[3] = { nu[0] + nw[0], nu[1] + nw[1], nu[2] + nw[2] };
+      if (Dot(edgeNormal, sum) <= 0.0)
+      {
+        continue; // Fig. 4b
+      }
+      // Projected end points; a vertex of the triangle projects onto itself.
+      double pu[3], pw[3];
+      bool projected = true;
+      for (int end = 0; end < 2 && projected; ++end)
+      {
+        const Id x = end == 0 ? u : w;
+        const bool isVertex = end == 0 ? uIsVertex : wIsVertex;
+        double* out = end == 0 ? pu : pw;
+        const double* px = this->P(x);
+        if (isVertex)
+        {
+          std::copy(px, px + 3, out);
+          continue;
+        }
+        double t;
+        const double* nx = this->N(x);
+        if (!pcs::projected::RayParameter(px, nx, this->P(e0), normal, t) ||
+          std::fabs(t) > parameters.MaximumRay)
+        {
+          projected = false;
+          break;
+        }
+        for (int c = 0; c < 3; ++c)
+        {
+          out[c] = px[c] + t * nx[c];
+        }
+      }
+      if (projected && plane.SegmentCrosses(pu, pw))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters, bool relaxed)
+{
+  const double *a = this->P(e0), *b = this->P(e1);
+  const double midpoint[3] = { 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]) };
+  this->FindPoints(parameters.Radius, midpoint, this->Near);
+  this->Candidates.clear();
+  for (vtkIdType k = 0; k < this->Near->GetNumberOfIds(); ++k)
+  {
+    const Id x = static_cast<Id>(this->Near->GetId(k));
+    if (x == e0 || x == e1 || x == opposite || this->Status[x] != Usable ||
+      this->Mesh.IsInterior(x))
+    {
+      continue;
+    }
+    this->Candidates.emplace_back(Distance2(this->P(x), midpoint), x);
+  }
+  if (relaxed)
+  {
+    // III.C: the triangles with the adjacent boundary edges at a common vertex (ears), whatever
+    // their distance.
+    this->HalfEdges.clear();
+    GetBoundaryHalfEdges(this->Mesh, e0, this->HalfEdges);
+    GetBoundaryHalfEdges(this->Mesh, e1, this->HalfEdges);
+    for (const auto& halfEdge : this->HalfEdges)
+    {
+      for (Id x : { halfEdge.first, halfEdge.second })
+      {
+        if (x != e0 && x != e1 && x != opposite)
+        {
+          this->Candidates.emplace_back(Distance2(this->P(x), midpoint), x);
+        }
+      }
+    }
+  }
+  std::sort(this->Candidates.begin(), this->Candidates.end());
+  this->Candidates.erase(
+    std::unique(this->Candidates.begin(), this->Candidates.end()), this->Candidates.end());
+  this->ProjectionTests = 0;
+  for (const auto& candidate : this->Candidates)
+  {
+    if (this->IsValid(e0, e1, candidate.second, opposite, parameters))
+    {
+      return candidate.second;
+    }
+  }
+  return None;
+}
+
+bool Front::CanAdd(Id a, Id b, Id c) const
+{
+  // A pinch (a triangle touching a front vertex without sharing an edge with it) is allowed:
+  // two fronts, or two parts of one, meet that way, and the next triangles usually merge the two
+  // fans; RemovePinches undoes the pinches left at the end.
+  const pcs::SurfaceMesh::Check check = this->Mesh.CanAddTriangle(a, b, c);
+  return check == pcs::SurfaceMesh::Check::Ok ||
+    (this->AllowPinches && check == pcs::SurfaceMesh::Check::NonManifoldVertex &&
+      !this->Mesh.IsInterior(a) && !this->Mesh.IsInterior(b) && !this->Mesh.IsInterior(c));
+}
+
+int64_t Front::Add(Id a, Id b, Id c, uint8_t origin)
+{
+  const int64_t t = this->Mesh.AddTriangle(a, b, c);
+  if (t < 0)
+  {
+    return t;
+  }
+  this->Origin.push_back(origin);
+  const Id v[3] = { a, b, c };
+  for (int i = 0; i < 3; ++i)
+  {
+    const Id from = v[i], to = v[(i + 1) % 3];
+    const double length = std::sqrt(Distance2(this->P(from), this->P(to)));
+    this->LongestEdge = std::max(this->LongestEdge, length);
+    this->MaxIncident[from] = std::max(this->MaxIncident[from], length);
+    this->MaxIncident[to] = std::max(this->MaxIncident[to], length);
+  }
+  // Its edges, and the front edges next to its vertices (which may now close as ears).
+  for (int i = 0; i < 3; ++i)
+  {
+    this->Queue(v[i], v[(i + 1) % 3]);
+  }
+  this->HalfEdges.clear();
+  for (Id x : v)
+  {
+    GetBoundaryHalfEdges(this->Mesh, x, this->HalfEdges);
+  }
+  for (const auto& halfEdge : this->HalfEdges)
+  {
+    this->Queue(halfEdge.first, halfEdge.second);
+  }
+  return t;
+}
+
+void Front::Progress()
+{
+  if (++this->Steps % 1024 == 0)
+  {
+    const double fraction = std::min(1.0,
+      static_cast<double>(this->Mesh.GetNumberOfTriangles()) /
+        (2.0 * static_cast<double>(this->Mesh.GetNumberOfVertices()) + 1.0));
+    this->Self->UpdateProgress(0.2 + 0.7 * fraction);
+    this->Aborted = this->Self->GetAbortExecute() != 0;
+  }
+}
+
+bool Front::Advance(const Parameters& parameters, bool relaxed, uint8_t origin)
+{
+  while (!this->Edges.empty() && !this->Aborted)
+  {
+    const Id a = this->Edges.front().first;
+    const Id b = this->Edges.front().second;
+    this->Edges.pop_front();
+    if (!this->Mesh.IsBoundaryHalfEdge(a, b))
+    {
+      continue; // not a front edge (any more)
+    }
+    this->Progress();
+    // The new triangle traverses the edge the other way: (b, a, x).
+    const Id opposite = this->Mesh.OppositeVertex(a, b);
+    const Id x = this->BestThirdPoint(b, a, opposite, parameters, relaxed);
+    if (x != None)
+    {
+      this->Add(b, a, x, origin);
+    }
+  }
+  return !this->Aborted;
+}
+
+bool Front::Seed(Id p, const Parameters& parameters)
+{
+  // The nearest points first (the paper's rule), then the next ones if no triangle is valid.
+  this->FindPoints(parameters.Radius, this->P(p), this->Near);
+  std::vector<std::pair<double, Id>> firsts;
+  for (vtkIdType k = 0; k < this->Near->GetNumberOfIds(); ++k)
+  {
+    const Id q = static_cast<Id>(this->Near->GetId(k));
+    if (q != p && this->Status[q] == Usable && Dot(this->N(p), this->N(q)) > 0.0 &&
+      !this->Mesh.IsInterior(q))
+    {
+      firsts.emplace_back(Distance2(this->P(p), this->P(q)), q);
+    }
+  }
+  std::sort(firsts.begin(), firsts.end());
+  for (const auto& first : firsts)
+  {
+    const Id q = first.second;
+    // Orientation from the normals: try (p, q, x); IsValid rejects the reversed orientation, so
+    // the other one is tried with the same third point.
+    const double *a = this->P(p), *b = this->P(q);
+    const double midpoint[3] = { 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]) };
+    this->FindPoints(parameters.Radius, midpoint, this->Near);
+    this->Candidates.clear();
+    for (vtkIdType k = 0; k < this->Near->GetNumberOfIds(); ++k)
+    {
+      const Id x = static_cast<Id>(this->Near->GetId(k));
+      if (x != p && x != q && this->Status[x] == Usable && !this->Mesh.IsInterior(x))
+      {
+        this->Candidates.emplace_back(Distance2(this->P(x), midpoint), x);
+      }
+    }
+    std::sort(this->Candidates.begin(), this->Candidates.end());
+    this->ProjectionTests = 0;
+    for (const auto& candidate : this->Candidates)
+    {
+      const Id x = candidate.second;
+      if (this->IsValid(p, q, x, None, parameters))
+      {
+        this->Add(p, q, x, 0);
+        ++this->NumberOfSeeds;
+        return true;
+      }
+      if (this->IsValid(q, p, x, None, parameters))
+      {
+        this->Add(q, p, x, 0);
+        ++this->NumberOfSeeds;
+        return true;
+      }
+    }
+  }
+  return false;
+}
+} // namespace
+
+//------------------------------------------------------------------------------------------------
+vtkCDTAdvancingFront::vtkCDTAdvancingFront()
+{
+  // Input array 0: the point normals (the active normals attribute unless set otherwise).
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::NORMALS);
+}
+
+vtkCDTAdvancingFront::~vtkCDTAdvancingFront() = default;
+
+int vtkCDTAdvancingFront::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+//------------------------------------------------------------------------------------------------
+int vtkCDTAdvancingFront::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  // Under MPI the whole cloud is meshed on process 0; the other processes' outputs stay empty.
+  vtkSmartPointer<vtkPointSet> input =
+    pcs::GatherInputOnFirstProcess(vtkPointSet::GetData(inputVector[0]));
+  if (!input && output)
+  {
+    return 1;
+  }
+  if (!input || !output)
+  {
+    vtkErrorMacro("Missing input or output data object.");
+    return 0;
+  }
+  this->NumberOfTriangles = 0;
+  this->NumberOfFrontTriangles = 0;
+  this->NumberOfSeedTriangles = 0;
+  this->NumberOfHoleFillingTriangles = 0;
+  this->NumberOfHoleTriangles = 0;
+  this->NumberOfUnusedPoints = 0;
+  this->NumberOfDuplicatePoints = 0;
+  this->NumberOfSkippedPoints = 0;
+  this->NumberOfRemovedTriangles = 0;
+  this->MeanSpacing = 0.0;
+  this->NeighborhoodRadiusUsed = 0.0;
+
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  this->UpdateProgress(0.01);
+
+  // Every input point and its data pass through; triangles are added at the end.
+  if (input->GetPoints())
+  {
+    output->SetPoints(input->GetPoints());
+  }
+  output->GetPointData()->PassData(input->GetPointData());
+  vtkNew<vtkUnsignedCharArray> used;
+  used->SetName("Used");
+  used->SetNumberOfValues(numberOfPoints);
+  used->FillValue(0);
+  output->GetPointData()->AddArray(used);
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkUnsignedCharArray> holeFilled;
+  holeFilled->SetName("HoleFilled");
+  vtkNew<vtkUnsignedCharArray> holeTriangle;
+  holeTriangle->SetName("HoleTriangle");
+  std::vector<double> angles; // Table 2: per used point
+
+  auto finish = [&]()
+  {
+    output->SetPolys(polys);
+    holeFilled->SetNumberOfValues(polys->GetNumberOfCells());
+    holeTriangle->SetNumberOfValues(polys->GetNumberOfCells());
+    output->GetCellData()->AddArray(holeFilled);
+    output->GetCellData()->AddArray(holeTriangle);
+    this->NumberOfUnusedPoints = 0;
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    {
+      this->NumberOfUnusedPoints += used->GetValue(i) ? 0 : 1;
+    }
+    vtkFieldData* fd = output->GetFieldData();
+    pcs::AddFieldCount(fd, "NumberOfPoints", numberOfPoints);
+    pcs::AddFieldCount(fd, "NumberOfTriangles", this->NumberOfTriangles);
+    pcs::AddFieldCount(fd, "NumberOfHoleFillingTriangles", this->NumberOfHoleFillingTriangles);
+    pcs::AddFieldCount(fd, "NumberOfHoleTriangles", this->NumberOfHoleTriangles);
+    pcs::AddFieldCount(fd, "NumberOfFrontTriangles", this->NumberOfFrontTriangles);
+    pcs::AddFieldCount(fd, "NumberOfSeedTriangles", this->NumberOfSeedTriangles);
+    pcs::AddFieldCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
+    pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", this->NumberOfDuplicatePoints);
+    pcs::AddFieldCount(fd, "NumberOfSkippedPoints", this->NumberOfSkippedPoints);
+    pcs::AddFieldCount(fd, "NumberOfRemovedTriangles", this->NumberOfRemovedTriangles);
+    double mean = std::numeric_limits<double>::quiet_NaN(), deviation = mean, low = mean,
+           high = mean;
+    if (!angles.empty())
+    {
+      double sum = 0.0;
+      low = angles.front();
+      high = angles.front();
+      for (double a : angles)
+      {
+        sum += a;
+        low = std::min(low, a);
+        high = std::max(high, a);
+      }
+      mean = sum / static_cast<double>(angles.size());
+      double squares = 0.0;
+      for (double a : angles)
+      {
+        squares += (a - mean) * (a - mean);
+      }
+      deviation = std::sqrt(squares / static_cast<double>(angles.size()));
+    }
+    pcs::AddFieldValue(fd, "NormalAngleMean", mean);
+    pcs::AddFieldValue(fd, "NormalAngleDeviation", deviation);
+    pcs::AddFieldValue(fd, "NormalAngleMin", low);
+    pcs::AddFieldValue(fd, "NormalAngleMax", high);
+    pcs::AddFieldValue(fd, "MeanSpacing", this->MeanSpacing);
+    pcs::AddFieldValue(fd, "NeighborhoodRadiusUsed", this->NeighborhoodRadiusUsed);
+    if (this->NumberOfUnusedPoints > 0 && !this->GetAbortExecute())
+    {
+      vtkWarningMacro(<< this->NumberOfUnusedPoints << " of " << numberOfPoints
+                      << " point(s) are not used by any triangle (point data Used = 0).");
+    }
+    this->UpdateProgress(1.0);
+    return 1;
+  };
+
+  if (numberOfPoints == 0)
+  {
+    vtkWarningMacro("The input has no points: the output is empty.");
+    return finish();
+  }
+  if (numberOfPoints > MaximumNumberOfPoints)
+  {
+    vtkErrorMacro("The input has " << numberOfPoints << " points; at most " << MaximumNumberOfPoints
+                                   << " are supported.");
+    return finish();
+  }
+
+  // Coordinates as doubles; the finite points form the cloud the locator and the normal
+  // estimation see (local ids), mapped back to input ids at the end.
+  vtkPoints* inputPoints = input->GetPoints();
+  std::vector<double> all(3 * static_cast<size_t>(numberOfPoints));
+  vtkSMPTools::For(0, numberOfPoints,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        inputPoints->GetPoint(i, &all[3 * i]);
+      }
+    });
+  std::vector<Id> inputId; // local id -> input id
+  inputId.reserve(numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    const double* p = &all[3 * i];
+    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
+    {
+      inputId.push_back(static_cast<Id>(i));
+    }
+  }
+  const Id local = static_cast<Id>(inputId.size());
+  this->NumberOfSkippedPoints = numberOfPoints - local;
+  std::vector<double> xyz(3 * static_cast<size_t>(local));
+  for (Id k = 0; k < local; ++k)
+  {
+    std::copy_n(&all[3 * static_cast<size_t>(inputId[k])], 3, &xyz[3 * static_cast<size_t>(k)]);
+  }
+  all.clear();
+  all.shrink_to_fit();
+  // Coordinates far from 1 in magnitude are scaled by a power of two (exact) so that the exact
+  // predicates and the cross products neither overflow nor underflow; lengths are converted
+  // back for the counts and the parameters are converted to the scaled units.
+  int exponent = 0;
+  {
+    std::vector<int32_t> everyPoint(static_cast<size_t>(local));
+    for (Id k = 0; k < local; ++k)
+    {
+      everyPoint[k] = k;
+    }
+    exponent = pcs::PredicateSafeExponent(xyz.data(), 3, everyPoint);
+    if (exponent != 0)
+    {
+      for (double& c : xyz)
+      {
+        c = std::ldexp(c, exponent);
+      }
+    }
+  }
+  if (this->NumberOfSkippedPoints > 0)
+  {
+    vtkWarningMacro(
+      "Skipped " << this->NumberOfSkippedPoints << " point(s) with NaN or infinite coordinates.");
+  }
+  if (local < 3)
+  {
+    vtkWarningMacro(
+      "Fewer than 3 points with finite coordinates (" << local << "): no triangle is made.");
+    return finish();
+  }
+  vtkNew<vtkDoubleArray> localCoordinates;
+  localCoordinates->SetNumberOfComponents(3);
+  localCoordinates->SetArray(xyz.data(), 3 * static_cast<vtkIdType>(local), 1);
+  vtkNew<vtkPoints> localPoints;
+  localPoints->SetData(localCoordinates);
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(localPoints);
+  vtkNew<vtkStaticPointLocator> locator;
+  locator->SetDataSet(cloud);
+  locator->BuildLocator();
+  this->UpdateProgress(0.02);
+  if (this->GetAbortExecute())
+  {
+    return finish();
+  }
+
+  // Normals: the input's, else estimated (vtkPCANormalEstimation, consistently oriented).
+  std::vector<double> normals(3 * static_cast<size_t>(local), 0.0);
+  vtkDataArray* inputNormals =
+    this->UseInputNormals ? this->GetInputArrayToProcess(0, input) : nullptr;
+  if (inputNormals &&
+    (inputNormals->GetNumberOfComponents() != 3 ||
+      inputNormals->GetNumberOfTuples() != numberOfPoints))
+  {
+    vtkWarningMacro("The normals array " << (inputNormals->GetName() ? inputNormals->GetName() : "")
+                                         << " is not a 3-component point array: the normals "
+                                            "are estimated instead.");
+    inputNormals = nullptr;
+  }
+  if (inputNormals)
+  {
+    for (Id k = 0; k < local; ++k)
+    {
+      inputNormals->GetTuple(inputId[k], &normals[3 * static_cast<size_t>(k)]);
+    }
+  }
+  else
+  {
+    vtkNew<vtkPCANormalEstimation> estimation;
+    estimation->SetInputData(cloud);
+    estimation->SetSampleSize(std::min<int>(this->NormalSampleSize, local));
+    estimation->SetNormalOrientationToGraphTraversal();
+    estimation->Update();
+    vtkDataArray* estimated = estimation->GetOutput()->GetPointData()->GetNormals();
+    if (estimated && estimated->GetNumberOfTuples() == local)
+    {
+      for (Id k = 0; k < local; ++k)
+      {
+        estimated->GetTuple(k, &normals[3 * static_cast<size_t>(k)]);
+      }
+    }
+    // Passed to the output ("Normals", or "EstimatedNormals" if the input has a "Normals").
+    vtkNew<vtkDoubleArray> outputNormals;
+    const bool clash = output->GetPointData()->GetArray("Normals") != nullptr;
+    outputNormals->SetName(clash ? "EstimatedNormals" : "Normals");
+    outputNormals->SetNumberOfComponents(3);
+    outputNormals->SetNumberOfTuples(numberOfPoints);
+    outputNormals->Fill(0.0);
+    for (Id k = 0; k < local; ++k)
+    {
+      outputNormals->SetTuple(inputId[k], &normals[3 * static_cast<size_t>(k)]);
+    }
+    output->GetPointData()->AddArray(outputNormals);
+    if (!output->GetPointData()->GetNormals())
+    {
+      output->GetPointData()->SetNormals(outputNormals);
+    }
+  }
+  this->UpdateProgress(0.1);
+  if (this->GetAbortExecute())
+  {
+    return finish();
+  }
+
+  // Unit normals; zero-length or non-finite ones exclude their point.
+  std::vector<uint8_t> status(local, Usable);
+  vtkIdType badNormals = 0;
+  for (Id k = 0; k < local; ++k)
+  {
+    double* n = &normals[3 * static_cast<size_t>(k)];
+    const double length = std::sqrt(Dot(n, n));
+    if (!std::isfinite(length) || length == 0.0)
+    {
+      status[k] = BadNormal;
+      ++badNormals;
+      continue;
+    }
+    n[0] /= length;
+    n[1] /= length;
+    n[2] /= length;
+  }
+  this->NumberOfSkippedPoints += badNormals;
+  if (badNormals > 0)
+  {
+    vtkWarningMacro(
+      "Skipped " << badNormals << " point(s) whose normal is zero-length or not finite.");
+  }
+
+  // Exact duplicates (vtkStaticPointLocator::MergePoints with a zero tolerance): in each group of
+  // equal points the usable point of smallest id is kept. Then the mean spacing: the mean
+  // distance from a point to its nearest distinct point.
+  {
+    std::vector<vtkIdType> merged(local);
+    locator->MergePoints(0.0, merged.data());
+    std::vector<Id> kept(local, None); // per group (indexed by its merge target): the kept point
+    for (Id k = 0; k < local; ++k)
+    {
+      const vtkIdType group = merged[k];
+      if (status[k] != Usable || group < 0 || group >= local)
+      {
+        continue;
+      }
+      if (kept[group] == None)
+      {
+        kept[group] = k;
+      }
+      else
+      {
+        status[k] = Duplicate;
+      }
+    }
+  }
+  for (Id k = 0; k < local; ++k)
+  {
+    this->NumberOfDuplicatePoints += status[k] == Duplicate ? 1 : 0;
+  }
+  if (this->NumberOfDuplicatePoints > 0)
+  {
+    vtkWarningMacro("Ignored " << this->NumberOfDuplicatePoints
+                               << " exact duplicate point(s) (the copy of smallest id is meshed).");
+  }
+  std::vector<double> nearest(local, -1.0);
+  {
+    vtkSMPThreadLocalObject<vtkIdList> lists;
+    vtkSMPTools::For(0, local,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        vtkIdList* closest = lists.Local();
+        for (vtkIdType k = begin; k < end; ++k)
+        {
+          if (status[k] != Usable)
+          {
+            continue;
+          }
+          for (int n = 2; n <= 2 * local; n *= 2)
+          {
+            locator->FindClosestNPoints(n, &xyz[3 * k], closest);
+            for (vtkIdType j = 0; j < closest->GetNumberOfIds(); ++j)
+            {
+              const double d2 = Distance2(&xyz[3 * closest->GetId(j)], &xyz[3 * k]);
+              if (d2 > 0.0)
+              {
+                nearest[k] = std::sqrt(d2);
+                break;
+              }
+            }
+            if (nearest[k] >= 0.0 || closest->GetNumberOfIds() < n)
+            {
+              break;
+            }
+          }
+        }
+      });
+  }
+  vtkIdType usable = 0;
+  double spacing = 0.0;
+  vtkIdType spaced = 0;
+  for (Id k = 0; k < local; ++k)
+  {
+    if (status[k] == Usable)
+    {
+      ++usable;
+      if (nearest[k] > 0.0)
+      {
+        spacing += nearest[k];
+        ++spaced;
+      }
+    }
+  }
+  const double meanSpacing = spaced > 0 ? spacing / static_cast<double>(spaced) : 0.0;
+  this->MeanSpacing = std::ldexp(meanSpacing, -exponent);
+  if (usable < 3 || meanSpacing <= 0.0)
+  {
+    vtkWarningMacro("Fewer than 3 distinct usable points (" << usable << "): no triangle is made.");
+    return finish();
+  }
+  this->UpdateProgress(0.2);
+  if (this->GetAbortExecute())
+  {
+    return finish();
+  }
+
+  // The parameters in the (scaled) units of xyz.
+  Parameters strict;
+  strict.Radius = this->NeighborhoodRadius > 0.0 ? std::ldexp(this->NeighborhoodRadius, exponent)
+                                                 : this->NeighborhoodRadiusFactor * meanSpacing;
+  strict.MinimumNormalDot = this->MinimumNormalDot;
+  strict.MaximumRay = this->MaximumRayDistance > 0.0
+    ? std::ldexp(this->MaximumRayDistance, exponent)
+    : 2.0 * meanSpacing;
+  strict.MaximumCandidates = this->MaximumNumberOfCandidates;
+  strict.MinimumArea = this->MinimumTriangleArea > 0.0
+    ? std::ldexp(this->MinimumTriangleArea, 2 * exponent)
+    : 1e-6 * meanSpacing * meanSpacing;
+  this->NeighborhoodRadiusUsed = std::ldexp(strict.Radius, -exponent);
+
+  // III.A and III.B: seeds in input order, each grown by the advancing front.
+  pcs::SurfaceMesh mesh(local);
+  Front front(this, xyz.data(), normals.data(), status, locator, mesh);
+  for (Id p = 0; p < local && !front.Aborted; ++p)
+  {
+    if (status[p] != Usable || !mesh.IsFree(p))
+    {
+      continue;
+    }
+    if (front.Seed(p, strict))
+    {
+      front.Advance(strict, false, 1);
+    }
+  }
+  // III.C: the front edges left, with the relaxed rules. Then the pinches left (two fronts that
+  // touched at a vertex and never merged) are undone, and the holes this opens are filled again,
+  // this time without pinches, so that the result is a manifold.
+  Parameters relaxed = strict;
+  relaxed.Radius = this->HoleFillingRadiusFactor * strict.Radius;
+  relaxed.MinimumNormalDot = this->HoleFillingMinimumNormalDot;
+  auto fillHoles = [&]()
+  {
+    std::vector<std::vector<Id>> loops;
+    mesh.GetBoundaryLoops(loops);
+    for (const std::vector<Id>& loop : loops)
+    {
+      for (size_t k = 0; k < loop.size(); ++k)
+      {
+        front.Queue(loop[k], loop[(k + 1) % loop.size()]);
+      }
+    }
+    front.Advance(relaxed, true, 2);
+  };
+  if (this->HoleFilling && !front.Aborted)
+  {
+    fillHoles();
+  }
+  if (!front.Aborted)
+  {
+    this->NumberOfRemovedTriangles = RemovePinches(mesh);
+    if (this->NumberOfRemovedTriangles > 0 && this->HoleFilling)
+    {
+      front.AllowPinches = false;
+      fillHoles();
+    }
+  }
+  if (front.Aborted)
+  {
+    return finish(); // no triangles on abort
+  }
+
+  // Output: triangles over input ids, cell data, Used, Table 2.
+  const Id triangles = static_cast<Id>(mesh.GetNumberOfTriangles());
+  vtkNew<vtkTypeInt32Array> offsets;
+  offsets->SetNumberOfValues(triangles + 1);
+  vtkNew<vtkTypeInt32Array> connectivity;
+  connectivity->SetNumberOfValues(3 * static_cast<vtkIdType>(triangles));
+  holeFilled->SetNumberOfValues(triangles);
+  holeTriangle->SetNumberOfValues(triangles);
+  std::vector<double> angleSum(local, 0.0);
+  std::vector<int> angleCount(local, 0);
+  for (int64_t slot = 0, t = 0; slot < mesh.GetNumberOfTriangleIds(); ++slot)
+  {
+    if (mesh.IsTriangleRemoved(slot))
+    {
+      continue;
+    }
+    const int32_t* v = mesh.GetTriangle(slot);
+    offsets->SetValue(t, 3 * t);
+    bool hole = false;
+    for (int i = 0; i < 3; ++i)
+    {
+      connectivity->SetValue(3 * t + i, inputId[v[i]]);
+      used->SetValue(inputId[v[i]], 1);
+      hole = hole || mesh.GetEdgeValence(v[i], v[(i + 1) % 3]) == 1;
+    }
+    holeFilled->SetValue(t, front.Origin[slot] == 2 ? 1 : 0);
+    holeTriangle->SetValue(t, hole ? 1 : 0);
+    this->NumberOfHoleTriangles += hole ? 1 : 0;
+    this->NumberOfHoleFillingTriangles += front.Origin[slot] == 2 ? 1 : 0;
+    this->NumberOfSeedTriangles += front.Origin[slot] == 0 ? 1 : 0;
+    // Table 2: angle between each vertex normal and the triangle's plane.
+    const double* a = &xyz[3 * static_cast<size_t>(v[0])];
+    const double* b = &xyz[3 * static_cast<size_t>(v[1])];
+    const double* c = &xyz[3 * static_cast<size_t>(v[2])];
+    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double w[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+    double normal[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+      u[0] * w[1] - u[1] * w[0] };
+    const double length = std::sqrt(Dot(normal, normal));
+    for (int i = 0; i < 3; ++i)
+    {
+      const double cosine =
+        std::min(1.0, std::fabs(Dot(normal, &normals[3 * static_cast<size_t>(v[i])])) / length);
+      angleSum[v[i]] += std::asin(cosine) * 180.0 / 3.14159265358979323846;
+      ++angleCount[v[i]];
+    }
+    ++t;
+  }
+  offsets->SetValue(triangles, 3 * triangles);
+  polys->SetData(offsets, connectivity);
+  for (Id k = 0; k < local; ++k)
+  {
+    if (angleCount[k] > 0)
+    {
+      angles.push_back(angleSum[k] / angleCount[k]);
+    }
+  }
+  this->NumberOfTriangles = triangles;
+  this->NumberOfFrontTriangles = triangles - this->NumberOfHoleFillingTriangles;
+  if (triangles == 0)
+  {
+    vtkWarningMacro("No valid triangle was found among the "
+      << usable
+      << " usable point(s) (collinear points, inconsistent normals, or a "
+         "NeighborhoodRadius too small?).");
+  }
+  return finish();
+}
+
+//------------------------------------------------------------------------------------------------
+void vtkCDTAdvancingFront::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "UseInputNormals: " << (this->UseInputNormals ? "On" : "Off") << "\n";
+  os << indent << "NormalSampleSize: " << this->NormalSampleSize << "\n";
+  os << indent << "NeighborhoodRadius: " << this->NeighborhoodRadius << "\n";
+  os << indent << "NeighborhoodRadiusFactor: " << this->NeighborhoodRadiusFactor << "\n";
+  os << indent << "MinimumNormalDot: " << this->MinimumNormalDot << "\n";
+  os << indent << "MaximumRayDistance: " << this->MaximumRayDistance << "\n";
+  os << indent << "MinimumTriangleArea: " << this->MinimumTriangleArea << "\n";
+  os << indent << "MaximumNumberOfCandidates: " << this->MaximumNumberOfCandidates << "\n";
+  os << indent << "HoleFilling: " << (this->HoleFilling ? "On" : "Off") << "\n";
+  os << indent << "HoleFillingRadiusFactor: " << this->HoleFillingRadiusFactor << "\n";
+  os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";
+  os << indent << "NumberOfFrontTriangles: " << this->NumberOfFrontTriangles << "\n";
+  os << indent << "NumberOfSeedTriangles: " << this->NumberOfSeedTriangles << "\n";
+  os << indent << "NumberOfHoleFillingTriangles: " << this->NumberOfHoleFillingTriangles << "\n";
+  os << indent << "NumberOfHoleTriangles: " << this->NumberOfHoleTriangles << "\n";
+  os << indent << "NumberOfUnusedPoints: " << this->NumberOfUnusedPoints << "\n";
+  os << indent << "NumberOfDuplicatePoints: " << this->NumberOfDuplicatePoints << "\n";
+  os << indent << "NumberOfSkippedPoints: " << this->NumberOfSkippedPoints << "\n";
+  os << indent << "NumberOfRemovedTriangles: " << this->NumberOfRemovedTriangles << "\n";
+  os << indent << "MeanSpacing: " << this->MeanSpacing << "\n";
+  os << indent << "NeighborhoodRadiusUsed: " << this->NeighborhoodRadiusUsed << "\n";
+}

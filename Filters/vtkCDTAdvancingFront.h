@@ -1,0 +1,265 @@
+/**
+ * @class   vtkCDTAdvancingFront
+ * @brief   surface triangle mesh of a point cloud with normals by a constrained Delaunay
+ *          advancing front (Huang & Wischgoll).
+ *
+ * vtkCDTAdvancingFront meshes the points of any vtkPointSet (its cells are ignored) that sample
+ * a surface, using a normal at every point. It implements paper 003: Q. Huang, T. Wischgoll,
+ * "A Constrained Delaunay Triangle Mesh Method for Three-Dimensional Unstructured Boundary Point
+ * Cloud". No point is added (no Steiner points); every triangle joins three input points.
+ *
+ * Normals: the input's point normals when UseInputNormals is on and the array selected with
+ * SetInputArrayToProcess(0, ...) (by default the active point normals) is a 3-component point
+ * array; otherwise they are estimated with vtkPCANormalEstimation (NormalSampleSize nearest
+ * points, orientation made consistent by its graph traversal, which points the normal of the
+ * point of smallest x towards -x: outwards on a closed surface). The normals used are passed to
+ * the output (point data `Normals` when estimated).
+ *
+ * Rules (section II; each one a parameter below). A triangle is a candidate when all hold:
+ * - II.A: its third point lies in the sphere of radius NeighborhoodRadius around the midpoint of
+ *   the front edge; among the valid candidates the one closest to that midpoint is chosen (ties:
+ *   the smaller point id).
+ * - II.C.1: the normals of the front edge's end points each have a positive dot product with the
+ *   third point's normal.
+ * - II.C.2: |n . N| >= MinimumNormalDot for each vertex normal n and the unit triangle normal N
+ *   (no "dangling" triangle).
+ * - II.C.3: an edge has at most two triangles, and the third vertices of the two lie on
+ *   different sides of the edge plane (through the edge, perpendicular to the existing
+ *   triangle), unless their normals point in opposite directions (Fig. 2b, a thin sheet). The
+ *   side is an exact orientation sign (a point on the plane is on neither side).
+ * - II.D.1: no neighbouring point whose normal has a positive dot product with the three vertex
+ *   normals (Fig. 3b/3c) projects, along its normal or its reverse, strictly inside the triangle
+ *   at a distance of at most MaximumRayDistance (decided exactly as the crossing of the open
+ *   triangle by the point's normal line).
+ * - II.D.2: no edge of the mesh whose end-point normals (averaged) have a positive dot product
+ *   with the averaged vertex normals (Fig. 4b/4c), projected along its end points' normals onto
+ *   the triangle's plane (each within MaximumRayDistance), crosses the open triangle; the crossing
+ *   is the case analysis of section II.B (Fig. 1a-g), decided with exact orientation signs on the
+ *   projected end points (pcsProjectedTests).
+ * - II.E: the vertices are not collinear (exact) and the area is at least MinimumTriangleArea.
+ * Two further conditions, implied by the paper's intent, are written down here: the triangle's
+ * orientation (inherited from the triangle across the front edge, so that the mesh is
+ * consistently oriented) must agree with its vertex normals (N . (n1 + n2 + n3) > 0), and the
+ * mesh must stay a manifold: a triangle is only added when each of its edges keeps at most two
+ * triangles traversed in opposite directions and each vertex keeps a single fan of triangles.
+ *
+ * Steps (section III):
+ * - III.A seeds: in input order, every point not yet meshed starts a seed triangle: its nearest
+ *   point (then the next nearest ones, if no triangle is valid) gives the first edge, and the
+ *   third point is the valid one closest to that edge's midpoint. A point that starts no seed
+ *   and is never reached by a front stays unused. Seeds continue until every point is meshed or
+ *   rejected.
+ * - III.B advancing front: the edges of every new triangle are queued (first in, first out); an
+ *   edge with a single triangle is a front edge and is expanded with the best valid third point.
+ * - III.C hole filling (HoleFilling, default on): the front edges left are expanded again with
+ *   the relaxed rules of the paper: a neighbourhood radius reduced by HoleFillingRadiusFactor,
+ *   and no II.C.2. The triangles formed with the two edges at a common vertex of a hole (ears)
+ *   are among these candidates. Open boundaries whose points are farther apart than the
+ *   reduced radius (the rims of an open cylinder) stay open.
+ *
+ * Output (vtkPolyData): all input points and their point data, plus point data `Used` (1 for a
+ * triangle vertex) and `Normals` (when estimated); consistently oriented triangles with cell
+ * data `HoleFilled` (1: made by the hole-filling step) and `HoleTriangle` (1: an edge with a
+ * single triangle); field data with the columns of the paper's Table 1 (`NumberOfPoints`,
+ * `NumberOfTriangles`, `NumberOfHoleFillingTriangles`, `NumberOfHoleTriangles`), its Table 2
+ * (`NormalAngleMean`, `NormalAngleDeviation`, `NormalAngleMin`, `NormalAngleMax`: statistics
+ * over the used points of the mean angle, in degrees, between a point's normal and the planes of
+ * its triangles; 90 means tangent), and `NumberOfFrontTriangles` (seed and front triangles),
+ * `NumberOfSeedTriangles`, `NumberOfUnusedPoints`, `NumberOfDuplicatePoints`,
+ * `NumberOfSkippedPoints` (non-finite coordinates or normals, zero-length normals),
+ * `MeanSpacing` and `NeighborhoodRadiusUsed`.
+ *
+ * Cost: each front edge queries the points within NeighborhoodRadius (vtkStaticPointLocator),
+ * tests candidates in order of distance until one is valid, and each test visits the points and
+ * mesh edges near the triangle: O(N K) for N points and K points per neighbourhood. Duplicate
+ * detection, the mean spacing and the normal estimation run in parallel (vtkSMPTools); the front
+ * itself is sequential.
+ *
+ * @warning
+ * The result depends on the normals: they must be consistently oriented (a flipped patch is
+ * meshed separately, the II.C.1 rule stops the front at the flip). Exact duplicate points are
+ * meshed once (the other copies stay unused and are counted). Points with non-finite
+ * coordinates, non-finite or zero-length normals are skipped and counted, with a warning. Fewer
+ * than 3 usable points give a warning and an output without triangles. Under MPI the input is
+ * gathered on process 0, which computes the mesh; the other processes output nothing.
+ *
+ * @sa
+ * vtkPCANormalEstimation vtkStaticPointLocator vtkReconstructionQuality vtkIncrementalDelaunay3D
+ */
+
+#ifndef vtkCDTAdvancingFront_h
+#define vtkCDTAdvancingFront_h
+
+#include "vtkPointCloudSurfaceFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class VTKPOINTCLOUDSURFACEFILTERS_EXPORT vtkCDTAdvancingFront : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkCDTAdvancingFront* New();
+  vtkTypeMacro(vtkCDTAdvancingFront, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Use the input's point normals (the array selected with SetInputArrayToProcess(0, ...), by
+   * default the active normals) when present. Default on. When off, or when the input has no
+   * such 3-component point array, the normals are estimated with vtkPCANormalEstimation.
+   */
+  vtkSetMacro(UseInputNormals, bool);
+  vtkGetMacro(UseInputNormals, bool);
+  vtkBooleanMacro(UseInputNormals, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Number of nearest points used by vtkPCANormalEstimation when the normals are estimated.
+   * Default 10; range [3, 100] (the estimation's cost grows quickly with it).
+   */
+  vtkSetClampMacro(NormalSampleSize, int, 3, 100);
+  vtkGetMacro(NormalSampleSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Radius of the sphere around a front edge's midpoint in which third points are searched
+   * (section II.A). Default 0: automatic, NeighborhoodRadiusFactor times the mean spacing (the
+   * mean distance from a point to its nearest distinct point). Range [0, VTK_DOUBLE_MAX].
+   */
+  vtkSetClampMacro(NeighborhoodRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(NeighborhoodRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * The automatic NeighborhoodRadius in units of the mean spacing (used when NeighborhoodRadius
+   * is 0). Default 3; range [1, 100].
+   */
+  vtkSetClampMacro(NeighborhoodRadiusFactor, double, 1.0, 100.0);
+  vtkGetMacro(NeighborhoodRadiusFactor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Section II.C.2: smallest |n . N| between a vertex's unit normal n and the unit normal N of a
+   * new triangle (the cosine of the largest angle between them). Default 0.5 (60 degrees);
+   * range [0, 1]. Not applied by the hole-filling step (section III.C).
+   */
+  vtkSetClampMacro(MinimumNormalDot, double, 0.0, 1.0);
+  vtkGetMacro(MinimumNormalDot, double);
+  ///@}
+
+  ///@{
+  /**
+   * Sections II.D.1-2: a neighbouring point or edge end point blocks a triangle only when its
+   * normal ray reaches the triangle's plane within this distance. Default 0: automatic, twice
+   * the mean spacing. Range [0, VTK_DOUBLE_MAX].
+   */
+  vtkSetClampMacro(MaximumRayDistance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumRayDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Cost bound: per front edge (and per seed edge), at most this many candidate third points,
+   * the closest to the edge's midpoint among those that pass the cheap rules (II.C, II.E, the
+   * manifold rule), are submitted to the projection tests of section II.D; if none passes, the
+   * edge stays on the front. Default 20; range [1, 100000]. With reasonable parameters the first
+   * or second candidate submitted is almost always accepted, so the bound only matters for
+   * extreme settings (a huge NeighborhoodRadius or MaximumRayDistance), which would otherwise
+   * cost O(N) tests per candidate for O(N) candidates.
+   */
+  vtkSetClampMacro(MaximumNumberOfCandidates, int, 1, 100000);
+  vtkGetMacro(MaximumNumberOfCandidates, int);
+  ///@}
+
+  ///@{
+  /**
+   * Section II.E: smallest area of a triangle. Default 0: automatic, 1e-6 times the squared mean
+   * spacing. Exactly collinear vertices are always rejected. Range [0, VTK_DOUBLE_MAX].
+   */
+  vtkSetClampMacro(MinimumTriangleArea, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MinimumTriangleArea, double);
+  ///@}
+
+  ///@{
+  /**
+   * Section III.C: fill the holes left by the advancing front with relaxed rules. Default on.
+   */
+  vtkSetMacro(HoleFilling, bool);
+  vtkGetMacro(HoleFilling, bool);
+  vtkBooleanMacro(HoleFilling, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Section III.C, "reduce the proximity neighbouring region": the hole-filling radius is this
+   * factor times the neighbourhood radius used. Default 0.5; range [0.01, 1].
+   */
+  vtkSetClampMacro(HoleFillingRadiusFactor, double, 0.01, 1.0);
+  vtkGetMacro(HoleFillingRadiusFactor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Section III.C: the bound of section II.C.2 (|n . N| for each vertex) in the hole-filling
+   * step. Default 0.2 (78 degrees); range [0, 1]; 0 removes the rule as the paper does.
+   */
+  vtkSetClampMacro(HoleFillingMinimumNormalDot, double, 0.0, 1.0);
+  vtkGetMacro(HoleFillingMinimumNormalDot, double);
+  ///@}
+
+  ///@{
+  /**
+   * Counts from the last execution (also in the output's field data).
+   */
+  vtkGetMacro(NumberOfTriangles, vtkIdType);
+  vtkGetMacro(NumberOfFrontTriangles, vtkIdType);
+  vtkGetMacro(NumberOfSeedTriangles, vtkIdType);
+  vtkGetMacro(NumberOfHoleFillingTriangles, vtkIdType);
+  vtkGetMacro(NumberOfHoleTriangles, vtkIdType);
+  vtkGetMacro(NumberOfUnusedPoints, vtkIdType);
+  vtkGetMacro(NumberOfDuplicatePoints, vtkIdType);
+  vtkGetMacro(NumberOfSkippedPoints, vtkIdType);
+  vtkGetMacro(NumberOfRemovedTriangles, vtkIdType);
+  vtkGetMacro(MeanSpacing, double);
+  vtkGetMacro(NeighborhoodRadiusUsed, double);
+  ///@}
+
+protected:
+  vtkCDTAdvancingFront();
+  ~vtkCDTAdvancingFront() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  bool UseInputNormals = true;
+  int NormalSampleSize = 10;
+  double NeighborhoodRadius = 0.0;
+  double NeighborhoodRadiusFactor = 5.0;
+  double MinimumNormalDot = 0.5;
+  double MaximumRayDistance = 0.0;
+  double MinimumTriangleArea = 0.0;
+  int MaximumNumberOfCandidates = 20;
+  bool HoleFilling = true;
+  double HoleFillingRadiusFactor = 0.5;
+  double HoleFillingMinimumNormalDot = 0.2;
+
+  vtkIdType NumberOfTriangles = 0;
+  vtkIdType NumberOfFrontTriangles = 0;
+  vtkIdType NumberOfSeedTriangles = 0;
+  vtkIdType NumberOfHoleFillingTriangles = 0;
+  vtkIdType NumberOfHoleTriangles = 0;
+  vtkIdType NumberOfUnusedPoints = 0;
+  vtkIdType NumberOfDuplicatePoints = 0;
+  vtkIdType NumberOfSkippedPoints = 0;
+  vtkIdType NumberOfRemovedTriangles = 0;
+  double MeanSpacing = 0.0;
+  double NeighborhoodRadiusUsed = 0.0;
+
+private:
+  vtkCDTAdvancingFront(const vtkCDTAdvancingFront&) = delete;
+  void operator=(const vtkCDTAdvancingFront&) = delete;
+};
+
+#endif

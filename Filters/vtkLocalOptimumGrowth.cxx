@@ -1309,8 +1309,6 @@ bool Grower::InsertOrphan(Id q)
   }
   const int32_t* v = this->Mesh.GetTriangle(best);
   const Id t3[3] = { v[0], v[1], v[2] };
-  double normal[3];
-  UnitNormal(this->P3(t3[0]), this->P3(t3[1]), this->P3(t3[2]), normal);
   if (bestInside)
   {
     // Inside: split the edge whose angle at q is beyond 150 degrees, if any.
@@ -1337,14 +1335,15 @@ bool Grower::InsertOrphan(Id q)
     if (zo >= 0)
     {
       added = { { { w, z, q } }, { { z, u, q } }, { { u, zo, q } }, { { zo, w, q } } };
-      bool facing = true;
+      // q is nearest to this edge: the four triangles around it only need to be proper (the
+      // normal of a thin one near the edge's end is dominated by the curvature).
+      bool proper = true;
       for (const auto& t : added)
       {
-        double n[3];
-        facing = facing && UnitNormal(this->P3(t[0]), this->P3(t[1]), this->P3(t[2]), n) &&
-          Dot(n, normal) > 0.0;
+        proper =
+          proper && !pcs::projected::Collinear(this->P3(t[0]), this->P3(t[1]), this->P3(t[2]));
       }
-      if (facing)
+      if (proper)
       {
         this->Mesh.RemoveTriangle(best);
         this->Mesh.RemoveTriangle(other);

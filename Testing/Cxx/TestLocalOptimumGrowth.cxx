@@ -1,0 +1,342 @@
+// vtkLocalOptimumGrowth on clouds whose surface is known by construction; every property is
+// measured with vtkReconstructionQuality:
+// - the paper's 441-point ball (MATLAB's sphere(20): 21 x 21 latitude-longitude grid whose poles
+//   and seam repeat points, 382 distinct): 59 duplicates merged, a closed genus-0 mesh of
+//   2 * 382 - 4 = 760 triangles (the paper's count), every distinct point used, outwards;
+// - 3000 random points on the unit sphere: closed, manifold, oriented, genus 0, 2V - 4
+//   triangles, every point used, Hausdorff distance to the sphere within 2 mean spacings;
+// - 4000 random points on a torus: closed, manifold, oriented, genus 1, 2V triangles;
+// - an open height-field patch (with a NaN point and exact duplicates): one boundary loop, Euler
+//   characteristic 1, every finite distinct point used, the NaN point skipped and reported;
+// - a planar 20 x 20 grid (cocircular and collinear points everywhere): 722 triangles, one loop;
+// - two disjoint spheres: two closed components (the front dies, a second seed is planted);
+// - degenerate inputs (no point, 2 points, collinear points): a warning and no triangle.
+#include "vtkLocalOptimumGrowth.h"
+#include "vtkReconstructionQuality.h"
+
+#include "pcsTestUtilities.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkMath.h"
+#include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <random>
+#include <string>
+
+namespace
+{
+struct Quality
+{
+  double Triangles, UsedPoints, BoundaryEdges, Loops, NonManifoldEdges, NonManifoldVertices, Genus,
+    Orientation, Components, Euler, Degenerate, Duplicates, Hausdorff, Spacing;
+};
+
+Quality Measure(vtkPolyData* mesh, vtkPolyData* reference = nullptr)
+{
+  vtkNew<vtkReconstructionQuality> quality;
+  quality->SetInputData(mesh);
+  if (reference)
+  {
+    quality->SetReferenceData(reference);
+  }
+  quality->Update();
+  vtkFieldData* fd = quality->GetOutput()->GetFieldData();
+  auto get = [fd](const char* name) {
+    vtkDataArray* array = fd->GetArray(name);
+    return array ? array->GetTuple1(0) : std::numeric_limits<double>::quiet_NaN();
+  };
+  return { get("NumberOfTriangles"), get("NumberOfUsedPoints"), get("NumberOfBoundaryEdges"),
+    get("NumberOfBoundaryLoops"), get("NumberOfNonManifoldEdges"),
+    get("NumberOfNonManifoldVertices"), get("Genus"), get("OrientationConsistency"),
+    get("NumberOfConnectedComponents"), get("EulerCharacteristic"),
+    get("NumberOfDegenerateTriangles"), get("NumberOfDuplicateTriangles"), get("Hausdorff"),
+    get("MeanSpacing") };
+}
+
+// Counts the warnings of the filter while it updates.
+int UpdateCountingWarnings(vtkLocalOptimumGrowth* filter)
+{
+  int warnings = 0;
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  callback->SetClientData(&warnings);
+  filter->AddObserver(vtkCommand::WarningEvent, callback);
+  filter->Update();
+  filter->RemoveObservers(vtkCommand::WarningEvent);
+  return warnings;
+}
+
+// Signed volume of the closed mesh (positive: outward orientation).
+double SignedVolume(vtkPolyData* mesh)
+{
+  double volume = 0.0;
+  for (const auto& t : pcstest::CellTuples<3>(mesh))
+  {
+    double a[3], b[3], c[3], cross[3];
+    mesh->GetPoint(t[0], a);
+    mesh->GetPoint(t[1], b);
+    mesh->GetPoint(t[2], c);
+    vtkMath::Cross(b, c, cross);
+    volume += vtkMath::Dot(a, cross) / 6.0;
+  }
+  return volume;
+}
+
+bool CheckClosed(const Quality& q, double genus, const std::string& what)
+{
+  PCS_CHECK(q.BoundaryEdges == 0, what << ": " << q.BoundaryEdges << " boundary edges");
+  PCS_CHECK(q.NonManifoldEdges == 0 && q.NonManifoldVertices == 0,
+    what << ": non-manifold " << q.NonManifoldEdges << " edges, " << q.NonManifoldVertices
+         << " vertices");
+  PCS_CHECK(q.Orientation == 1.0, what << ": orientation consistency " << q.Orientation);
+  PCS_CHECK(q.Genus == genus, what << ": genus " << q.Genus << ", expected " << genus);
+  PCS_CHECK(q.Degenerate == 0 && q.Duplicates == 0,
+    what << ": " << q.Degenerate << " degenerate, " << q.Duplicates << " duplicate triangles");
+  return true;
+}
+
+std::vector<double> RandomSphere(int n, unsigned seed, const double center[3], double radius)
+{
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::vector<double> xyz;
+  while (xyz.size() < 3 * static_cast<size_t>(n))
+  {
+    double p[3] = { gauss(rng), gauss(rng), gauss(rng) };
+    const double length = vtkMath::Norm(p);
+    if (length > 0.0)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        xyz.push_back(center[i] + radius * p[i] / length);
+      }
+    }
+  }
+  return xyz;
+}
+
+//------------------------------------------------------------------------------------------------
+bool TestPaperBall()
+{
+  // MATLAB: [x, y, z] = sphere(20), the poles and the seam explicitly exact.
+  const int n = 20;
+  std::vector<double> xyz;
+  for (int i = 0; i <= n; ++i)
+  {
+    const double phi = (-n + 2.0 * i) / n * vtkMath::Pi() / 2.0;
+    const double cosphi = (i == 0 || i == n) ? 0.0 : std::cos(phi);
+    for (int j = 0; j <= n; ++j)
+    {
+      const double theta = (-n + 2.0 * j) / n * vtkMath::Pi();
+      const double sintheta = (j == 0 || j == n) ? 0.0 : std::sin(theta);
+      xyz.insert(xyz.end(), { cosphi * std::cos(theta), cosphi * sintheta, std::sin(phi) });
+    }
+  }
+  vtkNew<vtkLocalOptimumGrowth> growth;
+  growth->SetInputData(pcstest::MakeCloud(xyz));
+  UpdateCountingWarnings(growth); // warns about the 59 duplicates
+  vtkPolyData* mesh = growth->GetOutput();
+  const Quality q = Measure(mesh);
+  PCS_CHECK(growth->GetNumberOfInputPoints() == 441, "441 input points");
+  PCS_CHECK(growth->GetNumberOfDuplicatePoints() == 59,
+    "duplicates " << growth->GetNumberOfDuplicatePoints());
+  PCS_CHECK(growth->GetNumberOfUnusedPoints() == 0, "unused " << growth->GetNumberOfUnusedPoints());
+  PCS_CHECK(q.UsedPoints == 382, "used points " << q.UsedPoints);
+  PCS_CHECK(q.Triangles == 760, "paper ball: " << q.Triangles << " triangles, expected 760");
+  PCS_CHECK(pcstest::FieldCount(mesh, "NumberOfTriangles") == 760, "field data triangles");
+  PCS_CHECK(pcstest::FieldCount(mesh, "NumberOfDuplicatePoints") == 59, "field data duplicates");
+  PCS_CHECK(CheckClosed(q, 0, "paper ball"), "");
+  PCS_CHECK(SignedVolume(mesh) > 0.0, "outward orientation");
+  // Every duplicate names a representative at the same place, which is used.
+  vtkDataArray* representative = mesh->GetPointData()->GetArray("RepresentativeId");
+  vtkDataArray* used = mesh->GetPointData()->GetArray("Used");
+  PCS_CHECK(representative && used, "point data RepresentativeId and Used");
+  for (vtkIdType i = 0; i < 441; ++i)
+  {
+    const vtkIdType r = static_cast<vtkIdType>(representative->GetTuple1(i));
+    double p[3], pr[3];
+    mesh->GetPoint(i, p);
+    mesh->GetPoint(r, pr);
+    PCS_CHECK(p[0] == pr[0] && p[1] == pr[1] && p[2] == pr[2], "representative elsewhere");
+    PCS_CHECK(used->GetTuple1(i) == (r == i ? 1 : 0), "Used of point " << i);
+  }
+  return true;
+}
+
+bool TestSphere()
+{
+  const double center[3] = { 0, 0, 0 };
+  const int n = 3000;
+  vtkNew<vtkLocalOptimumGrowth> growth;
+  growth->SetInputData(pcstest::MakeCloud(RandomSphere(n, 11, center, 1.0)));
+  PCS_CHECK(UpdateCountingWarnings(growth) == 0, "no warning on a clean sphere");
+  vtkNew<vtkSphereSource> exact;
+  exact->SetRadius(1.0);
+  exact->SetThetaResolution(400);
+  exact->SetPhiResolution(200);
+  exact->Update();
+  const Quality q = Measure(growth->GetOutput(), exact->GetOutput());
+  PCS_CHECK(CheckClosed(q, 0, "sphere"), "");
+  PCS_CHECK(q.UsedPoints == n && growth->GetNumberOfUnusedPoints() == 0, "every point used");
+  PCS_CHECK(
+    q.Triangles == 2 * n - 4, "sphere: " << q.Triangles << " triangles, 2V-4 = " << 2 * n - 4);
+  PCS_CHECK(q.Hausdorff <= 2.0 * q.Spacing,
+    "Hausdorff " << q.Hausdorff << " > 2 x mean spacing " << q.Spacing);
+  PCS_CHECK(SignedVolume(growth->GetOutput()) > 0.0, "outward orientation");
+  PCS_CHECK(growth->GetNumberOfSeeds() == 1, "one seed: " << growth->GetNumberOfSeeds());
+  return true;
+}
+
+bool TestTorus()
+{
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> u(0.0, 2.0 * vtkMath::Pi()), w(0.0, 1.0);
+  const double big = 1.0, small = 0.35;
+  std::vector<double> xyz;
+  const int n = 4000;
+  while (xyz.size() < 3 * static_cast<size_t>(n))
+  {
+    // Uniform on the surface: accept the tube angle with probability proportional to the
+    // local circumference.
+    const double a = u(rng), b = u(rng);
+    if (w(rng) * (big + small) <= big + small * std::cos(b))
+    {
+      xyz.insert(xyz.end(),
+        { (big + small * std::cos(b)) * std::cos(a), (big + small * std::cos(b)) * std::sin(a),
+          small * std::sin(b) });
+    }
+  }
+  vtkNew<vtkLocalOptimumGrowth> growth;
+  growth->SetInputData(pcstest::MakeCloud(xyz));
+  growth->Update();
+  const Quality q = Measure(growth->GetOutput());
+  PCS_CHECK(CheckClosed(q, 1, "torus"), "");
+  PCS_CHECK(q.UsedPoints == n && growth->GetNumberOfUnusedPoints() == 0, "every point used");
+  PCS_CHECK(q.Triangles == 2 * n, "torus: " << q.Triangles << " triangles, 2V = " << 2 * n);
+  PCS_CHECK(SignedVolume(growth->GetOutput()) > 0.0, "outward orientation");
+  return true;
+}
+
+bool TestOpenPatch()
+{
+  // A smooth height field over a disk, random points, plus a NaN point and 5 exact duplicates.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<double> xyz;
+  while (xyz.size() < 3 * 2000)
+  {
+    const double x = u(rng), y = u(rng);
+    if (x * x + y * y <= 1.0)
+    {
+      xyz.insert(xyz.end(), { x, y, 0.2 * std::sin(2.0 * x) * std::cos(1.5 * y) });
+    }
+  }
+  for (int i = 0; i < 5; ++i)
+  {
+    xyz.insert(xyz.end(), { xyz[30 * i], xyz[30 * i + 1], xyz[30 * i + 2] });
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  xyz.insert(xyz.end(), { nan, 0.0, 0.0 });
+  vtkNew<vtkLocalOptimumGrowth> growth;
+  growth->SetInputData(pcstest::MakeCloud(xyz));
+  PCS_CHECK(UpdateCountingWarnings(growth) >= 2, "warnings about the NaN point and duplicates");
+  const Quality q = Measure(growth->GetOutput());
+  PCS_CHECK(q.NonManifoldEdges == 0 && q.NonManifoldVertices == 0, "patch manifold");
+  PCS_CHECK(q.Orientation == 1.0, "patch oriented");
+  PCS_CHECK(q.Loops == 1, "patch: " << q.Loops << " boundary loops, expected 1");
+  PCS_CHECK(q.Components == 1 && q.Euler == 1,
+    "patch is one disk: components " << q.Components << ", Euler characteristic " << q.Euler);
+  PCS_CHECK(growth->GetNumberOfSkippedPoints() == 1, "NaN point skipped");
+  PCS_CHECK(growth->GetNumberOfDuplicatePoints() == 5, "5 duplicates");
+  PCS_CHECK(growth->GetNumberOfUnusedPoints() == 0, "unused " << growth->GetNumberOfUnusedPoints());
+  PCS_CHECK(q.UsedPoints == 2000, "used " << q.UsedPoints);
+  vtkDataArray* representative = growth->GetOutput()->GetPointData()->GetArray("RepresentativeId");
+  PCS_CHECK(representative->GetTuple1(2005) == -1, "NaN point has RepresentativeId -1");
+  PCS_CHECK(growth->GetNumberOfBoundaryEdges() == q.BoundaryEdges, "boundary edges reported");
+  return true;
+}
+
+bool TestPlanarGrid()
+{
+  // 20 x 20 unit grid: every quad has 4 cocircular corners, the border is collinear.
+  std::vector<double> xyz;
+  for (int i = 0; i < 20; ++i)
+  {
+    for (int j = 0; j < 20; ++j)
+    {
+      xyz.insert(xyz.end(), { static_cast<double>(i), static_cast<double>(j), 0.0 });
+    }
+  }
+  vtkNew<vtkLocalOptimumGrowth> growth;
+  growth->SetInputData(pcstest::MakeCloud(xyz));
+  growth->Update();
+  const Quality q = Measure(growth->GetOutput());
+  PCS_CHECK(q.Triangles == 2 * 19 * 19, "grid: " << q.Triangles << " triangles, expected 722");
+  PCS_CHECK(q.Loops == 1 && q.BoundaryEdges == 4 * 19,
+    "grid: one loop of 76 edges, got " << q.Loops << " loops, " << q.BoundaryEdges << " edges");
+  PCS_CHECK(q.NonManifoldEdges == 0 && q.NonManifoldVertices == 0 && q.Orientation == 1.0,
+    "grid manifold and oriented");
+  PCS_CHECK(q.Degenerate == 0, "no degenerate triangle");
+  return true;
+}
+
+bool TestTwoSpheres()
+{
+  const double c1[3] = { 0, 0, 0 }, c2[3] = { 3, 0.5, 0 };
+  std::vector<double> xyz = RandomSphere(1500, 3, c1, 1.0);
+  const std::vector<double> other = RandomSphere(1000, 4, c2, 0.8);
+  xyz.insert(xyz.end(), other.begin(), other.end());
+  vtkNew<vtkLocalOptimumGrowth> growth;
+  growth->SetInputData(pcstest::MakeCloud(xyz));
+  growth->Update();
+  const Quality q = Measure(growth->GetOutput());
+  PCS_CHECK(CheckClosed(q, 0, "two spheres"), "");
+  PCS_CHECK(q.Components == 2, "two components, got " << q.Components);
+  PCS_CHECK(growth->GetNumberOfSeeds() == 2, "two seeds, got " << growth->GetNumberOfSeeds());
+  PCS_CHECK(q.Triangles == 2 * 2500 - 8, "2V - 4 per sphere: " << q.Triangles);
+  PCS_CHECK(growth->GetNumberOfUnusedPoints() == 0, "every point used");
+  return true;
+}
+
+bool TestDegenerate()
+{
+  const std::vector<std::vector<double>> inputs = {
+    {},                                              // no point
+    { 0, 0, 0, 1, 0, 0 },                            // 2 points
+    { 0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3, 5, 5, 5 }, // collinear
+    { 0, 0, 0, 0, 0, 0, 0, 0, 0 },                   // one point three times
+  };
+  for (size_t k = 0; k < inputs.size(); ++k)
+  {
+    vtkNew<vtkLocalOptimumGrowth> growth;
+    growth->SetInputData(pcstest::MakeCloud(inputs[k]));
+    PCS_CHECK(UpdateCountingWarnings(growth) >= 1, "degenerate input " << k << ": a warning");
+    vtkPolyData* out = growth->GetOutput();
+    PCS_CHECK(out->GetNumberOfPolys() == 0, "degenerate input " << k << ": no triangle");
+    PCS_CHECK(out->GetNumberOfPoints() == static_cast<vtkIdType>(inputs[k].size() / 3),
+      "degenerate input " << k << ": every point passed through");
+    PCS_CHECK(pcstest::FieldCount(out, "NumberOfTriangles") == 0, "field data on " << k);
+  }
+  return true;
+}
+} // namespace
+
+int TestLocalOptimumGrowth(int, char*[])
+{
+  bool ok = true;
+  ok = TestPaperBall() && ok;
+  ok = TestSphere() && ok;
+  ok = TestTorus() && ok;
+  ok = TestOpenPatch() && ok;
+  ok = TestPlanarGrid() && ok;
+  ok = TestTwoSpheres() && ok;
+  ok = TestDegenerate() && ok;
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}

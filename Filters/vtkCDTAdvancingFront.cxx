@@ -216,11 +216,12 @@ vtkIdType RemovePinches(pcs::SurfaceMesh& mesh)
 // The rules of paper 003 in one place: which triangles are valid, and the front that grows them.
 struct Parameters
 {
-  double Radius = 0;           // II.A neighbourhood of a front edge's midpoint
-  double MinimumNormalDot = 0; // II.C.2
-  double MaximumRay = 0;       // II.D
-  double MinimumArea = 0;      // II.E
-  int MaximumCandidates = 0;   // candidates submitted to the II.D tests per edge
+  double Radius = 0;                 // II.A neighbourhood of a front edge's midpoint
+  double MinimumNormalDot = 0;       // II.C.2
+  double MaximumRay = 0;             // II.D
+  double MinimumArea = 0;            // II.E
+  int MaximumCandidates = 0;         // candidates submitted to the II.D tests per edge
+  bool CloseTriangularHoles = false; // III.C: a 3-edge hole closes without II.C.2
 };
 
 class Front
@@ -342,7 +343,12 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
   {
     return false;
   }
-  // II.C.2: no dangling triangle (a weaker bound in the hole-filling step).
+  // II.C.2: no dangling triangle (a weaker bound in the hole-filling step, none for the last
+  // triangle of a hole: its three edges are already on the front and it is the only way to close
+  // the hole, however thin).
+  const bool closesHole = parameters.CloseTriangularHoles &&
+    this->Mesh.IsBoundaryHalfEdge(third, e1) && this->Mesh.IsBoundaryHalfEdge(e0, third);
+  if (!closesHole)
   {
     const double bound = parameters.MinimumNormalDot * length;
     if (std::fabs(Dot(n0, normal)) < bound || std::fabs(Dot(n1, normal)) < bound ||
@@ -937,6 +943,36 @@ int vtkCDTAdvancingFront::RequestData(
         estimated->GetTuple(k, &normals[3 * static_cast<size_t>(k)]);
       }
     }
+    // The traversal makes the normals consistent with each other, not outward: the normal of the
+    // point farthest from the centroid (a point of the convex hull, where the outside is known)
+    // is made to point away from the centroid, and all normals follow it.
+    double centroid[3] = { 0.0, 0.0, 0.0 };
+    for (Id k = 0; k < local; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        centroid[c] += xyz[3 * static_cast<size_t>(k) + c] / local;
+      }
+    }
+    Id farthest = 0;
+    for (Id k = 1; k < local; ++k)
+    {
+      if (Distance2(&xyz[3 * static_cast<size_t>(k)], centroid) >
+        Distance2(&xyz[3 * static_cast<size_t>(farthest)], centroid))
+      {
+        farthest = k;
+      }
+    }
+    const double away[3] = { xyz[3 * static_cast<size_t>(farthest)] - centroid[0],
+      xyz[3 * static_cast<size_t>(farthest) + 1] - centroid[1],
+      xyz[3 * static_cast<size_t>(farthest) + 2] - centroid[2] };
+    if (Dot(away, &normals[3 * static_cast<size_t>(farthest)]) < 0.0)
+    {
+      for (double& c : normals)
+      {
+        c = -c;
+      }
+    }
     // Passed to the output ("Normals", or "EstimatedNormals" if the input has a "Normals").
     vtkNew<vtkDoubleArray> outputNormals;
     const bool clash = output->GetPointData()->GetArray("Normals") != nullptr;
@@ -1112,6 +1148,7 @@ int vtkCDTAdvancingFront::RequestData(
   Parameters relaxed = strict;
   relaxed.Radius = this->HoleFillingRadiusFactor * strict.Radius;
   relaxed.MinimumNormalDot = this->HoleFillingMinimumNormalDot;
+  relaxed.CloseTriangularHoles = true;
   auto fillHoles = [&]()
   {
     std::vector<std::vector<Id>> loops;

@@ -11,8 +11,9 @@
  * Normals: the input's point normals when UseInputNormals is on and the array selected with
  * SetInputArrayToProcess(0, ...) (by default the active point normals) is a 3-component point
  * array; otherwise they are estimated with vtkPCANormalEstimation (NormalSampleSize nearest
- * points, orientation made consistent by its graph traversal, which points the normal of the
- * point of smallest x towards -x: outwards on a closed surface). The normals used are passed to
+ * points, orientation made consistent by its graph traversal; then all are flipped if needed so
+ * that the normal of the point farthest from the centroid points away from it: outwards on a
+ * closed surface). The normals used are passed to
  * the output (point data `Normals` when estimated).
  *
  * Rules (section II; each one a parameter below). A triangle is a candidate when all hold:
@@ -51,11 +52,22 @@
  *   rejected.
  * - III.B advancing front: the edges of every new triangle are queued (first in, first out); an
  *   edge with a single triangle is a front edge and is expanded with the best valid third point.
+ *   The front edges at the vertices of a new triangle are queued again (an edge that failed may
+ *   now close as an ear). A front may touch another front, or itself, at a vertex (a "pinch",
+ *   two fans at the vertex, as when the front closes around a cylinder): the next triangles
+ *   normally merge the fans.
  * - III.C hole filling (HoleFilling, default on): the front edges left are expanded again with
- *   the relaxed rules of the paper: a neighbourhood radius reduced by HoleFillingRadiusFactor,
- *   and no II.C.2. The triangles formed with the two edges at a common vertex of a hole (ears)
- *   are among these candidates. Open boundaries whose points are farther apart than the
- *   reduced radius (the rims of an open cylinder) stay open.
+ *   the relaxed rules of the paper: the neighbourhood radius reduced by HoleFillingRadiusFactor,
+ *   plus "the triangle with the adjacent edges at a common vertex" (the ears: the vertices next
+ *   to the edge's end points on the front, whatever their distance). The paper removes II.C.2
+ *   in this step; here it is relaxed to HoleFillingMinimumNormalDot (default 0.2): without any
+ *   bound the ears of the open rims of a cylinder -- triangles perpendicular to the point
+ *   normals -- would close them, where the paper's cylinder keeps its 72 hole triangles and 0
+ *   hole-filling triangles. Set it to 0 for the paper's rule.
+ * - Manifold result: pinches left when the fronts stop are undone (at such a vertex the
+ *   triangles of all fans but the largest are removed, `NumberOfRemovedTriangles`) and the holes
+ *   this opens are filled again with the III.C rules, pinches no longer allowed. The output has
+ *   no non-manifold edge or vertex.
  *
  * Output (vtkPolyData): all input points and their point data, plus point data `Used` (1 for a
  * triangle vertex) and `Normals` (when estimated); consistently oriented triangles with cell
@@ -67,6 +79,7 @@
  * its triangles; 90 means tangent), and `NumberOfFrontTriangles` (seed and front triangles),
  * `NumberOfSeedTriangles`, `NumberOfUnusedPoints`, `NumberOfDuplicatePoints`,
  * `NumberOfSkippedPoints` (non-finite coordinates or normals, zero-length normals),
+ * `NumberOfRemovedTriangles` (pinch repair),
  * `MeanSpacing` and `NeighborhoodRadiusUsed`.
  *
  * Cost: each front edge queries the points within NeighborhoodRadius (vtkStaticPointLocator),
@@ -133,7 +146,8 @@ public:
   ///@{
   /**
    * The automatic NeighborhoodRadius in units of the mean spacing (used when NeighborhoodRadius
-   * is 0). Default 3; range [1, 100].
+   * is 0). Default 5; range [1, 100]. (With 3, random samplings of a sphere leave holes: the
+   * ears of long front edges fall outside the sphere.)
    */
   vtkSetClampMacro(NeighborhoodRadiusFactor, double, 1.0, 100.0);
   vtkGetMacro(NeighborhoodRadiusFactor, double);
@@ -143,7 +157,7 @@ public:
   /**
    * Section II.C.2: smallest |n . N| between a vertex's unit normal n and the unit normal N of a
    * new triangle (the cosine of the largest angle between them). Default 0.5 (60 degrees);
-   * range [0, 1]. Not applied by the hole-filling step (section III.C).
+   * range [0, 1]. The hole-filling step (section III.C) uses HoleFillingMinimumNormalDot.
    */
   vtkSetClampMacro(MinimumNormalDot, double, 0.0, 1.0);
   vtkGetMacro(MinimumNormalDot, double);

@@ -1,0 +1,489 @@
+// vtkCDTAdvancingFront (issue 6, paper 003: Huang & Wischgoll). Every expected value is known by
+// construction:
+// - the paper's cylinder (Table 1, Table 3): 12 circles of 36 points, radius 1.223, stacked
+//   (the paper's "stack of a same circle"; its ring spacing is not given, 0.2 is used, about the
+//   10-degree chord 0.213). An open cylinder meshed by quads split in two has 11 x 36 x 2 = 792
+//   triangles, and its two rims of 36 edges each make 72 hole triangles; nothing is a hole to
+//   fill (0 hole-filling triangles). Its maximum principal curvature (vtkCurvatures) averages
+//   1 / 1.223 within 1 % and its minimum is 0 within 0.01 on the points off the rims. With the
+//   exact radial normals, a triangle spanning 10 degrees of arc makes 5 degrees with the normal
+//   at each of its vertices: the Table 2 angle to the triangle planes is 85 degrees. The same
+//   counts with normals estimated by vtkPCANormalEstimation.
+// - random samples of a sphere and a torus, with and without normals: closed, manifold,
+//   consistently oriented meshes of genus 0 and 1 using every point (2V - 4 and 2V triangles),
+//   oriented outwards (positive enclosed volume, like the normals);
+// - a thin sheet (paper Fig. 2b / 3b): two parallel planar grids closer to each other than their
+//   spacing, normals opposite: two separate sheets of 2 (n - 1)^2 triangles each (the points of
+//   one sheet project into the triangles of the other, but their normals are opposite);
+// - bad input: no points, two points, zero-length and NaN normals, duplicates, NaN coordinates:
+//   warnings, counts, and a valid output with every input point.
+#include "vtkCDTAdvancingFront.h"
+#include "vtkReconstructionQuality.h"
+
+#include "pcsTestUtilities.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkCurvatures.h"
+#include "vtkDoubleArray.h"
+#include "vtkMassProperties.h"
+#include "vtkPointData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <string>
+
+namespace
+{
+const double Pi = 3.14159265358979323846;
+
+struct Cloud
+{
+  std::vector<double> XYZ;
+  std::vector<double> Normals;
+};
+
+vtkSmartPointer<vtkPolyData> MakeInput(const Cloud& cloud, bool withNormals)
+{
+  auto data = pcstest::MakeCloud(cloud.XYZ);
+  if (withNormals)
+  {
+    vtkNew<vtkDoubleArray> normals;
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    normals->SetNumberOfTuples(static_cast<vtkIdType>(cloud.Normals.size() / 3));
+    for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+    {
+      normals->SetTuple(i, &cloud.Normals[3 * i]);
+    }
+    data->GetPointData()->SetNormals(normals);
+  }
+  return data;
+}
+
+// The paper's cylinder: `rings` circles of `perRing` points, stacked `spacing` apart.
+Cloud Cylinder(int rings, int perRing, double radius, double spacing)
+{
+  Cloud c;
+  for (int k = 0; k < rings; ++k)
+  {
+    for (int j = 0; j < perRing; ++j)
+    {
+      const double a = 2.0 * Pi * j / perRing;
+      c.XYZ.insert(c.XYZ.end(), { radius * std::cos(a), radius * std::sin(a), spacing * k });
+      c.Normals.insert(c.Normals.end(), { std::cos(a), std::sin(a), 0.0 });
+    }
+  }
+  return c;
+}
+
+Cloud Sphere(int n, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  Cloud c;
+  for (int i = 0; i < n; ++i)
+  {
+    const double p[3] = { g(rng), g(rng), g(rng) };
+    const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    c.XYZ.insert(c.XYZ.end(), { p[0] / r, p[1] / r, p[2] / r });
+    c.Normals.insert(c.Normals.end(), { p[0] / r, p[1] / r, p[2] / r });
+  }
+  return c;
+}
+
+// Uniform on the torus surface (rejection on the area element), radii 1 and 0.4.
+Cloud Torus(int n, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double R = 1.0, r = 0.4;
+  Cloud c;
+  while (static_cast<int>(c.XYZ.size()) < 3 * n)
+  {
+    const double a = 2 * Pi * u(rng), b = 2 * Pi * u(rng);
+    if (u(rng) > (R + r * std::cos(b)) / (R + r))
+    {
+      continue;
+    }
+    c.XYZ.insert(c.XYZ.end(),
+      { (R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a),
+        r * std::sin(b) });
+    c.Normals.insert(
+      c.Normals.end(), { std::cos(b) * std::cos(a), std::cos(b) * std::sin(a), std::sin(b) });
+  }
+  return c;
+}
+
+struct Messages
+{
+  int Warnings = 0;
+  int Errors = 0;
+  static void Callback(vtkObject*, unsigned long event, void* data, void*)
+  {
+    auto* self = static_cast<Messages*>(data);
+    (event == vtkCommand::ErrorEvent ? self->Errors : self->Warnings)++;
+  }
+};
+
+Messages Run(vtkCDTAdvancingFront* filter, vtkDataObject* input)
+{
+  Messages messages;
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetCallback(&Messages::Callback);
+  callback->SetClientData(&messages);
+  filter->AddObserver(vtkCommand::WarningEvent, callback);
+  filter->AddObserver(vtkCommand::ErrorEvent, callback);
+  filter->SetInputData(input);
+  filter->Update();
+  return messages;
+}
+
+vtkSmartPointer<vtkPolyData> Quality(vtkPolyData* mesh)
+{
+  vtkNew<vtkReconstructionQuality> quality;
+  quality->SetInputData(mesh);
+  quality->ComputeDistancesOff();
+  quality->Update();
+  return quality->GetOutput();
+}
+
+double FieldValue(vtkDataObject* data, const char* name)
+{
+  vtkDataArray* array = data->GetFieldData()->GetArray(name);
+  return array ? array->GetTuple1(0) : std::numeric_limits<double>::quiet_NaN();
+}
+
+// Counts of the output that must agree with its own cell and point data.
+bool CheckConsistentCounts(const std::string& label, vtkCDTAdvancingFront* filter)
+{
+  vtkPolyData* out = filter->GetOutput();
+  auto* holeTriangle =
+    vtkUnsignedCharArray::SafeDownCast(out->GetCellData()->GetArray("HoleTriangle"));
+  auto* holeFilled = vtkUnsignedCharArray::SafeDownCast(out->GetCellData()->GetArray("HoleFilled"));
+  auto* used = vtkUnsignedCharArray::SafeDownCast(out->GetPointData()->GetArray("Used"));
+  PCS_CHECK(holeTriangle && holeFilled && used, label << ": missing cell or point data");
+  vtkIdType holes = 0, filled = 0, unused = 0;
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    holes += holeTriangle->GetValue(c);
+    filled += holeFilled->GetValue(c);
+  }
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    unused += used->GetValue(i) ? 0 : 1;
+  }
+  PCS_CHECK(out->GetNumberOfPolys() == filter->GetNumberOfTriangles() &&
+      pcstest::FieldCount(out, "NumberOfTriangles") == filter->GetNumberOfTriangles(),
+    label << ": triangle counts disagree");
+  PCS_CHECK(holes == filter->GetNumberOfHoleTriangles() &&
+      pcstest::FieldCount(out, "NumberOfHoleTriangles") == holes,
+    label << ": " << holes << " HoleTriangle cells, count " << filter->GetNumberOfHoleTriangles());
+  PCS_CHECK(filled == filter->GetNumberOfHoleFillingTriangles() &&
+      pcstest::FieldCount(out, "NumberOfHoleFillingTriangles") == filled,
+    label << ": hole-filling counts disagree");
+  PCS_CHECK(unused == filter->GetNumberOfUnusedPoints() &&
+      pcstest::FieldCount(out, "NumberOfUnusedPoints") == unused,
+    label << ": unused counts disagree");
+  PCS_CHECK(filter->GetNumberOfFrontTriangles() + filter->GetNumberOfHoleFillingTriangles() ==
+      filter->GetNumberOfTriangles(),
+    label << ": front + hole-filling triangles != triangles");
+  return true;
+}
+
+//------------------------------------------------------------------------------------------------
+bool TestPaperCylinder(bool withNormals)
+{
+  const std::string label =
+    std::string("cylinder, ") + (withNormals ? "input" : "PCA") + " normals";
+  const double radius = 1.223;
+  auto input = MakeInput(Cylinder(12, 36, radius, 0.2), withNormals);
+  vtkNew<vtkCDTAdvancingFront> filter;
+  const Messages messages = Run(filter, input);
+  PCS_CHECK(messages.Errors == 0 && messages.Warnings == 0, label << ": unexpected messages");
+  if (!CheckConsistentCounts(label, filter))
+  {
+    return false;
+  }
+  vtkPolyData* out = filter->GetOutput();
+  // Table 1.
+  PCS_CHECK(pcstest::FieldCount(out, "NumberOfPoints") == 432, label);
+  PCS_CHECK(filter->GetNumberOfTriangles() == 792,
+    label << ": " << filter->GetNumberOfTriangles() << " triangles instead of 792");
+  PCS_CHECK(filter->GetNumberOfHoleFillingTriangles() == 0,
+    label << ": " << filter->GetNumberOfHoleFillingTriangles() << " hole-filling triangles");
+  PCS_CHECK(filter->GetNumberOfHoleTriangles() == 72,
+    label << ": " << filter->GetNumberOfHoleTriangles() << " hole triangles instead of 72");
+  PCS_CHECK(filter->GetNumberOfUnusedPoints() == 0, label << ": unused points");
+  auto quality = Quality(out);
+  PCS_CHECK(pcstest::FieldCount(quality, "NumberOfNonManifoldEdges") == 0 &&
+      pcstest::FieldCount(quality, "NumberOfNonManifoldVertices") == 0,
+    label << ": not manifold");
+  PCS_CHECK(pcstest::FieldCount(quality, "NumberOfBoundaryLoops") == 2 &&
+      pcstest::FieldCount(quality, "NumberOfBoundaryEdges") == 72 &&
+      pcstest::FieldCount(quality, "EulerCharacteristic") == 0 &&
+      pcstest::FieldCount(quality, "NumberOfConnectedComponents") == 1,
+    label << ": not an open cylinder (2 rims of 36 edges, Euler 0)");
+  PCS_CHECK(FieldValue(quality, "OrientationConsistency") == 1.0, label << ": orientation");
+  // Outward: every triangle normal points away from the axis.
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    out->GetCellPoints(c, npts, pts);
+    double a[3], b[3], d[3];
+    out->GetPoint(pts[0], a);
+    out->GetPoint(pts[1], b);
+    out->GetPoint(pts[2], d);
+    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double v[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+    const double n[2] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2] };
+    PCS_CHECK(n[0] * (a[0] + b[0] + d[0]) + n[1] * (a[1] + b[1] + d[1]) > 0,
+      label << ": triangle " << c << " faces inwards");
+  }
+  // Table 2: 85 degrees for the exact normals.
+  if (withNormals)
+  {
+    PCS_CHECK(std::fabs(FieldValue(out, "NormalAngleMean") - 85.0) < 1e-6 &&
+        FieldValue(out, "NormalAngleDeviation") < 1e-6,
+      label << ": normal angle " << FieldValue(out, "NormalAngleMean") << " instead of 85");
+  }
+  else
+  {
+    PCS_CHECK(std::fabs(FieldValue(out, "NormalAngleMean") - 85.0) < 1.5,
+      label << ": normal angle " << FieldValue(out, "NormalAngleMean"));
+  }
+
+  // Table 3: principal curvatures on the points off the rims (rings 1 to 10).
+  double mean[2] = { 0, 0 };
+  double extreme = 0.0;
+  for (int type = 0; type < 2; ++type)
+  {
+    vtkNew<vtkCurvatures> curvatures;
+    curvatures->SetInputData(out);
+    if (type == 0)
+    {
+      curvatures->SetCurvatureTypeToMaximum();
+    }
+    else
+    {
+      curvatures->SetCurvatureTypeToMinimum();
+    }
+    vtkNew<vtkCallbackCommand> silence; // vtkCurvatures warns on the rims
+    curvatures->AddObserver(vtkCommand::WarningEvent, silence);
+    curvatures->Update();
+    vtkDataArray* k = curvatures->GetOutput()->GetPointData()->GetArray(
+      type == 0 ? "Maximum_Curvature" : "Minimum_Curvature");
+    PCS_CHECK(k, label << ": no curvature array");
+    for (vtkIdType i = 36; i < 432 - 36; ++i)
+    {
+      mean[type] += k->GetTuple1(i) / 360.0;
+      if (type == 1)
+      {
+        extreme = std::max(extreme, std::fabs(k->GetTuple1(i)));
+      }
+    }
+  }
+  const double error = std::fabs(mean[0] * radius - 1.0);
+  std::cout << label << ": 792 triangles, 72 hole triangles; mean maximum curvature " << mean[0]
+            << " (1/r = " << 1.0 / radius << ", radius " << 1.0 / mean[0] << ", error "
+            << 100.0 * error << " %), largest |minimum curvature| " << extreme
+            << "; normal angle mean " << FieldValue(out, "NormalAngleMean") << ", deviation "
+            << FieldValue(out, "NormalAngleDeviation") << ", range ["
+            << FieldValue(out, "NormalAngleMin") << ", " << FieldValue(out, "NormalAngleMax") << "]"
+            << std::endl;
+  PCS_CHECK(
+    error < 0.01, label << ": mean maximum curvature " << mean[0] << ", 1/r = " << 1.0 / radius);
+  PCS_CHECK(extreme < 0.01, label << ": minimum curvature up to " << extreme);
+  return true;
+}
+
+// A closed surface: closed, manifold, oriented, right genus, every point used, outwards.
+bool TestClosed(const std::string& label, const Cloud& cloud, bool withNormals, int genus)
+{
+  auto input = MakeInput(cloud, withNormals);
+  vtkNew<vtkCDTAdvancingFront> filter;
+  const Messages messages = Run(filter, input);
+  PCS_CHECK(messages.Errors == 0, label << ": errors");
+  if (!CheckConsistentCounts(label, filter))
+  {
+    return false;
+  }
+  vtkPolyData* out = filter->GetOutput();
+  const vtkIdType n = input->GetNumberOfPoints();
+  auto quality = Quality(out);
+  std::cout << label << ": " << filter->GetNumberOfTriangles() << " triangles ("
+            << filter->GetNumberOfHoleFillingTriangles() << " by hole filling, "
+            << filter->GetNumberOfRemovedTriangles() << " removed pinch triangles), genus "
+            << pcstest::FieldCount(quality, "Genus") << std::endl;
+  PCS_CHECK(pcstest::FieldCount(quality, "NumberOfNonManifoldEdges") == 0 &&
+      pcstest::FieldCount(quality, "NumberOfNonManifoldVertices") == 0,
+    label << ": not manifold");
+  PCS_CHECK(pcstest::FieldCount(quality, "NumberOfBoundaryEdges") == 0,
+    label << ": " << pcstest::FieldCount(quality, "NumberOfBoundaryEdges") << " boundary edges");
+  PCS_CHECK(pcstest::FieldCount(quality, "Genus") == genus,
+    label << ": genus " << pcstest::FieldCount(quality, "Genus"));
+  PCS_CHECK(FieldValue(quality, "OrientationConsistency") == 1.0, label << ": orientation");
+  PCS_CHECK(filter->GetNumberOfUnusedPoints() == 0 && messages.Warnings == 0,
+    label << ": " << filter->GetNumberOfUnusedPoints() << " unused points");
+  PCS_CHECK(filter->GetNumberOfTriangles() == 2 * n - 4 + 4 * genus,
+    label << ": " << filter->GetNumberOfTriangles() << " triangles for " << n << " points");
+  PCS_CHECK(filter->GetNumberOfHoleTriangles() == 0, label << ": hole triangles");
+  vtkNew<vtkMassProperties> mass;
+  mass->SetInputData(out);
+  mass->Update();
+  // The enclosed volume, signed by the orientation (divergence theorem over the triangles).
+  double volume = 0.0;
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    out->GetCellPoints(c, npts, pts);
+    double a[3], b[3], d[3];
+    out->GetPoint(pts[0], a);
+    out->GetPoint(pts[1], b);
+    out->GetPoint(pts[2], d);
+    volume += (a[0] * (b[1] * d[2] - b[2] * d[1]) - a[1] * (b[0] * d[2] - b[2] * d[0]) +
+                a[2] * (b[0] * d[1] - b[1] * d[0])) /
+      6.0;
+  }
+  PCS_CHECK(volume > 0.0 && std::fabs(volume - mass->GetVolume()) < 1e-6 * mass->GetVolume(),
+    label << ": signed volume " << volume << " (outwards is positive), |volume| "
+          << mass->GetVolume());
+  return true;
+}
+
+// Two parallel grids 0.3 spacing apart, normals facing away from each other (a thin plate).
+bool TestThinSheet()
+{
+  const int n = 15;
+  Cloud c;
+  for (int side = 0; side < 2; ++side)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      for (int j = 0; j < n; ++j)
+      {
+        // A slight shear so that no four points are cocircular.
+        c.XYZ.insert(c.XYZ.end(), { i + 0.1 * j, j + 0.05 * i, side == 0 ? 0.0 : 0.3 });
+        c.Normals.insert(c.Normals.end(), { 0.0, 0.0, side == 0 ? -1.0 : 1.0 });
+      }
+    }
+  }
+  auto input = MakeInput(c, true);
+  vtkNew<vtkCDTAdvancingFront> filter;
+  Run(filter, input);
+  auto quality = Quality(filter->GetOutput());
+  PCS_CHECK(pcstest::FieldCount(quality, "NumberOfConnectedComponents") == 2,
+    "thin sheet: " << pcstest::FieldCount(quality, "NumberOfConnectedComponents")
+                   << " components instead of 2");
+  PCS_CHECK(filter->GetNumberOfTriangles() == 2 * 2 * (n - 1) * (n - 1),
+    "thin sheet: " << filter->GetNumberOfTriangles() << " triangles instead of "
+                   << 4 * (n - 1) * (n - 1));
+  PCS_CHECK(filter->GetNumberOfUnusedPoints() == 0, "thin sheet: unused points");
+  vtkPolyData* out = filter->GetOutput();
+  for (vtkIdType cell = 0; cell < out->GetNumberOfCells(); ++cell)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    out->GetCellPoints(cell, npts, pts);
+    const bool top = pts[0] >= n * n;
+    PCS_CHECK((pts[1] >= n * n) == top && (pts[2] >= n * n) == top,
+      "thin sheet: triangle " << cell << " joins the two sides");
+  }
+  return true;
+}
+
+bool TestBadInput()
+{
+  {
+    vtkNew<vtkCDTAdvancingFront> filter;
+    const Messages m = Run(filter, pcstest::MakeCloud({}));
+    PCS_CHECK(m.Warnings > 0 && filter->GetOutput()->GetNumberOfPoints() == 0, "no points");
+  }
+  {
+    vtkNew<vtkCDTAdvancingFront> filter;
+    const Messages m = Run(filter, pcstest::MakeCloud({ 0, 0, 0, 1, 0, 0 }));
+    PCS_CHECK(m.Warnings > 0 && filter->GetOutput()->GetNumberOfPoints() == 2 &&
+        filter->GetNumberOfTriangles() == 0,
+      "two points");
+  }
+  // A sphere with zero-length and NaN normals on some points, exact duplicates and NaN points.
+  Cloud c = Sphere(2000, 5);
+  const int n = 2000;
+  for (int i = 0; i < 20; ++i)
+  {
+    c.Normals[3 * (i * 37)] = c.Normals[3 * (i * 37) + 1] = c.Normals[3 * (i * 37) + 2] = 0.0;
+    c.Normals[3 * (i * 37 + 11)] = std::numeric_limits<double>::quiet_NaN();
+  }
+  for (int i = 0; i < 30; ++i)
+  {
+    const int k = 3 * (i * 41 + 5);
+    c.XYZ.insert(c.XYZ.end(), { c.XYZ[k], c.XYZ[k + 1], c.XYZ[k + 2] });
+    c.Normals.insert(c.Normals.end(), { c.Normals[k], c.Normals[k + 1], c.Normals[k + 2] });
+  }
+  for (int i = 0; i < 5; ++i)
+  {
+    c.XYZ.insert(c.XYZ.end(), { std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0 });
+    c.Normals.insert(c.Normals.end(), { 1.0, 0.0, 0.0 });
+  }
+  vtkIdType skipped = 0; // non-finite coordinates, zero-length or NaN normals
+  for (size_t i = 0; i < c.XYZ.size(); i += 3)
+  {
+    const double* p = &c.XYZ[i];
+    const double* q = &c.Normals[i];
+    const bool finite = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+    const double length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+    skipped += (!finite || !std::isfinite(length) || length == 0.0) ? 1 : 0;
+  }
+  auto input = MakeInput(c, true);
+  vtkNew<vtkCDTAdvancingFront> filter;
+  const Messages m = Run(filter, input);
+  PCS_CHECK(m.Warnings >= 2, "bad normals: " << m.Warnings << " warnings");
+  PCS_CHECK(filter->GetOutput()->GetNumberOfPoints() == n + 35, "bad normals: points lost");
+  PCS_CHECK(skipped >= 45 && filter->GetNumberOfSkippedPoints() == skipped,
+    "bad normals: " << filter->GetNumberOfSkippedPoints() << " skipped instead of " << skipped);
+  // The 30 copies, except those of a point with a bad normal (skipped like their original).
+  vtkIdType duplicates = 0;
+  for (int i = 0; i < 30; ++i)
+  {
+    const double* q = &c.Normals[3 * (n + i)];
+    const double length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+    duplicates += (std::isfinite(length) && length > 0.0) ? 1 : 0;
+  }
+  PCS_CHECK(duplicates >= 25 && filter->GetNumberOfDuplicatePoints() == duplicates,
+    "duplicates: " << filter->GetNumberOfDuplicatePoints() << " instead of " << duplicates);
+  PCS_CHECK(filter->GetNumberOfUnusedPoints() >= 75, "bad normals: skipped points used");
+  auto* used =
+    vtkUnsignedCharArray::SafeDownCast(filter->GetOutput()->GetPointData()->GetArray("Used"));
+  for (int i = 0; i < 20; ++i)
+  {
+    PCS_CHECK(
+      !used->GetValue(i * 37) && !used->GetValue(i * 37 + 11), "a point with a bad normal is used");
+  }
+  auto quality = Quality(filter->GetOutput());
+  PCS_CHECK(pcstest::FieldCount(quality, "NumberOfNonManifoldEdges") == 0 &&
+      pcstest::FieldCount(quality, "NumberOfNonManifoldVertices") == 0,
+    "bad normals: not manifold");
+  return CheckConsistentCounts("bad input", filter);
+}
+} // namespace
+
+int TestCDTAdvancingFront(int, char*[])
+{
+  int failures = 0;
+  failures += TestPaperCylinder(true) ? 0 : 1;
+  failures += TestPaperCylinder(false) ? 0 : 1;
+  failures += TestClosed("sphere 3000, input normals", Sphere(3000, 1), true, 0) ? 0 : 1;
+  failures += TestClosed("sphere 3000, PCA normals", Sphere(3000, 2), false, 0) ? 0 : 1;
+  failures += TestClosed("sphere 20000, input normals", Sphere(20000, 3), true, 0) ? 0 : 1;
+  failures += TestClosed("torus 4000, input normals", Torus(4000, 4), true, 1) ? 0 : 1;
+  failures += TestClosed("torus 4000, PCA normals", Torus(4000, 5), false, 1) ? 0 : 1;
+  failures += TestThinSheet() ? 0 : 1;
+  failures += TestBadInput() ? 0 : 1;
+  std::cout << failures << " failure(s)" << std::endl;
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -1,0 +1,93 @@
+"""vtkLocalOptimumGrowth from Python, and its ParaView proxy.
+
+Usage: python3 TestLocalOptimumGrowthPython.py          (the wrapped class)
+       pvpython TestLocalOptimumGrowthPython.py <plugin> (the LocalOptimumGrowth proxy too)
+
+Expectations known by construction: 1000 points on a Fibonacci spiral of the unit sphere give a
+closed mesh of 2V - 4 = 1996 triangles that uses every point; the parameters have the
+documented defaults and clamp to their documented ranges; the proxy's defaults equal the
+class's.
+"""
+import math
+import sys
+
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+from pointcloudsurface import vtkLocalOptimumGrowth, vtkReconstructionQuality
+
+
+def check(condition, message):
+    if not condition:
+        print("FAILED:", message)
+        sys.exit(1)
+
+
+def fibonacci_sphere(n):
+    points = vtkPoints()
+    golden = math.pi * (1.0 + math.sqrt(5.0))
+    for i in range(n):
+        phi = math.acos(1.0 - 2.0 * (i + 0.5) / n)
+        theta = golden * (i + 0.5)
+        points.InsertNextPoint(math.cos(theta) * math.sin(phi), math.sin(theta) * math.sin(phi),
+                               math.cos(phi))
+    cloud = vtkPolyData()
+    cloud.SetPoints(points)
+    return cloud
+
+
+DEFAULTS = {"NumberOfNeighbors": 20, "MaximumNormalAngle": 60.0, "MinimumEdgeRatio": 1.0 / 3.0,
+            "MaximumEdgeRatio": 3.0, "MaximumBaseAngle": 120.0, "MaximumHoleEdges": 8,
+            "RelaxConstraints": True}
+RANGES = {"NumberOfNeighbors": (4, 200), "MaximumNormalAngle": (1.0, 179.0),
+          "MinimumEdgeRatio": (0.0, 1.0), "MaximumEdgeRatio": (1.0, 1000.0),
+          "MaximumBaseAngle": (30.0, 179.0), "MaximumHoleEdges": (0, 1000)}
+
+growth = vtkLocalOptimumGrowth()
+for name, value in DEFAULTS.items():
+    got = getattr(growth, "Get" + name)()
+    check(abs(got - value) < 1e-12, "default %s = %s (got %s)" % (name, value, got))
+for name, (low, high) in RANGES.items():
+    probe = vtkLocalOptimumGrowth()
+    getattr(probe, "Set" + name)(type(low)(-10**9))
+    check(getattr(probe, "Get" + name)() == low, "%s clamps to %s" % (name, low))
+    getattr(probe, "Set" + name)(type(high)(10**9))
+    check(getattr(probe, "Get" + name)() == high, "%s clamps to %s" % (name, high))
+
+n = 1000
+growth.SetInputData(fibonacci_sphere(n))
+growth.Update()
+mesh = growth.GetOutput()
+check(mesh.GetNumberOfPoints() == n, "all points passed through")
+check(mesh.GetNumberOfPolys() == 2 * n - 4, "2V-4 triangles (got %d)" % mesh.GetNumberOfPolys())
+fd = mesh.GetFieldData()
+check(fd.GetArray("NumberOfTriangles").GetValue(0) == 2 * n - 4, "field data NumberOfTriangles")
+check(fd.GetArray("NumberOfUnusedPoints").GetValue(0) == 0, "no unused point")
+check(fd.GetArray("NumberOfSeeds").GetValue(0) == 1, "one seed")
+used = mesh.GetPointData().GetArray("Used")
+check(used is not None and all(used.GetValue(i) == 1 for i in range(n)), "point data Used")
+quality = vtkReconstructionQuality()
+quality.SetInputData(mesh)
+quality.Update()
+qfd = quality.GetOutput().GetFieldData()
+check(qfd.GetArray("Genus").GetValue(0) == 0, "genus 0")
+check(qfd.GetArray("NumberOfNonManifoldEdges").GetValue(0) == 0, "manifold edges")
+check(qfd.GetArray("OrientationConsistency").GetValue(0) == 1.0, "consistent orientation")
+check("MaximumBaseAngle" in str(growth), "PrintSelf prints the parameters")
+
+if len(sys.argv) > 1:
+    from paraview import servermanager
+    from paraview.simple import LoadPlugin, TrivialProducer
+
+    LoadPlugin(sys.argv[1], ns=globals())
+    check("LocalOptimumGrowth" in globals(), "LoadPlugin defines LocalOptimumGrowth")
+    producer = TrivialProducer()
+    producer.GetClientSideObject().SetOutput(fibonacci_sphere(n))
+    proxy = LocalOptimumGrowth(Input=producer)  # noqa: F821 (defined by LoadPlugin)
+    for name, value in DEFAULTS.items():
+        got = proxy.GetPropertyValue(name)
+        check(abs(got - value) < 1e-9, "proxy default %s = %s (got %s)" % (name, value, got))
+    proxy.UpdatePipeline()
+    out = servermanager.Fetch(proxy)
+    check(out.GetNumberOfPolys() == 2 * n - 4, "proxy output 2V-4 (got %d)" % out.GetNumberOfPolys())
+print("ok")

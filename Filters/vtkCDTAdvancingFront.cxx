@@ -36,6 +36,7 @@
 #include <deque>
 #include <limits>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -213,6 +214,97 @@ vtkIdType RemovePinches(pcs::SurfaceMesh& mesh)
 }
 
 //------------------------------------------------------------------------------------------------
+// Where to look for the mesh edges that may cross a new triangle (rule II.D.2). An edge u w
+// passing within `reach` of a point x has u within reach + |u w| of x; with one global longest
+// edge that ball is large (a few long edges, typically made where the sampling is sparse, would
+// make every query pay for them). This coarse grid keeps, per cell, the longest edge with an end
+// point in it, so that the ball only grows where long edges are: the points themselves are then
+// found by vtkStaticPointLocator. (Cells are hashed; two cells sharing a slot share the larger
+// length, which only enlarges the ball.)
+class EdgeReachGrid
+{
+public:
+  void Initialize(const double* bounds, double size)
+  {
+    this->Origin[0] = bounds[0];
+    this->Origin[1] = bounds[2];
+    this->Origin[2] = bounds[4];
+    this->Size = size > 0.0 && std::isfinite(size) ? size : 1.0;
+    this->Cells.clear();
+  }
+
+  void Add(const double* p, double length)
+  {
+    double& longest = this->Cells[this->Key(this->Cell(p, 0), this->Cell(p, 1), this->Cell(p, 2))];
+    longest = std::max(longest, length);
+  }
+
+  // The radius around x that holds every end point of an edge passing within `reach` of x;
+  // `longest` is the longest edge of the mesh (the bound when too many cells are in range).
+  double Reach(const double* x, double reach, double longest) const
+  {
+    const double extent = reach + longest;
+    int64_t low[3], high[3];
+    int64_t cells = 1;
+    for (int k = 0; k < 3; ++k)
+    {
+      low[k] = this->Cell(x, k, -extent);
+      high[k] = this->Cell(x, k, extent);
+      cells *= high[k] - low[k] + 1;
+    }
+    if (cells > 343 || cells <= 0)
+    {
+      return reach + longest;
+    }
+    double result = reach;
+    for (int64_t i = low[0]; i <= high[0]; ++i)
+    {
+      for (int64_t j = low[1]; j <= high[1]; ++j)
+      {
+        for (int64_t k = low[2]; k <= high[2]; ++k)
+        {
+          const auto found = this->Cells.find(this->Key(i, j, k));
+          if (found == this->Cells.end() || reach + found->second <= result)
+          {
+            continue;
+          }
+          // Distance from x to the cell's box.
+          const int64_t index[3] = { i, j, k };
+          double d2 = 0.0;
+          for (int c = 0; c < 3; ++c)
+          {
+            const double lo = this->Origin[c] + this->Size * static_cast<double>(index[c]);
+            const double gap = std::max(std::max(lo - x[c], x[c] - (lo + this->Size)), 0.0);
+            d2 += gap * gap;
+          }
+          const double bound = reach + found->second;
+          if (d2 <= bound * bound)
+          {
+            result = bound;
+          }
+        }
+      }
+    }
+    return result;
+  }
+
+private:
+  int64_t Cell(const double* p, int k, double shift = 0.0) const
+  {
+    const double c = std::floor((p[k] + shift - this->Origin[k]) / this->Size);
+    return static_cast<int64_t>(std::max(-1e15, std::min(1e15, c)));
+  }
+  static int64_t Key(int64_t i, int64_t j, int64_t k)
+  {
+    return (i * 73856093) ^ (j * 19349663) ^ (k * 83492791);
+  }
+
+  double Origin[3] = { 0, 0, 0 };
+  double Size = 1.0;
+  std::unordered_map<int64_t, double> Cells;
+};
+
+//------------------------------------------------------------------------------------------------
 // The rules of paper 003 in one place: which triangles are valid, and the front that grows them.
 struct Parameters
 {
@@ -245,6 +337,14 @@ public:
           (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
           (bounds[5] - bounds[4]) * (bounds[5] - bounds[4])) +
       std::numeric_limits<double>::min();
+  }
+
+  // Cell size of the edge-reach grid (a few neighbourhood radii).
+  void SetEdgeReachCellSize(double size)
+  {
+    double bounds[6];
+    this->Locator->GetDataSet()->GetBounds(bounds);
+    this->EdgeReach.Initialize(bounds, std::min(size, this->Diagonal));
   }
 
   // The triangles made, their origin (0 seed, 1 front, 2 hole filling).
@@ -309,6 +409,7 @@ private:
   unsigned CurrentStamp = 0;
   double LongestEdge = 0;          // of the mesh: bounds the reach of an edge crossing a triangle
   std::vector<double> MaxIncident; // per point: its longest edge
+  EdgeReachGrid EdgeReach;
   vtkIdType Steps = 0;
   int ProjectionTests = 0; // of the current edge
 };
@@ -390,8 +491,8 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
   // within reach + MaximumRay of g. An edge u w crosses it only if a point of the projected
   // segment, (1 - s) u' + s w' with u' = u + t_u n_u, |t_u| <= MaximumRay (the same for w), is in
   // the triangle: the segment u w passes within reach + MaximumRay of g, and u is within that
-  // plus |u w| <= LongestEdge of g. These bounds only select what the exact tests then decide
-  // (1 % of margin against rounding).
+  // plus |u w| of g (EdgeReachGrid bounds |u w| locally). These bounds only select what the exact
+  // tests then decide (1 % of margin against rounding).
   const Id v[3] = { e0, e1, third };
   double centroid[3];
   for (int k = 0; k < 3; ++k)
@@ -404,7 +505,8 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
     reach = std::max(reach, std::sqrt(Distance2(this->P(i), centroid)));
   }
   const double pointReach = reach + parameters.MaximumRay;
-  const double edgeReach = 1.01 * pointReach + this->LongestEdge;
+  const double edgeReach =
+    this->EdgeReach.Reach(centroid, 1.01 * pointReach, this->LongestEdge) * 1.000001;
   const double segmentReach2 = 1.0201 * pointReach * pointReach;
   this->FindPoints(edgeReach, centroid, this->Ball);
   const vtkIdType count = this->Ball->GetNumberOfIds();
@@ -586,6 +688,8 @@ int64_t Front::Add(Id a, Id b, Id c, uint8_t origin)
     this->LongestEdge = std::max(this->LongestEdge, length);
     this->MaxIncident[from] = std::max(this->MaxIncident[from], length);
     this->MaxIncident[to] = std::max(this->MaxIncident[to], length);
+    this->EdgeReach.Add(this->P(from), length);
+    this->EdgeReach.Add(this->P(to), length);
   }
   // Its edges, and the front edges next to its vertices (which may now close as ears).
   for (int i = 0; i < 3; ++i)
@@ -1131,6 +1235,7 @@ int vtkCDTAdvancingFront::RequestData(
   // III.A and III.B: seeds in input order, each grown by the advancing front.
   pcs::SurfaceMesh mesh(local);
   Front front(this, xyz.data(), normals.data(), status, locator, mesh);
+  front.SetEdgeReachCellSize(2.0 * strict.Radius);
   for (Id p = 0; p < local && !front.Aborted; ++p)
   {
     if (status[p] != Usable || !mesh.IsFree(p))

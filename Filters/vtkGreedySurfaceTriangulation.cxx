@@ -139,7 +139,8 @@ public:
   std::vector<uint8_t> Status;         // vtkGreedySurfaceTriangulation::PointStatus
   std::vector<uint8_t> Stage;          // per mesh triangle id
   std::vector<int32_t> Component;      // per vertex (-1 without triangles)
-  std::vector<double> BoundaryVectors; // 3 per vertex (boundary vertices only)
+  std::vector<double> BoundaryVectors; // 3 per vertex (boundary vertices only), smoothed over b
+  std::vector<double> EdgeVectors;     // the same from the vertex's own two edges (step 5)
   std::vector<std::array<int32_t, 2>> Links; // bridges and chords (step 7)
 
   // Loops (steps 3 to 6).
@@ -690,6 +691,7 @@ Reconstruction::Umbrella Reconstruction::CheckUmbrella(int32_t v,
 // Step 2: umbrella filtering until stable, then the oriented manifold mesh.
 void Reconstruction::Step2Umbrella(double begin, double end)
 {
+  this->LostPoints = 0;
   const size_t numberOfTriangles = this->Step1Triangles.size() / 3;
   std::vector<int64_t> offsets(static_cast<size_t>(this->N) + 1, 0);
   for (int32_t v : this->Step1Triangles)
@@ -885,6 +887,51 @@ void Reconstruction::Step2Umbrella(double begin, double end)
     }
   }
   this->ComputeComponents();
+
+  // Small islands (fewer than MinimumIslandTriangles triangles, except the largest component)
+  // are dissolved: their points become lost points of the hole around them.
+  const int64_t ids = this->Mesh.GetNumberOfTriangleIds();
+  std::vector<int64_t> sizes;
+  for (int64_t t = 0; t < ids; ++t)
+  {
+    if (!this->Mesh.IsTriangleRemoved(t))
+    {
+      const int32_t c = this->Component[this->Mesh.GetTriangle(t)[0]];
+      if (c >= static_cast<int32_t>(sizes.size()))
+      {
+        sizes.resize(c + 1, 0);
+      }
+      ++sizes[c];
+    }
+  }
+  const int64_t minimum = this->Self->GetMinimumIslandTriangles();
+  const size_t largest = sizes.empty() ? 0 : std::max_element(sizes.begin(), sizes.end()) - sizes.begin();
+  bool dissolved = false;
+  for (int64_t t = 0; t < ids; ++t)
+  {
+    if (this->Mesh.IsTriangleRemoved(t))
+    {
+      continue;
+    }
+    const int32_t c = this->Component[this->Mesh.GetTriangle(t)[0]];
+    if (static_cast<size_t>(c) != largest && sizes[c] < minimum)
+    {
+      this->Mesh.RemoveTriangle(t);
+      dissolved = true;
+    }
+  }
+  if (dissolved)
+  {
+    for (int32_t v = 0; v < this->N; ++v)
+    {
+      if (this->Status[v] != vtkGreedySurfaceTriangulation::LOST && this->Mesh.IsFree(v))
+      {
+        this->Status[v] = vtkGreedySurfaceTriangulation::LOST;
+        ++this->LostPoints;
+      }
+    }
+    this->ComputeComponents();
+  }
 }
 
 // Connected components of the mesh triangles (through shared edges), per vertex.
@@ -937,6 +984,7 @@ bool Reconstruction::IsHole(const std::vector<int32_t>& vertices) const
   // The paper's test. P1 is searched among the loop points at least a third of the loop away
   // from P0, so that it is never a neighbour of P0 on a thin loop.
   const size_t gap = std::max<size_t>(1, (n + 2) / 3);
+  const double neutral = std::sin(vtkMath::RadiansFromDegrees(this->Self->GetStatusNeutralAngle()));
   int positive = 0, negative = 0;
   const size_t tries = std::min<size_t>(16, n);
   for (size_t attempt = 0; attempt < tries; ++attempt)
@@ -957,13 +1005,18 @@ bool Reconstruction::IsHole(const std::vector<int32_t>& vertices) const
     }
     double d01[3];
     vtkMath::Subtract(this->P(p1), this->P(p0), d01);
-    const double s1 = vtkMath::Dot(d01, I(p1));
-    const double s0 = -vtkMath::Dot(d01, I(p0));
-    for (double s : { s0, s1 })
+    const double length = vtkMath::Norm(d01);
+    // A dot product votes when the angle between P0P1 and the boundary vector is at least
+    // StatusNeutralAngle away from 90 degrees.
+    for (int end = 0; end < 2; ++end)
     {
-      positive += s > 0 ? 1 : 0;
-      negative += s < 0 ? 1 : 0;
+      const double* vector = I(end == 0 ? p0 : p1);
+      const double scale = length * vtkMath::Norm(vector);
+      const double cosine = scale > 0 ? (end == 0 ? -1.0 : 1.0) * vtkMath::Dot(d01, vector) / scale : 0.0;
+      positive += cosine > neutral ? 1 : 0;
+      negative += cosine < -neutral ? 1 : 0;
     }
+    // Neutral products count in the total: they never make a majority.
     const int total = 2 * static_cast<int>(attempt + 1);
     if (4 * positive >= 3 * total)
     {
@@ -980,6 +1033,7 @@ bool Reconstruction::IsHole(const std::vector<int32_t>& vertices) const
   // (loop vector area) . (sum of the triangle normals), when that is clear (the two vectors
   // within 60 degrees of parallel); otherwise an island (left open).
   double area[3] = { 0, 0, 0 }, normal[3] = { 0, 0, 0 };
+  double normalLengths = 0.0;
   const double* origin = this->P(vertices[0]);
   for (size_t i = 0; i < n; ++i)
   {
@@ -997,11 +1051,12 @@ bool Reconstruction::IsHole(const std::vector<int32_t>& vertices) const
       vtkMath::Subtract(this->P(c), this->P(a), w);
       vtkMath::Cross(u, w, t);
       vtkMath::Add(normal, t, normal);
+      normalLengths += vtkMath::Norm(t);
     }
   }
   const double scale = vtkMath::Norm(area) * vtkMath::Norm(normal);
   const double cosine = scale > 0 ? vtkMath::Dot(area, normal) / scale : 0.0;
-  return cosine < -0.5;
+  return cosine < -0.5 && vtkMath::Norm(normal) >= 0.25 * normalLengths;
 }
 
 void Reconstruction::Step3Status()
@@ -1011,6 +1066,7 @@ void Reconstruction::Step3Status()
   this->NodeOf.assign(this->N, -1);
   this->Nodes.clear();
   this->BoundaryVectors.assign(3 * static_cast<size_t>(this->N), 0.0);
+  this->EdgeVectors.assign(3 * static_cast<size_t>(this->N), 0.0);
 
   // Boundary vectors (paper Fig. 8): the direction from a boundary point into its region, as
   // the sum of the unit inward perpendiculars of its two boundary edges, each in the plane of
@@ -1031,15 +1087,39 @@ void Reconstruction::Step3Status()
       vtkMath::Add(sum, d, sum);
     }
   };
+  const double window = this->Self->GetBoundaryVectorRadius() * this->Spacing;
+  std::vector<double> raw;
   for (const auto& loop : loops)
   {
     const size_t n = loop.size();
+    raw.assign(3 * n, 0.0);
     for (size_t i = 0; i < n; ++i)
     {
-      const int32_t v = loop[i];
-      double* vector = &this->BoundaryVectors[3 * static_cast<size_t>(v)];
-      inward(loop[(i + n - 1) % n], v, vector);
-      inward(v, loop[(i + 1) % n], vector);
+      inward(loop[(i + n - 1) % n], loop[i], &raw[3 * i]);
+      inward(loop[i], loop[(i + 1) % n], &raw[3 * i]);
+      std::copy_n(&raw[3 * i], 3, &this->EdgeVectors[3 * static_cast<size_t>(loop[i])]);
+    }
+    // Mean over the loop points within BoundaryVectorRadius along the loop (the paper's b):
+    // smooths the jagged boundaries of random samples.
+    for (size_t i = 0; i < n; ++i)
+    {
+      double* vector = &this->BoundaryVectors[3 * static_cast<size_t>(loop[i])];
+      vtkMath::Add(vector, &raw[3 * i], vector);
+      for (int direction : { 1, -1 })
+      {
+        double along = 0.0;
+        for (size_t step = 1; step < n / 2 + (direction > 0 ? 1 : 0); ++step)
+        {
+          const size_t j = (i + n + direction * static_cast<long>(step)) % n;
+          const size_t k = (j + n - direction) % n;
+          along += Distance(this->P(loop[j]), this->P(loop[k]));
+          if (along > window)
+          {
+            break;
+          }
+          vtkMath::Add(vector, &raw[3 * j], vector);
+        }
+      }
     }
   }
 
@@ -1235,6 +1315,24 @@ void Reconstruction::Step4Bridges()
       const double* b1 = along(nb, +1);
       const bool consistent = angle(a0, b1, a1, b0) <= angle(a0, b0, a1, b1);
       const int32_t ga = find(this->Component[a]), gb = find(this->Component[b]);
+      if (ga == gb)
+      {
+        // Within one connected group a bridge may only split a loop (closing a hole between
+        // two bridges); joining two of its loops would make a handle.
+        bool sameLoop = false;
+        for (int32_t m = this->Nodes[na].Next; m != na; m = this->Nodes[m].Next)
+        {
+          if (m == nb)
+          {
+            sameLoop = true;
+            break;
+          }
+        }
+        if (!sameLoop)
+        {
+          continue;
+        }
+      }
       if (!consistent)
       {
         if (ga == gb)
@@ -1358,7 +1456,7 @@ void Reconstruction::Step6FillHoles(double begin, double end)
     {
       const int32_t v = this->Nodes[*it].Vertex;
       loop.push_back(v);
-      const double* I = &this->BoundaryVectors[3 * static_cast<size_t>(v)];
+      const double* I = &this->EdgeVectors[3 * static_cast<size_t>(v)];
       vectors.insert(vectors.end(), I, I + 3);
       vtkMath::Add(centre, this->P(v), centre);
     }
@@ -1655,6 +1753,8 @@ int vtkGreedySurfaceTriangulation::RequestData(
     pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", duplicates);
     pcs::AddFieldCount(fd, "NumberOfSkippedPoints", skipped);
     pcs::AddFieldValue(fd, "MeanSpacing", r.Spacing);
+    pcs::AddFieldValue(fd, "MedianUniformity", r.MedianUniformity);
+    pcs::AddFieldCount(fd, "CrossingTestUsed", r.Normals.empty() ? 0 : 1);
     pcs::AddFieldCount(fd, "NumberOfPoints", numberOfPoints);
     pcs::AddFieldValue(fd, "AverageUniformityInSSR",
       ssrUniformityCount > 0 ? ssrUniformity / ssrUniformityCount : NaN);
@@ -1792,8 +1892,6 @@ int vtkGreedySurfaceTriangulation::RequestData(
   }
 
   // Steps 1 to 7.
-  bool crossing = this->CrossingTest == CROSSING_TEST_ON;
-  if (this->CrossingTest == CROSSING_TEST_AUTOMATIC)
   {
     std::vector<double> finite;
     finite.reserve(r.Uniformity.size());
@@ -1809,27 +1907,38 @@ int vtkGreedySurfaceTriangulation::RequestData(
       std::nth_element(finite.begin(), finite.begin() + finite.size() / 2, finite.end());
       r.MedianUniformity = finite[finite.size() / 2];
     }
-    crossing = !(r.MedianUniformity <= this->AutomaticUniformityLimit);
   }
-  if (crossing && !r.ComputeNormals())
+  // Steps 1 and 2, with the crossing test when asked for, or in automatic mode when the paper's
+  // test leaves too few points correct.
+  for (int pass = 0; pass < 2; ++pass)
   {
-    vtkWarningMacro("No normals could be estimated: step 1 uses the topological test only.");
-  }
-  if (!r.Progress(0.3))
-  {
-    return finish();
-  }
-  r.Step1GreedyEdges(0.3, 0.5);
-  if (r.Aborted)
-  {
-    return finish();
+    const bool crossing = this->CrossingTest == CROSSING_TEST_ON || pass == 1;
+    if (crossing && !r.ComputeNormals())
+    {
+      vtkWarningMacro("No normals could be estimated: step 1 uses the topological test only.");
+    }
+    if (!r.Progress(pass == 0 ? 0.3 : 0.45))
+    {
+      return finish();
+    }
+    r.Step1GreedyEdges(pass == 0 ? 0.3 : 0.45, pass == 0 ? 0.45 : 0.55);
+    if (r.Aborted)
+    {
+      return finish();
+    }
+    r.Step2Umbrella(pass == 0 ? 0.45 : 0.55, pass == 0 ? 0.5 : 0.6);
+    if (r.Aborted)
+    {
+      return finish();
+    }
+    const double correct = static_cast<double>(r.N - r.LostPoints) / r.N;
+    if (this->CrossingTest != CROSSING_TEST_AUTOMATIC || crossing ||
+      correct >= this->AutomaticCorrectFraction)
+    {
+      break;
+    }
   }
   steps = "1";
-  r.Step2Umbrella(0.5, 0.6);
-  if (r.Aborted)
-  {
-    return finish();
-  }
   steps += ", 2";
   for (int32_t v = 0; v < r.N; ++v)
   {
@@ -1931,10 +2040,13 @@ void vtkGreedySurfaceTriangulation::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfNeighbors: " << this->NumberOfNeighbors << "\n";
   os << indent << "CrossingTest: " << this->CrossingTest << "\n";
-  os << indent << "AutomaticUniformityLimit: " << this->AutomaticUniformityLimit << "\n";
+  os << indent << "AutomaticCorrectFraction: " << this->AutomaticCorrectFraction << "\n";
   os << indent << "UniformityNeighbors: " << this->UniformityNeighbors << "\n";
   os << indent << "UniformityAngle: " << this->UniformityAngle << "\n";
   os << indent << "MaximumNormalDeviation: " << this->MaximumNormalDeviation << "\n";
+  os << indent << "MinimumIslandTriangles: " << this->MinimumIslandTriangles << "\n";
+  os << indent << "BoundaryVectorRadius: " << this->BoundaryVectorRadius << "\n";
+  os << indent << "StatusNeutralAngle: " << this->StatusNeutralAngle << "\n";
   os << indent << "BridgeIslands: " << this->BridgeIslands << "\n";
   os << indent << "MaximumBridgeLength: " << this->MaximumBridgeLength << "\n";
   os << indent << "MinimumBridgeSeparation: " << this->MinimumBridgeSeparation << "\n";

@@ -1,21 +1,51 @@
 """Parallel correctness under MPI (issue 8): run with `mpirun -np N pvbatch` (N = 1, 2, 4).
 
 A programmable source gives each process a contiguous piece of one cloud of 2,000 random points
-on the unit sphere (in convex position: its Delaunay hull has exactly 2V - 4 triangles over all
-the points, a closed genus-0 surface). The filters gather their input on process 0, so the
-fetched results must be the serial ones whatever N is: IncrementalDelaunay3D's hull has 2V - 4
-triangles over the V points, and ReconstructionQuality measures it as closed, genus 0, Euler 2,
-every point used.
+on the unit sphere, with their normals (point array Normals) and their index in the whole cloud
+(OriginalIndex). Every filter proxy of the plugin (IncrementalDelaunay3D, PerimeterPeelSurface,
+LocalOptimumGrowth, CDTAdvancingFront and, when this build's plugin has it,
+GreedySurfaceTriangulation) runs on the split cloud with its default properties, followed by a
+ReconstructionQuality proxy; the fetched mesh and measures are compared with the serial answer
+computed in this script: the plain VTK class of the filter (the Python package), same
+parameters, run in-process on the whole cloud with a single-process controller, then measured
+by vtkReconstructionQuality. They must agree exactly, whatever N is:
+
+- the number of points passed through and the triangles themselves, as oriented triples of
+  OriginalIndex (so the same triangles in the same orientation, not just as many);
+- every field data value of the filter and of ReconstructionQuality (triangles, used points,
+  coverage, boundary edges and loops, non-manifold edges and vertices, components, Euler
+  characteristic, genus, orientation consistency, and the distances to the cloud, which is
+  ReconstructionQuality's Reference input, split as well), timings excepted.
+
+A rank that meshed only its own piece would fail: with N > 1 the script checks that the mesh of
+the first piece alone differs from the whole-cloud reference (the comparison can tell them
+apart). Known by construction besides: the points are in convex position, so the Delaunay hull
+has 2V - 4 triangles over all V points, closed, genus 0.
 
 Usage: mpirun -np N pvbatch TestParallelGather.py <path to PointCloudSurface.so>
+(PYTHONPATH must reach the build's pointcloudsurface package.)
 """
 import sys
 
+import numpy as np
 from paraview import servermanager
-from paraview.simple import LoadPlugin, ProgrammableSource
-from vtkmodules.vtkParallelCore import vtkMultiProcessController
+import paraview.simple as simple
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkParallelCore import vtkDummyController, vtkMultiProcessController
 
 POINTS = 2000
+SEED = 17
+# Proxy name, class name, properties set on both (besides the defaults).
+FILTERS = [
+    ("IncrementalDelaunay3D", "vtkIncrementalDelaunay3D", {"GenerateTetrahedra": 0}),
+    ("PerimeterPeelSurface", "vtkPerimeterPeelSurface", {}),
+    ("LocalOptimumGrowth", "vtkLocalOptimumGrowth", {}),
+    ("CDTAdvancingFront", "vtkCDTAdvancingFront", {}),
+    ("GreedySurfaceTriangulation", "vtkGreedySurfaceTriangulation", {}),
+]
+TIMINGS = {"Seconds", "PointsPerSecond"}
 
 
 def check(condition, message):
@@ -24,36 +54,127 @@ def check(condition, message):
         sys.exit(1)
 
 
-LoadPlugin(sys.argv[1], ns=globals())
-processes = vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses()
+def sphere_cloud():
+    """The whole cloud: points and normals (the same numbers as the programmable source)."""
+    points = np.random.default_rng(SEED).normal(size=(POINTS, 3))
+    points /= np.linalg.norm(points, axis=1)[:, None]
+    return points
 
-cloud_source = ProgrammableSource(OutputDataSetType="vtkPolyData")
-cloud_source.Script = """
+
+SOURCE_SCRIPT = """
 import numpy as np
-from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkCommonCore import vtkPoints, vtkDoubleArray
 from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
 info = self.GetOutputInformation(0)
 piece = info.Get(sddp.UPDATE_PIECE_NUMBER())
 pieces = info.Get(sddp.UPDATE_NUMBER_OF_PIECES())
-rng = np.random.default_rng(17)
-p = rng.normal(size=(%d, 3))
+p = np.random.default_rng(%d).normal(size=(%d, 3))
 p /= np.linalg.norm(p, axis=1)[:, None]
 begin, end = piece * len(p) // pieces, (piece + 1) * len(p) // pieces
 chunk = np.ascontiguousarray(p[begin:end])
 points = vtkPoints()
 points.SetData(numpy_to_vtk(chunk, deep=True))
-ids = numpy_to_vtk(np.arange(begin, end, dtype=np.float64), deep=True)
-ids.SetName("OriginalIndex")
 out = self.GetOutput()
 out.SetPoints(points)
+normals = numpy_to_vtk(chunk, deep=True)
+normals.SetName("Normals")
+out.GetPointData().SetNormals(normals)
+ids = numpy_to_vtk(np.arange(begin, end, dtype=np.float64), deep=True)
+ids.SetName("OriginalIndex")
 out.GetPointData().AddArray(ids)
 count = vtkDoubleArray()
 count.SetName("NumberOfPieces")
 count.InsertNextValue(pieces)
 out.GetFieldData().AddArray(count)
-""" % POINTS
+""" % (SEED, POINTS)
+
+
+def make_polydata(points, begin=0):
+    cloud = vtkPolyData()
+    vtk_points = vtkPoints()
+    vtk_points.SetData(numpy_to_vtk(np.ascontiguousarray(points), deep=True))
+    cloud.SetPoints(vtk_points)
+    normals = numpy_to_vtk(np.ascontiguousarray(points), deep=True)
+    normals.SetName("Normals")
+    cloud.GetPointData().SetNormals(normals)
+    ids = numpy_to_vtk(np.arange(begin, begin + len(points), dtype=np.float64), deep=True)
+    ids.SetName("OriginalIndex")
+    cloud.GetPointData().AddArray(ids)
+    return cloud
+
+
+def serial(function):
+    """Runs ``function`` with a single-process global controller: the filters then compute on
+    what they are given, without gathering (the other processes are not involved)."""
+    parallel = vtkMultiProcessController.GetGlobalController()
+    single = vtkDummyController()
+    vtkMultiProcessController.SetGlobalController(single)
+    try:
+        return function()
+    finally:
+        vtkMultiProcessController.SetGlobalController(parallel)
+
+
+def serial_mesh(class_name, properties, cloud):
+    """The plain VTK filter and vtkReconstructionQuality on ``cloud``, serially."""
+    import pointcloudsurface
+
+    def run():
+        algorithm = getattr(pointcloudsurface, class_name)()
+        for name, value in properties.items():
+            getattr(algorithm, "Set" + name)(value)
+        algorithm.SetInputData(cloud)
+        quality = pointcloudsurface.vtkReconstructionQuality()
+        quality.SetInputConnection(algorithm.GetOutputPort(0))
+        quality.SetReferenceData(cloud)  # distances between the mesh and the cloud
+        quality.Update()
+        result = vtkPolyData()
+        result.ShallowCopy(quality.GetOutput())
+        return result
+
+    return serial(run)
+
+
+def oriented_triangles(mesh):
+    """The triangles as a sorted list of (a, b, c) OriginalIndex triples, each rotated so that
+    its smallest index comes first (orientation kept)."""
+    polys = mesh.GetPolys()
+    if polys.GetNumberOfCells() == 0:
+        return []
+    offsets = vtk_to_numpy(polys.GetOffsetsArray())
+    check(np.all(np.diff(offsets) == 3), "%s: triangles only" % mesh)
+    ids = vtk_to_numpy(polys.GetConnectivityArray()).reshape(-1, 3)
+    original = vtk_to_numpy(mesh.GetPointData().GetArray("OriginalIndex")).astype(np.int64)
+    triples = original[ids]
+    first = np.argmin(triples, axis=1)
+    rows = np.arange(len(triples))
+    rotated = np.stack([triples[rows, first], triples[rows, (first + 1) % 3],
+                        triples[rows, (first + 2) % 3]], axis=1)
+    return sorted(map(tuple, rotated.tolist()))
+
+
+def field_values(mesh):
+    fd = mesh.GetFieldData()
+    values = {}
+    for i in range(fd.GetNumberOfArrays()):
+        array = fd.GetAbstractArray(i)
+        name = array.GetName()
+        if name in TIMINGS or name == "NumberOfPieces" or not hasattr(array, "GetTuple1"):
+            continue
+        values[name] = array.GetTuple1(0) if array.GetNumberOfTuples() else None
+    return values
+
+
+def same_value(a, b):
+    return a == b or (a != a and b != b)  # NaN measures (no distances) agree too
+
+
+simple.LoadPlugin(sys.argv[1], ns=globals())
+processes = vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses()
+
+cloud_source = simple.ProgrammableSource(OutputDataSetType="vtkPolyData")
+cloud_source.Script = SOURCE_SCRIPT
 
 # The source really is split: one piece per process.
 cloud = servermanager.Fetch(cloud_source)
@@ -61,36 +182,65 @@ check(cloud.GetNumberOfPoints() == POINTS, "the pieces add up to the cloud")
 check(cloud.GetFieldData().GetArray("NumberOfPieces").GetValue(0) == processes,
       "one piece per process")
 
-delaunay = IncrementalDelaunay3D(Input=cloud_source)  # noqa: F821 (defined by LoadPlugin)
-delaunay.GenerateTetrahedra = 0
-delaunay.UpdatePipeline()
-hull = servermanager.Fetch(delaunay)
-print("processes %d: hull %d points, %d triangles" % (processes, hull.GetNumberOfPoints(),
-                                                      hull.GetNumberOfPolys()))
-check(hull.GetNumberOfPoints() == POINTS, "all %d points on the output (got %d)"
-      % (POINTS, hull.GetNumberOfPoints()))
-check(hull.GetNumberOfPolys() == 2 * POINTS - 4, "2V - 4 hull triangles (got %d)"
-      % hull.GetNumberOfPolys())
-original = hull.GetPointData().GetArray("OriginalIndex")
-check(original is not None, "OriginalIndex passed through")
-in_order = [i for i in range(POINTS) if original.GetValue(i) != i] == []
-check(in_order, "points gathered in process order (the serial order)")
+whole = sphere_cloud()
+whole_cloud = make_polydata(whole)
+first_piece = make_polydata(whole[:POINTS // processes])
+tested = []
+for proxy_name, class_name, properties in FILTERS:
+    if proxy_name not in globals():  # LoadPlugin defines the proxies' functions here
+        # Only a proxy that another engineer has not added yet may be missing.
+        check(proxy_name == "GreedySurfaceTriangulation", "the plugin has %s" % proxy_name)
+        print("processes %d: %s: no such proxy in this build, skipped" % (processes, proxy_name))
+        continue
+    tested.append(proxy_name)
+    proxy = globals()[proxy_name](Input=cloud_source)
+    for name, value in properties.items():
+        setattr(proxy, name, value)
+    # The reference is the split cloud itself: ReconstructionQuality gathers both inputs.
+    quality = globals()["ReconstructionQuality"](Input=proxy, Reference=cloud_source)
+    quality.UpdatePipeline()
+    measured = servermanager.Fetch(quality)  # the mesh, with the filter's and the measures
+    reference = serial_mesh(class_name, properties, whole_cloud)
 
-quality = ReconstructionQuality(Input=delaunay)  # noqa: F821
-quality.UpdatePipeline()
-measured = servermanager.Fetch(quality)
-fd = measured.GetFieldData()
+    triangles = oriented_triangles(measured)
+    expected = oriented_triangles(reference)
+    values, expected_values = field_values(measured), field_values(reference)
+    print("processes %d: %s: %d points, %d triangles (serial %d), genus %g, %d boundary edges"
+          % (processes, proxy_name, measured.GetNumberOfPoints(), len(triangles), len(expected),
+             values.get("Genus", float("nan")), values.get("NumberOfBoundaryEdges", -1)))
+    check(len(expected) > 0, "%s: the serial reference has triangles" % proxy_name)
+    check(measured.GetNumberOfPoints() == reference.GetNumberOfPoints() == POINTS,
+          "%s: all %d points on the output (got %d)" % (proxy_name, POINTS,
+                                                        measured.GetNumberOfPoints()))
+    check(len(triangles) == len(expected), "%s: %d triangles as serial (got %d)"
+          % (proxy_name, len(expected), len(triangles)))
+    check(triangles == expected, "%s: the same oriented triangles as serial" % proxy_name)
+    check(set(values) == set(expected_values), "%s: the same field data arrays (%s)"
+          % (proxy_name, sorted(set(values) ^ set(expected_values))))
+    differing = [name for name in sorted(values)
+                 if not same_value(values[name], expected_values[name])]
+    check(not differing, "%s: field data as serial; differ: %s" % (proxy_name, ", ".join(
+        "%s %r (serial %r)" % (n, values[n], expected_values[n]) for n in differing)))
+    for name in ("NumberOfTriangles", "NumberOfUsedPoints", "Coverage", "NumberOfBoundaryEdges",
+                 "NumberOfNonManifoldEdges", "NumberOfNonManifoldVertices", "Genus",
+                 "EulerCharacteristic"):
+        check(name in values, "%s: quality field %s" % (proxy_name, name))
+    check(values["NumberOfTriangles"] == len(triangles), "%s: measured triangles" % proxy_name)
 
+    if processes > 1:
+        # The comparison tells a piece's mesh from the whole cloud's.
+        alone = oriented_triangles(serial_mesh(class_name, properties, first_piece))
+        check(alone != expected, "%s: the first piece alone meshes differently" % proxy_name)
 
-def field(name):
-    array = fd.GetArray(name)
-    check(array is not None, "field %s" % name)
-    return array.GetTuple1(0)
+    if proxy_name == "IncrementalDelaunay3D":
+        # Convex position: the hull has 2V - 4 triangles, every point used, closed, genus 0.
+        check(len(triangles) == 2 * POINTS - 4, "hull: 2V - 4 triangles")
+        check(values["Coverage"] == 1.0 and values["NumberOfBoundaryEdges"] == 0
+              and values["NumberOfNonManifoldEdges"] == 0 and values["Genus"] == 0
+              and values["EulerCharacteristic"] == 2, "hull: closed genus 0 over every point")
+        original = vtk_to_numpy(measured.GetPointData().GetArray("OriginalIndex"))
+        check(np.array_equal(original, np.arange(POINTS)),
+              "points gathered in process order (the serial order)")
 
-
-check(field("NumberOfTriangles") == 2 * POINTS - 4, "quality: triangles")
-check(field("Coverage") == 1.0, "quality: coverage 1")
-check(field("NumberOfBoundaryEdges") == 0, "quality: closed")
-check(field("NumberOfNonManifoldEdges") == 0, "quality: manifold")
-check(field("EulerCharacteristic") == 2 and field("Genus") == 0, "quality: genus 0")
-print("processes %d: quality as serial" % processes)
+check(len(tested) >= 4, "every filter proxy tested (%s)" % ", ".join(tested))
+print("processes %d: quality as serial (%s)" % (processes, ", ".join(tested)))

@@ -1,8 +1,20 @@
-"""The ParaView plugin loads in pvpython and IncrementalDelaunay3D runs with its 3 outputs.
+"""The ParaView plugin loads in pvpython, IncrementalDelaunay3D runs with its 3 outputs, and every
+proxy of the plugin's XML runs with its default properties on one cloud with sane output.
+
+The proxies are read from Plugin/PointCloudSurface.xml, so a proxy added there is run here too.
+The cloud: 1,000 random points on the unit sphere with their normals (point array Normals), a
+point data array to pass through, and 10 exact duplicates. Each reconstruction proxy must give a
+vtkPolyData with every input point (1,010), the point data passed, triangles only (> 0), point
+ids in range and no triangle with a repeated id; its Used array (when it has one) must be the
+triangles' vertex set, with used points > 0 and never both copies of a duplicate used. The
+ReconstructionQuality proxy then measures each mesh: its triangle and used-point counts must be
+the ones counted here.
 
 Usage: pvpython TestPluginLoad.py <path to PointCloudSurface.so>
 """
+import os
 import sys
+import xml.etree.ElementTree as ElementTree
 
 from paraview import servermanager
 from paraview.simple import LoadPlugin, PointSource
@@ -47,4 +59,88 @@ check(surface.GetNumberOfCells() > 0, "hull triangles are produced")
 # Voronoi: one vertex per tetrahedron plus one ray end per hull triangle.
 check(voronoi.GetNumberOfPoints() == tetrahedra.GetNumberOfCells() + surface.GetNumberOfCells(),
       "Voronoi vertex count")
+
+# ------------------------------------------------------------------------------------------
+# Every proxy of the plugin on one cloud.
+import numpy as np  # noqa: E402
+from paraview.simple import ProgrammableSource  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+
+xml_path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Plugin",
+                        "PointCloudSurface.xml")
+proxies = [element.get("name") for element in ElementTree.parse(xml_path).iter("SourceProxy")]
+print("proxies in the XML:", ", ".join(proxies))
+check("IncrementalDelaunay3D" in proxies and "ReconstructionQuality" in proxies
+      and len(proxies) >= 5, "the XML lists the filters")
+
+POINTS, DUPLICATES = 1000, 10
+cloud = ProgrammableSource(OutputDataSetType="vtkPolyData")
+cloud.Script = """
+import numpy as np
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.util.numpy_support import numpy_to_vtk
+p = np.random.default_rng(5).normal(size=(%d, 3))
+p /= np.linalg.norm(p, axis=1)[:, None]
+p = np.vstack([p, p[:%d]])
+points = vtkPoints()
+points.SetData(numpy_to_vtk(p, deep=True))
+out = self.GetOutput()
+out.SetPoints(points)
+normals = numpy_to_vtk(p, deep=True)
+normals.SetName("Normals")
+out.GetPointData().SetNormals(normals)
+label = numpy_to_vtk(np.arange(len(p), dtype=np.int32), deep=True)
+label.SetName("Label")
+out.GetPointData().AddArray(label)
+""" % (POINTS, DUPLICATES)
+cloud.UpdatePipeline()
+total = POINTS + DUPLICATES
+
+ran = []
+for name in proxies:
+    if name == "ReconstructionQuality":
+        continue
+    check(name in globals(), "LoadPlugin defines %s" % name)
+    proxy = globals()[name](Input=cloud)
+    proxy.UpdatePipeline()
+    mesh = servermanager.Fetch(proxy, None, None, 0)
+    check(mesh is not None and mesh.IsA("vtkPolyData"), "%s: output 0 is a vtkPolyData" % name)
+    check(mesh.GetNumberOfPoints() == total, "%s: all %d points pass through (got %d)"
+          % (name, total, mesh.GetNumberOfPoints()))
+    label = mesh.GetPointData().GetArray("Label")
+    check(label is not None and np.array_equal(vtk_to_numpy(label), np.arange(total)),
+          "%s: point data passed through in input order" % name)
+    polys = mesh.GetPolys()
+    triangles = polys.GetNumberOfCells()
+    check(triangles > 0, "%s: triangles produced" % name)
+    check(mesh.GetNumberOfCells() == triangles, "%s: triangles only (%d cells, %d polygons)"
+          % (name, mesh.GetNumberOfCells(), triangles))
+    check(np.all(np.diff(vtk_to_numpy(polys.GetOffsetsArray())) == 3),
+          "%s: every polygon has 3 points" % name)
+    ids = vtk_to_numpy(polys.GetConnectivityArray()).reshape(-1, 3)
+    check(ids.min() >= 0 and ids.max() < total, "%s: no dangling point id" % name)
+    check(np.all((ids[:, 0] != ids[:, 1]) & (ids[:, 1] != ids[:, 2]) & (ids[:, 0] != ids[:, 2])),
+          "%s: no triangle with a repeated point" % name)
+    used = np.zeros(total, dtype=bool)
+    used[ids.reshape(-1)] = True
+    check(used.sum() > 0, "%s: used points" % name)
+    check(not (used[:DUPLICATES] & used[POINTS:]).any(),
+          "%s: never both copies of a duplicated point in the mesh (%s, %s)"
+          % (name, used[:DUPLICATES].astype(int), used[POINTS:].astype(int)))
+    used_array = mesh.GetPointData().GetArray("Used")
+    if used_array is not None:
+        check(np.array_equal(vtk_to_numpy(used_array) != 0, used),
+              "%s: point data Used is the triangles' vertex set" % name)
+    quality = ReconstructionQuality(Input=proxy)  # noqa: F821 (defined by LoadPlugin)
+    quality.UpdatePipeline()
+    fd = servermanager.Fetch(quality).GetFieldData()
+    check(fd.GetArray("NumberOfTriangles").GetTuple1(0) == triangles,
+          "%s: ReconstructionQuality counts the triangles" % name)
+    check(fd.GetArray("NumberOfUsedPoints").GetTuple1(0) == used.sum(),
+          "%s: ReconstructionQuality counts the used points" % name)
+    print("%s: %d points, %d triangles, %d used, %d boundary edges, %d non-manifold edges" % (
+        name, total, triangles, used.sum(), fd.GetArray("NumberOfBoundaryEdges").GetTuple1(0),
+        fd.GetArray("NumberOfNonManifoldEdges").GetTuple1(0)))
+    ran.append(name)
+check(len(ran) == len(proxies) - 1, "every reconstruction proxy ran")
 print("ok")

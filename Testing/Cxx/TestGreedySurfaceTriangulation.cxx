@@ -1,0 +1,521 @@
+// vtkGreedySurfaceTriangulation on clouds whose surface is known by construction; the meshes are
+// measured with vtkReconstructionQuality and against the analytic surfaces:
+// - 5000 random points on the unit sphere: closed, manifold, oriented outwards, genus 0, every
+//   point used (coverage 1), hence 2V - 4 triangles;
+// - 5000 random points on a torus: the same with genus 1 (2V triangles);
+// - a damaged sphere (issue 7): two caps of 20 degrees removed, two other caps thinned tenfold:
+//   closed, manifold, genus 0, every point used, every triangle vertex and centroid within 3 mean
+//   spacings of the unit sphere; with BridgeIslands and FillHoles off (the step 2 result) the
+//   well-sampled regions alone: open, with more boundary loops and the lost points unused;
+// - two islands of a plane separated by an empty strip 6 spacings wide: bridged into one surface
+//   (one connected component, one boundary loop); with BridgeIslands off two components;
+// - the point data Status, LocalUniformity and the cell data Stage agree with each other and with
+//   the field data counts (the paper's Table 1 columns are recomputed from them);
+// - degenerate inputs (no point, 2 points, collinear points, a NaN point): a warning and a valid
+//   output without triangles.
+#include "vtkGreedySurfaceTriangulation.h"
+#include "vtkReconstructionQuality.h"
+
+#include "pcsTestUtilities.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkMath.h"
+#include "vtkStringArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <random>
+#include <string>
+
+namespace
+{
+struct Quality
+{
+  double Triangles, UsedPoints, Coverage, BoundaryEdges, Loops, NonManifoldEdges,
+    NonManifoldVertices, Genus, Orientation, Components, Degenerate, Duplicates;
+};
+
+Quality Measure(vtkPolyData* mesh)
+{
+  vtkNew<vtkReconstructionQuality> quality;
+  quality->SetInputData(mesh);
+  quality->Update();
+  vtkFieldData* fd = quality->GetOutput()->GetFieldData();
+  auto get = [fd](const char* name)
+  {
+    vtkDataArray* array = fd->GetArray(name);
+    return array ? array->GetTuple1(0) : std::numeric_limits<double>::quiet_NaN();
+  };
+  return { get("NumberOfTriangles"),
+           get("NumberOfUsedPoints"),
+           get("Coverage"),
+           get("NumberOfBoundaryEdges"),
+           get("NumberOfBoundaryLoops"),
+           get("NumberOfNonManifoldEdges"),
+           get("NumberOfNonManifoldVertices"),
+           get("Genus"),
+           get("OrientationConsistency"),
+           get("NumberOfConnectedComponents"),
+           get("NumberOfDegenerateTriangles"),
+           get("NumberOfDuplicateTriangles") };
+}
+
+double FieldValue(vtkDataObject* data, const char* name)
+{
+  vtkDataArray* array = data->GetFieldData()->GetArray(name);
+  return array ? array->GetTuple1(0) : std::numeric_limits<double>::quiet_NaN();
+}
+
+int UpdateCountingWarnings(vtkGreedySurfaceTriangulation* filter)
+{
+  int warnings = 0;
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetCallback([](vtkObject*, unsigned long, void* data, void*)
+                        { ++*static_cast<int*>(data); });
+  callback->SetClientData(&warnings);
+  filter->AddObserver(vtkCommand::WarningEvent, callback);
+  filter->Update();
+  filter->RemoveObservers(vtkCommand::WarningEvent);
+  return warnings;
+}
+
+// Signed volume of the closed mesh (positive: outward orientation).
+double SignedVolume(vtkPolyData* mesh)
+{
+  double volume = 0.0;
+  for (const auto& t : pcstest::CellTuples<3>(mesh))
+  {
+    double a[3], b[3], c[3], cross[3];
+    mesh->GetPoint(t[0], a);
+    mesh->GetPoint(t[1], b);
+    mesh->GetPoint(t[2], c);
+    vtkMath::Cross(b, c, cross);
+    volume += vtkMath::Dot(a, cross) / 6.0;
+  }
+  return volume;
+}
+
+bool CheckClosed(const Quality& q, double genus, const std::string& what)
+{
+  PCS_CHECK(q.BoundaryEdges == 0, what << ": " << q.BoundaryEdges << " boundary edges");
+  PCS_CHECK(q.NonManifoldEdges == 0 && q.NonManifoldVertices == 0,
+            what << ": non-manifold " << q.NonManifoldEdges << " edges, " << q.NonManifoldVertices
+                 << " vertices");
+  PCS_CHECK(q.Orientation == 1.0, what << ": orientation consistency " << q.Orientation);
+  PCS_CHECK(q.Genus == genus, what << ": genus " << q.Genus << ", expected " << genus);
+  PCS_CHECK(q.Components == 1, what << ": " << q.Components << " connected components");
+  PCS_CHECK(q.Degenerate == 0 && q.Duplicates == 0,
+            what << ": " << q.Degenerate << " degenerate, " << q.Duplicates
+                 << " duplicate triangles");
+  return true;
+}
+
+std::vector<double> RandomSphere(int n, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::vector<double> xyz;
+  while (xyz.size() < 3 * static_cast<size_t>(n))
+  {
+    double p[3] = { gauss(rng), gauss(rng), gauss(rng) };
+    const double length = vtkMath::Norm(p);
+    if (length > 0.0)
+    {
+      xyz.insert(xyz.end(), { p[0] / length, p[1] / length, p[2] / length });
+    }
+  }
+  return xyz;
+}
+
+// A random sphere with two caps removed and two caps thinned tenfold (caps of half-angle
+// capDegrees around four fixed directions).
+std::vector<double> DamagedSphere(int n, unsigned seed, double capDegrees)
+{
+  const std::vector<double> sphere = RandomSphere(n, seed);
+  double directions[4][3] = { { 1, 0, 0 }, { -0.6, 0.8, 0 }, { 0, -0.6, 0.8 }, { 0, 0, -1 } };
+  const double cosCap = std::cos(vtkMath::RadiansFromDegrees(capDegrees));
+  std::mt19937_64 rng(seed + 1);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> xyz;
+  for (size_t i = 0; i < sphere.size(); i += 3)
+  {
+    bool keep = true;
+    const double draw = u(rng);
+    for (int d = 0; d < 4; ++d)
+    {
+      if (vtkMath::Dot(&sphere[i], directions[d]) > cosCap)
+      {
+        keep = d >= 2 && draw < 0.1; // removed (d = 0, 1) or one point in ten kept (d = 2, 3)
+      }
+    }
+    if (keep)
+    {
+      xyz.insert(xyz.end(), &sphere[i], &sphere[i] + 3);
+    }
+  }
+  return xyz;
+}
+
+std::vector<double> RandomTorus(int n, unsigned seed, double big, double small)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 2.0 * vtkMath::Pi()), w(0.0, 1.0);
+  std::vector<double> xyz;
+  while (xyz.size() < 3 * static_cast<size_t>(n))
+  {
+    // Uniform on the surface: the tube angle accepted in proportion to the local circumference.
+    const double a = u(rng), b = u(rng);
+    if (w(rng) * (big + small) <= big + small * std::cos(b))
+    {
+      xyz.insert(xyz.end(),
+                 { (big + small * std::cos(b)) * std::cos(a),
+                   (big + small * std::cos(b)) * std::sin(a), small * std::sin(b) });
+    }
+  }
+  return xyz;
+}
+
+// The point data Status and LocalUniformity and the cell data Stage: present, consistent with
+// each other, with the mesh and with the field data.
+bool CheckArrays(vtkGreedySurfaceTriangulation* filter, const std::string& what)
+{
+  vtkPolyData* mesh = filter->GetOutput();
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  vtkDataArray* status = mesh->GetPointData()->GetArray("Status");
+  vtkDataArray* used = mesh->GetPointData()->GetArray("Used");
+  vtkDataArray* uniformity = mesh->GetPointData()->GetArray("LocalUniformity");
+  vtkDataArray* stage = mesh->GetCellData()->GetArray("Stage");
+  PCS_CHECK(status && used && uniformity && stage,
+            what << ": Status, Used, LocalUniformity, Stage");
+  PCS_CHECK(status->GetNumberOfTuples() == n && used->GetNumberOfTuples() == n &&
+              uniformity->GetNumberOfTuples() == n &&
+              stage->GetNumberOfTuples() == mesh->GetNumberOfCells(),
+            what << ": array sizes");
+
+  // Used: exactly the triangle vertices.
+  std::vector<int> inTriangle(n, 0);
+  const auto triangles = pcstest::CellTuples<3>(mesh);
+  for (const auto& t : triangles)
+  {
+    for (vtkIdType v : t)
+    {
+      inTriangle[v] = 1;
+    }
+  }
+  vtkIdType count[5] = { 0, 0, 0, 0, 0 }, unused = 0, ssrFinite = 0;
+  double ssrUniformity = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const int s = static_cast<int>(status->GetTuple1(i));
+    PCS_CHECK(s >= 0 && s <= 4, what << ": Status " << s << " of point " << i);
+    ++count[s];
+    PCS_CHECK(used->GetTuple1(i) == inTriangle[i], what << ": Used of point " << i);
+    unused += inTriangle[i] ? 0 : 1;
+    // Correct, boundary and lost-but-used points are triangle vertices; the others are not.
+    const bool expectUsed = s == vtkGreedySurfaceTriangulation::CORRECT ||
+      s == vtkGreedySurfaceTriangulation::BOUNDARY ||
+      s == vtkGreedySurfaceTriangulation::LOST_USED_BY_HOLE_FILLING;
+    PCS_CHECK(inTriangle[i] == (expectUsed ? 1 : 0),
+              what << ": point " << i << " of Status " << s
+                   << (inTriangle[i] ? " used" : " unused"));
+    const double m = uniformity->GetTuple1(i);
+    PCS_CHECK(std::isnan(m) || m >= 1.0, what << ": LocalUniformity " << m << " < 1");
+    if (s <= vtkGreedySurfaceTriangulation::BOUNDARY && std::isfinite(m))
+    {
+      ssrUniformity += m;
+      ++ssrFinite;
+    }
+  }
+  // Stage: 1 (step 1, kept by step 2), 6 (hole filling) or 7 (swap); every triangle around a
+  // correct point comes from step 1 and a step 1 triangle has only correct or boundary vertices.
+  double ssrArea = 0.0, totalArea = 0.0;
+  for (vtkIdType c = 0; c < static_cast<vtkIdType>(triangles.size()); ++c)
+  {
+    const auto& t = triangles[c];
+    const int s = static_cast<int>(stage->GetTuple1(c));
+    PCS_CHECK(s == 1 || s == 6 || s == 7, what << ": Stage " << s << " of triangle " << c);
+    bool correctVertex = false, lostVertex = false;
+    for (vtkIdType v : t)
+    {
+      correctVertex =
+        correctVertex || status->GetTuple1(v) == vtkGreedySurfaceTriangulation::CORRECT;
+      lostVertex = lostVertex || status->GetTuple1(v) > vtkGreedySurfaceTriangulation::BOUNDARY;
+    }
+    PCS_CHECK(!correctVertex || s == 1,
+              what << ": triangle " << c << " at a correct point, stage " << s);
+    PCS_CHECK(!lostVertex || s != 1, what << ": step 1 triangle " << c << " at a lost point");
+    double a[3], b[3], d[3], u[3], v[3], cross[3];
+    mesh->GetPoint(t[0], a);
+    mesh->GetPoint(t[1], b);
+    mesh->GetPoint(t[2], d);
+    vtkMath::Subtract(b, a, u);
+    vtkMath::Subtract(d, a, v);
+    vtkMath::Cross(u, v, cross);
+    totalArea += 0.5 * vtkMath::Norm(cross);
+    ssrArea += s == 1 ? 0.5 * vtkMath::Norm(cross) : 0.0;
+  }
+
+  // Field data: counts and the paper's Table 1 columns, recomputed.
+  PCS_CHECK(pcstest::FieldCount(mesh, "NumberOfTriangles") == mesh->GetNumberOfCells() &&
+              filter->GetNumberOfTriangles() == mesh->GetNumberOfCells(),
+            what << ": NumberOfTriangles");
+  PCS_CHECK(pcstest::FieldCount(mesh, "NumberOfUnusedPoints") == unused &&
+              filter->GetNumberOfUnusedPoints() == unused,
+            what << ": NumberOfUnusedPoints " << pcstest::FieldCount(mesh, "NumberOfUnusedPoints")
+                 << ", counted " << unused);
+  PCS_CHECK(pcstest::FieldCount(mesh, "NumberOfLostPoints") == count[2] + count[3] &&
+              filter->GetNumberOfLostPoints() == count[2] + count[3],
+            what << ": NumberOfLostPoints " << pcstest::FieldCount(mesh, "NumberOfLostPoints")
+                 << ", Status 2 and 3: " << count[2] + count[3]);
+  PCS_CHECK(pcstest::FieldCount(mesh, "NumberOfDuplicatePoints") +
+                pcstest::FieldCount(mesh, "NumberOfSkippedPoints") ==
+              count[4],
+            what << ": Status 4 = duplicates + skipped");
+  PCS_CHECK(pcstest::FieldCount(mesh, "NumberOfPoints") == n, what << ": NumberOfPoints");
+  const double distinct = static_cast<double>(n - count[4]);
+  PCS_CHECK(std::abs(FieldValue(mesh, "SSRPointsPercent") -
+                     100.0 * (count[0] + count[1]) / distinct) < 1e-9,
+            what << ": SSRPointsPercent " << FieldValue(mesh, "SSRPointsPercent"));
+  PCS_CHECK(std::abs(FieldValue(mesh, "SSRAreaPercent") - 100.0 * ssrArea / totalArea) < 1e-6,
+            what << ": SSRAreaPercent " << FieldValue(mesh, "SSRAreaPercent") << ", recomputed "
+                 << 100.0 * ssrArea / totalArea);
+  PCS_CHECK(std::abs(FieldValue(mesh, "AverageUniformityInSSR") - ssrUniformity / ssrFinite) <
+              1e-9 * ssrUniformity / ssrFinite,
+            what << ": AverageUniformityInSSR");
+  PCS_CHECK(FieldValue(mesh, "MeanSpacing") > 0.0 &&
+              FieldValue(mesh, "MeanSpacing") == filter->GetMeanSpacing(),
+            what << ": MeanSpacing");
+  const double seconds = FieldValue(mesh, "Seconds");
+  PCS_CHECK(seconds > 0.0 && std::abs(FieldValue(mesh, "PointsPerSecond") * seconds - n) < 1e-6 * n,
+            what << ": Seconds and PointsPerSecond");
+  vtkStringArray* steps =
+    vtkStringArray::SafeDownCast(mesh->GetFieldData()->GetAbstractArray("StepsUsed"));
+  PCS_CHECK(steps && steps->GetNumberOfValues() == 1 && steps->GetValue(0).rfind("1, 2", 0) == 0,
+            what << ": StepsUsed starts with steps 1 and 2");
+  const bool filled = pcstest::FieldCount(mesh, "NumberOfHolesFilled") > 0;
+  PCS_CHECK(filled == (steps->GetValue(0).find('6') != std::string::npos),
+            what << ": StepsUsed '" << steps->GetValue(0) << "' and holes filled");
+  PCS_CHECK(filled == (count[3] > 0 || ssrArea < totalArea),
+            what << ": hole filling triangles and holes filled");
+  return true;
+}
+
+// Largest distance to the unit sphere of the triangle vertices and centroids, in mean spacings.
+double DistanceToUnitSphere(vtkPolyData* mesh, double spacing)
+{
+  double worst = 0.0;
+  for (const auto& t : pcstest::CellTuples<3>(mesh))
+  {
+    double centroid[3] = { 0, 0, 0 };
+    for (vtkIdType v : t)
+    {
+      double p[3];
+      mesh->GetPoint(v, p);
+      worst = std::max(worst, std::abs(vtkMath::Norm(p) - 1.0));
+      for (int i = 0; i < 3; ++i)
+      {
+        centroid[i] += p[i] / 3.0;
+      }
+    }
+    worst = std::max(worst, std::abs(vtkMath::Norm(centroid) - 1.0));
+  }
+  return worst / spacing;
+}
+
+//------------------------------------------------------------------------------------------------
+bool TestSphere()
+{
+  const int n = 5000;
+  vtkNew<vtkGreedySurfaceTriangulation> greedy;
+  greedy->SetInputData(pcstest::MakeCloud(RandomSphere(n, 11)));
+  PCS_CHECK(UpdateCountingWarnings(greedy) == 0, "no warning on a clean sphere");
+  vtkPolyData* mesh = greedy->GetOutput();
+  const Quality q = Measure(mesh);
+  PCS_CHECK(CheckClosed(q, 0, "sphere"), "");
+  PCS_CHECK(q.Coverage == 1.0 && q.UsedPoints == n && greedy->GetNumberOfUnusedPoints() == 0,
+            "sphere: coverage " << q.Coverage);
+  PCS_CHECK(q.Triangles == 2 * n - 4, "sphere: " << q.Triangles << " triangles, 2V-4");
+  PCS_CHECK(SignedVolume(mesh) > 0.0, "sphere: outward orientation");
+  PCS_CHECK(CheckArrays(greedy, "sphere"), "");
+  return true;
+}
+
+bool TestTorus()
+{
+  const int n = 5000;
+  vtkNew<vtkGreedySurfaceTriangulation> greedy;
+  greedy->SetInputData(pcstest::MakeCloud(RandomTorus(n, 23, 1.0, 0.35)));
+  greedy->Update();
+  vtkPolyData* mesh = greedy->GetOutput();
+  const Quality q = Measure(mesh);
+  PCS_CHECK(CheckClosed(q, 1, "torus"), "");
+  PCS_CHECK(q.Coverage == 1.0 && q.UsedPoints == n, "torus: coverage " << q.Coverage);
+  PCS_CHECK(q.Triangles == 2 * n, "torus: " << q.Triangles << " triangles, 2V");
+  PCS_CHECK(SignedVolume(mesh) > 0.0, "torus: outward orientation");
+  PCS_CHECK(CheckArrays(greedy, "torus"), "");
+  return true;
+}
+
+bool TestDamagedSphere()
+{
+  const auto xyz = DamagedSphere(4000, 3, 20.0);
+  const vtkIdType n = static_cast<vtkIdType>(xyz.size() / 3);
+  vtkNew<vtkGreedySurfaceTriangulation> greedy;
+  greedy->SetInputData(pcstest::MakeCloud(xyz));
+  greedy->Update();
+  vtkPolyData* mesh = greedy->GetOutput();
+  const Quality q = Measure(mesh);
+  PCS_CHECK(CheckClosed(q, 0, "damaged sphere"), "");
+  PCS_CHECK(q.Coverage == 1.0 && q.UsedPoints == n, "damaged sphere: coverage " << q.Coverage);
+  PCS_CHECK(SignedVolume(mesh) > 0.0, "damaged sphere: outward orientation");
+  const double spacing = greedy->GetMeanSpacing();
+  const double distance = DistanceToUnitSphere(mesh, spacing);
+  PCS_CHECK(distance <= 3.0,
+            "damaged sphere: a triangle " << distance << " mean spacings from the sphere");
+  PCS_CHECK(CheckArrays(greedy, "damaged sphere"), "");
+  PCS_CHECK(greedy->GetNumberOfHolesFilled() > 0, "damaged sphere: holes filled");
+
+  // The step 2 result: the well-sampled regions only, open, the lost points unused.
+  vtkNew<vtkGreedySurfaceTriangulation> step2;
+  step2->SetInputData(pcstest::MakeCloud(xyz));
+  step2->BridgeIslandsOff();
+  step2->FillHolesOff();
+  step2->Update();
+  vtkPolyData* open = step2->GetOutput();
+  const Quality q2 = Measure(open);
+  PCS_CHECK(q2.NonManifoldEdges == 0 && q2.NonManifoldVertices == 0 && q2.Orientation == 1.0,
+            "step 2 result: manifold and oriented");
+  PCS_CHECK(q2.Loops > q.Loops && q2.BoundaryEdges > 0,
+            "step 2 result: " << q2.Loops << " boundary loops (after repair " << q.Loops << ")");
+  PCS_CHECK(q2.Triangles < q.Triangles, "step 2 result: fewer triangles");
+  PCS_CHECK(step2->GetNumberOfHolesFilled() == 0 && step2->GetNumberOfBridges() == 0,
+            "step 2 result: no bridge, no hole filled");
+  PCS_CHECK(step2->GetNumberOfUnusedPoints() == step2->GetNumberOfLostPoints() &&
+              step2->GetNumberOfLostPoints() == greedy->GetNumberOfLostPoints(),
+            "step 2 result: the lost points, and only them, unused");
+  vtkDataArray* stage = open->GetCellData()->GetArray("Stage");
+  for (vtkIdType c = 0; c < open->GetNumberOfCells(); ++c)
+  {
+    PCS_CHECK(stage->GetTuple1(c) == 1, "step 2 result: every triangle from step 1");
+  }
+  PCS_CHECK(FieldValue(open, "SSRAreaPercent") == 100.0, "step 2 result: SSR area 100 %");
+  PCS_CHECK(CheckArrays(step2, "step 2 result"), "");
+  return true;
+}
+
+bool TestBridgedIslands()
+{
+  // Two halves of the unit square (z = 0) separated by an empty strip of width 0.06, about 6
+  // mean spacings (below the default MaximumBridgeLength of 10).
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> xyz;
+  for (int i = 0; i < 3000; ++i)
+  {
+    const double x = u(rng), y = u(rng);
+    if (std::abs(x - 0.5) > 0.03)
+    {
+      xyz.insert(xyz.end(), { x, y, 0.0 });
+    }
+  }
+  const vtkIdType n = static_cast<vtkIdType>(xyz.size() / 3);
+  vtkNew<vtkGreedySurfaceTriangulation> greedy;
+  greedy->SetInputData(pcstest::MakeCloud(xyz));
+  greedy->Update();
+  PCS_CHECK(0.06 / greedy->GetMeanSpacing() < 10.0, "the strip is narrower than the bridges");
+  const Quality q = Measure(greedy->GetOutput());
+  PCS_CHECK(q.Components == 1, "islands: " << q.Components << " connected components");
+  PCS_CHECK(q.Loops == 1, "islands: " << q.Loops << " boundary loops");
+  PCS_CHECK(q.NonManifoldEdges == 0 && q.NonManifoldVertices == 0 && q.Orientation == 1.0,
+            "islands: manifold and oriented");
+  PCS_CHECK(q.Degenerate == 0 && q.Duplicates == 0, "islands: no degenerate triangle");
+  // Lost points at the outer border of the open surface are in no hole: they stay unused
+  // (Status 2), at most 0.5 % of the points, and only there (within 3 mean spacings of the
+  // square's sides).
+  vtkPolyData* mesh = greedy->GetOutput();
+  vtkDataArray* status = mesh->GetPointData()->GetArray("Status");
+  const double border = 3.0 * greedy->GetMeanSpacing();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (status->GetTuple1(i) == vtkGreedySurfaceTriangulation::LOST)
+    {
+      double p[3];
+      mesh->GetPoint(i, p);
+      PCS_CHECK(std::min({ p[0], 1.0 - p[0], p[1], 1.0 - p[1] }) <= border,
+                "islands: lost point " << i << " left unused away from the border");
+    }
+  }
+  PCS_CHECK(q.UsedPoints + greedy->GetNumberOfUnusedPoints() == n &&
+              greedy->GetNumberOfUnusedPoints() <= n / 200,
+            "islands: " << greedy->GetNumberOfUnusedPoints() << " unused points");
+  PCS_CHECK(greedy->GetNumberOfIslands() == 2, "islands: " << greedy->GetNumberOfIslands());
+  PCS_CHECK(greedy->GetNumberOfBridges() > 0, "islands: bridges");
+  vtkStringArray* steps = vtkStringArray::SafeDownCast(
+    greedy->GetOutput()->GetFieldData()->GetAbstractArray("StepsUsed"));
+  PCS_CHECK(steps && steps->GetValue(0).find('4') != std::string::npos,
+            "islands: step 4 in StepsUsed");
+  PCS_CHECK(CheckArrays(greedy, "islands"), "");
+
+  // Without bridges: the two halves stay apart; without hole filling as well: the step 2 result.
+  vtkNew<vtkGreedySurfaceTriangulation> unbridged;
+  unbridged->SetInputData(pcstest::MakeCloud(xyz));
+  unbridged->BridgeIslandsOff();
+  unbridged->Update();
+  const Quality qu = Measure(unbridged->GetOutput());
+  PCS_CHECK(qu.Components == 2 && qu.Loops == 2,
+            "unbridged islands: " << qu.Components << " components, " << qu.Loops << " loops");
+  PCS_CHECK(unbridged->GetNumberOfBridges() == 0, "unbridged islands: no bridge");
+  vtkNew<vtkGreedySurfaceTriangulation> step2;
+  step2->SetInputData(pcstest::MakeCloud(xyz));
+  step2->BridgeIslandsOff();
+  step2->FillHolesOff();
+  step2->Update();
+  const Quality q2 = Measure(step2->GetOutput());
+  PCS_CHECK(q2.Components == 2 && q2.Loops > qu.Loops,
+            "islands step 2: " << q2.Components << " components, " << q2.Loops << " loops");
+  PCS_CHECK(CheckArrays(step2, "islands step 2"), "");
+  return true;
+}
+
+bool TestDegenerate()
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<std::vector<double>> inputs = {
+    {},                                              // no point
+    { 0, 0, 0, 1, 0, 0 },                            // 2 points
+    { 0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3, 5, 5, 5 }, // collinear
+    { 0, 0, 0, 0, 0, 0, 0, 0, 0 },                   // one point three times
+    { 0, 0, 0, 1, 0, 0, nan, 0, 0 },                 // two finite points and a NaN
+  };
+  for (size_t k = 0; k < inputs.size(); ++k)
+  {
+    vtkNew<vtkGreedySurfaceTriangulation> greedy;
+    greedy->SetInputData(pcstest::MakeCloud(inputs[k]));
+    PCS_CHECK(UpdateCountingWarnings(greedy) >= 1, "degenerate input " << k << ": a warning");
+    vtkPolyData* out = greedy->GetOutput();
+    PCS_CHECK(out->GetNumberOfPolys() == 0, "degenerate input " << k << ": no triangle");
+    PCS_CHECK(out->GetNumberOfPoints() == static_cast<vtkIdType>(inputs[k].size() / 3),
+              "degenerate input " << k << ": every point passed through");
+    PCS_CHECK(pcstest::FieldCount(out, "NumberOfTriangles") == 0, "field data on " << k);
+    PCS_CHECK(pcstest::FieldCount(out, "NumberOfUnusedPoints") == out->GetNumberOfPoints(),
+              "degenerate input " << k << ": every point reported unused");
+  }
+  return true;
+}
+} // namespace
+
+int TestGreedySurfaceTriangulation(int, char*[])
+{
+  bool ok = true;
+  ok = TestSphere() && ok;
+  ok = TestTorus() && ok;
+  ok = TestDamagedSphere() && ok;
+  ok = TestBridgedIslands() && ok;
+  ok = TestDegenerate() && ok;
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -1,0 +1,197 @@
+// vtkCDTAdvancingFront against CGAL's Advancing Front Surface Reconstruction, one run per process
+// (so that the peak memory is the method's own):
+//   pcsBenchCDTAdvancingFront <ours|ours-normals|cgal> <input> [mesh.off]
+// ours: normals estimated by the filter (vtkPCANormalEstimation); ours-normals: the input's
+// normals (the mesh's vertex normals, the exact normals of the sphere and torus, see
+// pcsBenchInput.h); cgal: CGAL::advancing_front_surface_reconstruction with its defaults (it
+// takes no normals). Inputs: see pcsBenchInput.h (sphere:N, torus:N, sample:mesh.off:N, mesh.off,
+// cloud.xyz).
+// Prints one JSON line: method, input, points, seconds (the reconstruction alone), triangles,
+// peak_mb and baseline_mb (VmHWM after the reconstruction, and VmRSS before it, from
+// /proc/self/status), unused points and boundary edges; then, measured after the peak by
+// vtkReconstructionQuality for every method alike, non-manifold edges and vertices, coverage,
+// components, genus (-1 when not closed) and the Hausdorff distance in units of the mean spacing
+// (to the reference surface of mesh inputs, else to the cloud). With a third argument the mesh is
+// written as OFF over all input points. CGAL is used here only: the library never links it.
+#include "pcsBenchInput.h"
+
+#include "vtkCDTAdvancingFront.h"
+#include "vtkReconstructionQuality.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <CGAL/Advancing_front_surface_reconstruction.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> MakeMesh(
+  const std::vector<double>& xyz, const std::vector<std::array<long, 3>>& triangles)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const long n = static_cast<long>(xyz.size() / 3);
+  points->SetNumberOfPoints(n);
+  for (long i = 0; i < n; ++i)
+  {
+    points->SetPoint(i, &xyz[3 * i]);
+  }
+  vtkNew<vtkCellArray> cells;
+  for (const auto& t : triangles)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    cells->InsertNextCell(3, ids);
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(cells);
+  return mesh;
+}
+
+double FieldValue(vtkPolyData* data, const char* name)
+{
+  vtkDataArray* array = data->GetFieldData()->GetArray(name);
+  return array && array->GetNumberOfTuples() > 0 ? array->GetTuple1(0) : -1.0;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  if (argc < 3)
+  {
+    std::cerr << "usage: pcsBenchCDTAdvancingFront <ours|ours-normals|cgal> <sphere:N|torus:N|"
+                 "sample:mesh.off:N|mesh.off|cloud.xyz> [mesh.off]"
+              << std::endl;
+    return 2;
+  }
+  const std::string method = argv[1], spec = argv[2];
+  const pcsbench::Input input = pcsbench::LoadInput(spec);
+  const std::vector<double>& xyz = input.XYZ;
+  const long n = input.Size();
+  std::vector<std::array<long, 3>> triangles;
+  double seconds = 0.0, baseline = 0.0;
+  using Clock = std::chrono::steady_clock;
+  if (method == "cgal")
+  {
+    using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+    std::vector<Kernel::Point_3> points;
+    points.reserve(n);
+    for (long i = 0; i < n; ++i)
+    {
+      points.emplace_back(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+    }
+    std::vector<std::array<std::size_t, 3>> facets;
+    baseline = pcsbench::StatusMegabytes("VmRSS");
+    const auto start = Clock::now();
+    CGAL::advancing_front_surface_reconstruction(
+      points.begin(), points.end(), std::back_inserter(facets));
+    seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    for (const auto& f : facets)
+    {
+      triangles.push_back(
+        { static_cast<long>(f[0]), static_cast<long>(f[1]), static_cast<long>(f[2]) });
+    }
+  }
+  else if (method == "ours" || method == "ours-normals")
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(n);
+    for (long i = 0; i < n; ++i)
+    {
+      points->SetPoint(i, &xyz[3 * i]);
+    }
+    vtkNew<vtkPolyData> cloud;
+    cloud->SetPoints(points);
+    if (method == "ours-normals")
+    {
+      vtkNew<vtkDoubleArray> normals;
+      normals->SetName("Normals");
+      normals->SetNumberOfComponents(3);
+      normals->SetNumberOfTuples(n);
+      for (long i = 0; i < n; ++i)
+      {
+        normals->SetTuple(i, &input.Normals[3 * i]);
+      }
+      cloud->GetPointData()->SetNormals(normals);
+    }
+    vtkNew<vtkCDTAdvancingFront> front;
+    front->SetInputData(cloud);
+    baseline = pcsbench::StatusMegabytes("VmRSS");
+    const auto start = Clock::now();
+    front->Update();
+    seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    auto iter = vtk::TakeSmartPointer(front->GetOutput()->GetPolys()->NewIterator());
+    for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
+    {
+      vtkIdType npts;
+      const vtkIdType* pts;
+      iter->GetCurrentCell(npts, pts);
+      triangles.push_back(
+        { static_cast<long>(pts[0]), static_cast<long>(pts[1]), static_cast<long>(pts[2]) });
+    }
+  }
+  else
+  {
+    std::cerr << "unknown method " << method << std::endl;
+    return 2;
+  }
+  const double peak = pcsbench::StatusMegabytes("VmHWM");
+
+  // The same quality measures for every method.
+  vtkSmartPointer<vtkPolyData> mesh = MakeMesh(xyz, triangles);
+  vtkSmartPointer<vtkPolyData> reference = input.Reference.empty()
+    ? MakeMesh(xyz, {})
+    : MakeMesh(input.ReferenceXYZ, input.Reference);
+  vtkNew<vtkReconstructionQuality> quality;
+  quality->SetInputData(mesh);
+  quality->SetReferenceData(reference);
+  quality->Update();
+  vtkPolyData* measured = quality->GetOutput();
+  if (argc > 3)
+  {
+    std::ofstream out(argv[3]);
+    out.precision(17);
+    out << "OFF\n" << n << " " << triangles.size() << " 0\n";
+    for (long i = 0; i < n; ++i)
+    {
+      out << xyz[3 * i] << " " << xyz[3 * i + 1] << " " << xyz[3 * i + 2] << "\n";
+    }
+    for (const auto& t : triangles)
+    {
+      out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+    }
+  }
+  const long used = static_cast<long>(FieldValue(measured, "NumberOfUsedPoints"));
+  std::printf("{\"method\": \"%s\", \"input\": \"%s\", \"points\": %ld, \"seconds\": %.4f, "
+              "\"triangles\": %zu, \"peak_mb\": %.1f, \"baseline_mb\": %.1f, \"unused\": %ld, "
+              "\"boundary_edges\": %ld, \"non_manifold_edges\": %ld, "
+              "\"non_manifold_vertices\": %ld, \"coverage\": %.5f, \"components\": %ld, "
+              "\"genus\": %ld, \"hausdorff_over_spacing\": %.3f, \"reference\": \"%s\"}\n",
+    method.c_str(), spec.c_str(), n, seconds, triangles.size(), peak, baseline, n - used,
+    static_cast<long>(FieldValue(measured, "NumberOfBoundaryEdges")),
+    static_cast<long>(FieldValue(measured, "NumberOfNonManifoldEdges")),
+    static_cast<long>(FieldValue(measured, "NumberOfNonManifoldVertices")),
+    FieldValue(measured, "Coverage"),
+    static_cast<long>(FieldValue(measured, "NumberOfConnectedComponents")),
+    static_cast<long>(FieldValue(measured, "Genus")),
+    FieldValue(measured, "HausdorffOverSpacing"), input.Reference.empty() ? "cloud" : "surface");
+  return 0;
+}

@@ -1,0 +1,162 @@
+"""vtkGreedySurfaceTriangulation from Python, and its ParaView proxy.
+
+Usage: python3 TestGreedySurfaceTriangulationPython.py          (the wrapped class)
+       pvpython TestGreedySurfaceTriangulationPython.py <plugin> (the GreedySurfaceTriangulation
+                                                                   proxy too)
+
+Expectations known by construction: 1000 points on a Fibonacci spiral of the unit sphere give a
+closed genus-0 mesh of 2V - 4 = 1996 triangles that uses every point; the same sphere without
+the points of a cap of 30 degrees comes back closed (the hole triangulated, Stage 6 triangles)
+and, with BridgeIslands and FillHoles off, open with the cap as a hole; the parameters have the
+documented defaults and clamp to their documented ranges; the proxy's defaults equal the
+class's.
+"""
+import math
+import sys
+
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+from pointcloudsurface import vtkGreedySurfaceTriangulation, vtkReconstructionQuality
+
+DOUBLE_MAX = 1.0e299  # VTK_DOUBLE_MAX
+
+
+def check(condition, message):
+    if not condition:
+        print("FAILED:", message)
+        sys.exit(1)
+
+
+def fibonacci_sphere(n, cap_degrees=0.0):
+    """n spiral points of the unit sphere, without those within cap_degrees of +z."""
+    points = vtkPoints()
+    golden = math.pi * (1.0 + math.sqrt(5.0))
+    for i in range(n):
+        phi = math.acos(1.0 - 2.0 * (i + 0.5) / n)
+        if phi < math.radians(cap_degrees):
+            continue
+        theta = golden * (i + 0.5)
+        points.InsertNextPoint(math.cos(theta) * math.sin(phi), math.sin(theta) * math.sin(phi),
+                               math.cos(phi))
+    cloud = vtkPolyData()
+    cloud.SetPoints(points)
+    return cloud
+
+
+def quality(mesh):
+    q = vtkReconstructionQuality()
+    q.SetInputData(mesh)
+    q.Update()
+    fd = q.GetOutput().GetFieldData()
+    return {fd.GetArrayName(i): fd.GetArray(i).GetTuple1(0)
+            for i in range(fd.GetNumberOfArrays()) if fd.GetArray(i) is not None}
+
+
+DEFAULTS = {"NumberOfNeighbors": 12, "CrossingTest": 2, "AutomaticCorrectFraction": 0.9,
+            "UniformityNeighbors": 6, "UniformityAngle": 30.0, "MaximumNormalDeviation": 120.0,
+            "MinimumIslandTriangles": 20, "BoundaryVectorRadius": 3.0, "StatusNeutralAngle": 15.0,
+            "BridgeIslands": True, "MaximumBridgeLength": 10.0, "MinimumBridgeSeparation": 0.5,
+            "FillHoles": True, "MaximumHoleDiameter": DOUBLE_MAX, "AuxiliaryPointDistance": 0.5,
+            "MaximumHolePoints": 256, "SwapBridgeEdges": True}
+RANGES = {"NumberOfNeighbors": (3, 64), "CrossingTest": (0, 2),
+          "AutomaticCorrectFraction": (0.0, 1.0), "UniformityNeighbors": (2, 64),
+          "UniformityAngle": (0.0, 90.0), "MaximumNormalDeviation": (0.0, 180.0),
+          "MinimumIslandTriangles": (0, 2**31 - 1), "BoundaryVectorRadius": (0.0, DOUBLE_MAX),
+          "StatusNeutralAngle": (0.0, 90.0), "MaximumBridgeLength": (0.0, DOUBLE_MAX),
+          "MinimumBridgeSeparation": (0.0, DOUBLE_MAX), "MaximumHoleDiameter": (0.0, DOUBLE_MAX),
+          "AuxiliaryPointDistance": (0.0, DOUBLE_MAX), "MaximumHolePoints": (16, 100000)}
+
+greedy = vtkGreedySurfaceTriangulation()
+for name, value in DEFAULTS.items():
+    got = getattr(greedy, "Get" + name)()
+    check(got == value, "default %s = %s (got %s)" % (name, value, got))
+for name, (low, high) in RANGES.items():
+    probe = vtkGreedySurfaceTriangulation()
+    getattr(probe, "Set" + name)(type(low)(-10**9))
+    check(getattr(probe, "Get" + name)() == low, "%s clamps to %s" % (name, low))
+    big = 2**31 - 1 if isinstance(high, int) else sys.float_info.max
+    getattr(probe, "Set" + name)(big)
+    check(getattr(probe, "Get" + name)() == high, "%s clamps to %s" % (name, high))
+probe = vtkGreedySurfaceTriangulation()
+probe.SetCrossingTestToOff()
+check(probe.GetCrossingTest() == vtkGreedySurfaceTriangulation.CROSSING_TEST_OFF,
+      "CrossingTest Off")
+probe.SetCrossingTestToOn()
+check(probe.GetCrossingTest() == vtkGreedySurfaceTriangulation.CROSSING_TEST_ON, "CrossingTest On")
+check("MaximumBridgeLength" in str(greedy), "PrintSelf prints the parameters")
+
+# A clean sphere.
+n = 1000
+greedy.SetInputData(fibonacci_sphere(n))
+greedy.Update()
+mesh = greedy.GetOutput()
+check(mesh.GetNumberOfPoints() == n, "all points passed through")
+check(mesh.GetNumberOfPolys() == 2 * n - 4, "2V-4 triangles (got %d)" % mesh.GetNumberOfPolys())
+fd = mesh.GetFieldData()
+check(fd.GetArray("NumberOfTriangles").GetValue(0) == 2 * n - 4, "field data NumberOfTriangles")
+check(fd.GetArray("NumberOfUnusedPoints").GetValue(0) == 0, "no unused point")
+check(fd.GetArray("NumberOfPoints").GetValue(0) == n, "Table 1: NumberOfPoints")
+check(fd.GetAbstractArray("StepsUsed").GetValue(0).startswith("1, 2"), "Table 1: StepsUsed")
+for name in ("AverageUniformityInSSR", "SSRAreaPercent", "SSRPointsPercent", "Seconds",
+             "PointsPerSecond", "MeanSpacing"):
+    check(fd.GetArray(name) is not None and fd.GetArray(name).GetValue(0) > 0, "field data " + name)
+used = mesh.GetPointData().GetArray("Used")
+check(used is not None and all(used.GetValue(i) == 1 for i in range(n)), "point data Used")
+check(mesh.GetPointData().GetArray("Status") is not None, "point data Status")
+check(mesh.GetPointData().GetArray("LocalUniformity") is not None, "point data LocalUniformity")
+check(mesh.GetCellData().GetArray("Stage") is not None, "cell data Stage")
+q = quality(mesh)
+check(q["Genus"] == 0 and q["NumberOfBoundaryEdges"] == 0, "closed genus 0")
+check(q["NumberOfNonManifoldEdges"] == 0, "manifold edges")
+check(q["OrientationConsistency"] == 1.0, "consistent orientation")
+
+# The sphere without a cap: closed by hole filling; open when stopped after step 2.
+cut = fibonacci_sphere(n, 30.0)
+m = cut.GetNumberOfPoints()
+repair = vtkGreedySurfaceTriangulation()
+repair.SetInputData(cut)
+repair.Update()
+q = quality(repair.GetOutput())
+check(q["NumberOfBoundaryEdges"] == 0 and q["Genus"] == 0 and q["NumberOfNonManifoldEdges"] == 0,
+      "capless sphere repaired: closed genus 0 (%s)" % q)
+check(repair.GetOutput().GetNumberOfPolys() == 2 * m - 4, "capless sphere: 2V-4 triangles")
+check(repair.GetNumberOfHolesFilled() >= 1, "capless sphere: a hole filled")
+stage = repair.GetOutput().GetCellData().GetArray("Stage")
+check(any(stage.GetValue(i) == 6 for i in range(stage.GetNumberOfTuples())), "Stage 6 triangles")
+step2 = vtkGreedySurfaceTriangulation()
+step2.SetInputData(cut)
+step2.BridgeIslandsOff()
+step2.FillHolesOff()
+step2.Update()
+q = quality(step2.GetOutput())
+check(q["NumberOfBoundaryLoops"] >= 1 and q["NumberOfNonManifoldEdges"] == 0,
+      "step 2 result: open (%s loops)" % q["NumberOfBoundaryLoops"])
+check(step2.GetNumberOfHolesFilled() == 0, "step 2 result: no hole filled")
+
+if len(sys.argv) > 1:
+    from paraview import servermanager
+    from paraview.simple import LoadPlugin, TrivialProducer
+
+    LoadPlugin(sys.argv[1], ns=globals())
+    check("GreedySurfaceTriangulation" in globals(),
+          "LoadPlugin defines GreedySurfaceTriangulation")
+    producer = TrivialProducer()
+    producer.GetClientSideObject().SetOutput(cut)
+    proxy = GreedySurfaceTriangulation(Input=producer)  # noqa: F821 (defined by LoadPlugin)
+    proxy_values = dict(DEFAULTS, CrossingTest="Automatic")  # enumerations read as their text
+    for name, value in proxy_values.items():
+        got = proxy.GetPropertyValue(name)
+        check(got == value, "proxy default %s = %s (got %s)" % (name, value, got))
+    proxy.UpdatePipeline()
+    out = servermanager.Fetch(proxy)
+    check(out.GetNumberOfPolys() == 2 * m - 4,
+          "proxy output 2V-4 (got %d)" % out.GetNumberOfPolys())
+    proxy.FillHoles = 0
+    proxy.BridgeIslands = 0
+    proxy.UpdatePipeline()
+    out = servermanager.Fetch(proxy)
+    check(out.GetNumberOfPolys() < 2 * m - 4, "proxy with FillHoles and BridgeIslands off: open")
+    check(out.GetFieldData().GetArray("NumberOfHolesFilled").GetValue(0) == 0,
+          "proxy: no hole filled")
+print("ok")

@@ -13,14 +13,16 @@ def can_render():
     return bool(os.environ.get("DISPLAY"))
 
 
-def render_png(mesh, path, size=(1024, 768), colour_by="z", show_unused=None):
+def render_png(mesh, path, size=(1024, 768), colour_by="z", show_unused=None, view_up=None,
+               direction=None):
     """Writes a shaded picture of ``mesh``'s polygons to ``path`` (PNG), white background.
 
     colour_by: "z" colours by elevation (blue low to red high) or None for a single colour.
     show_unused: a vtkPolyData of points drawn as small dark dots (e.g. unused cloud points).
     The camera looks at the mesh's bounds from the (-1, -2, 1.5) direction, z up (x-y nearly
-    flat meshes: from above at the same azimuth). Returns the path. Raises RuntimeError when no
-    display is available.
+    flat meshes: from above at the same azimuth); ``view_up`` and ``direction`` (3-vectors, from
+    the focal point towards the camera) replace those defaults. Returns the path. Raises
+    RuntimeError when no display is available.
     """
     if not can_render():
         raise RuntimeError("rendering needs an X display (run under xvfb-run -a)")
@@ -83,9 +85,10 @@ def render_png(mesh, path, size=(1024, 768), colour_by="z", show_unused=None):
     centre = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2]
     camera.SetFocalPoint(*centre)
     flat = extent[2] < 0.2 * max(extent[0], extent[1])
-    direction = (-0.4, -1.0, 0.8) if flat else (-1.0, -2.0, 1.5)
+    if direction is None:
+        direction = (-0.4, -1.0, 0.8) if flat else (-1.0, -2.0, 1.5)
     camera.SetPosition(*(c + d for c, d in zip(centre, direction)))
-    camera.SetViewUp(0.0, 0.0, 1.0)
+    camera.SetViewUp(*(view_up or (0.0, 0.0, 1.0)))
     renderer.ResetCamera()
     camera.Zoom(1.2)
     window.Render()

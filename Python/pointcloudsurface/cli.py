@@ -226,8 +226,10 @@ def _show(value):
         return "on" if value else "off"
     if isinstance(value, tuple):
         return ",".join("%g" % v for v in value)
-    if isinstance(value, float):
-        return "%g" % value
+    if isinstance(value, (int, float)):
+        from .methods import _short
+
+        return _short(value)  # VTK_DOUBLE_MAX / VTK_INT_MAX as inf
     return str(value)
 
 

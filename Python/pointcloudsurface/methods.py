@@ -161,6 +161,9 @@ class Parameter:
             for name, value in self.choices.items():
                 if _same_name(text, name):
                     return value
+        unbounded = self._unbounded(text)
+        if unbounded is not None:
+            return unbounded
         try:
             if self.kind == "int":
                 number = float(text)
@@ -176,6 +179,22 @@ class Parameter:
             raise ParameterError("%s: '%s' is not %s" % (self.name, text, expected)) from None
         return self.check(value)
 
+    def _unbounded(self, value):
+        """The class's largest (smallest) value when ``value`` is +inf (-inf), written as text
+        or as a number, and the range is unbounded on that side (VTK_DOUBLE_MAX, VTK_INT_MAX:
+        shown as inf); else None."""
+        if isinstance(value, str):
+            try:
+                value = float(value)
+            except ValueError:
+                return None
+        if not isinstance(value, float) or value not in (float("inf"), float("-inf")):
+            return None
+        bound = self.maximum if value > 0 else self.minimum
+        if bound is not None and _short(bound) in ("inf", "-inf"):
+            return bound
+        return None
+
     def check(self, value):
         """``value`` converted to this parameter's kind and checked against its range."""
         if self.kind == "bool":
@@ -184,6 +203,9 @@ class Parameter:
             return value
         if value != value:
             raise ParameterError("%s: NaN is not a valid value" % self.name)
+        unbounded = self._unbounded(value)
+        if unbounded is not None:
+            return unbounded
         if self.minimum is not None and not (self.minimum <= value <= self.maximum):
             raise ParameterError("%s: %s is out of range [%s, %s]"
                                  % (self.name, _short(value), _short(self.minimum),

@@ -19,7 +19,10 @@ Checks:
   built) with a clear message; an unwritable output exits 5;
 - the summary line, the progress bar (--progress) and the PNG (--png, rendered offscreen under
   xvfb-run when there is no display; size and non-background pixels checked);
-- every method of the table that this build has runs on a sphere cloud;
+- every method of the table that this build has runs on a sphere cloud; every parameter of each
+  is listed by `-m METHOD --help`, and a non-default value given as option text reaches the
+  filter (read back from its getter); inf stands for VTK_DOUBLE_MAX; a value beyond a range
+  exits 2; the greedy method runs with options as a user types them;
 - Ctrl-C (SIGINT) while the filter runs aborts it: exit code 130, nothing written.
 """
 import contextlib
@@ -39,7 +42,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from pointcloudsurface import points_to_polydata, polydata_to_arrays
 from pointcloudsurface.cli import main as cli_main
 from pointcloudsurface.fileio import (ReadError, read_cloud, read_mesh, write_cloud)
-from pointcloudsurface.methods import METHODS
+from pointcloudsurface.methods import METHODS, make_filter
 
 COMMAND = sys.argv[1] if len(sys.argv) > 1 else shutil.which("pointcloud-surface")
 failures = []
@@ -432,6 +435,65 @@ code, out, _ = run(["-m", "delaunay", "--help"])
 check(code == 0 and "--projection-plane" in out and "Default 0: only exact duplicates" in out,
       "-m delaunay --help lists the parameters with the class documentation")
 
+
+# Every parameter of every method this build has is an option of the command, and a value given
+# as text (what the options carry) reaches the filter: each parameter set to a value other than
+# its default, read back from the filter's getter.
+def other_value(parameter):
+    """(text, expected value) different from the default, or None when there is none."""
+    default = parameter.default
+    if parameter.kind == "bool":
+        return ("off", False) if default else ("on", True)
+    if parameter.choices:
+        for name, value in parameter.choices.items():
+            if value != default:
+                return name, value
+    if parameter.kind in ("int", "float"):
+        low, high = parameter.minimum, parameter.maximum
+        step = 1 if parameter.kind == "int" else 0.5
+        for candidate in (default + step, default - step, (low + high) / 2 if low is not None
+                          else default * 2 + 1):
+            if parameter.kind == "int":
+                candidate = int(candidate)
+            if candidate != default and (low is None or low <= candidate <= high):
+                return repr(candidate), candidate
+    return None
+
+
+set_checked = 0
+for method in METHODS:
+    if not method.available:
+        continue
+    parameters = method.parameters()
+    code, out, _ = run(["-m", method.name, "--help"])
+    check(code == 0 and len(parameters) > 0, "%s: --help and parameters" % method.name)
+    for parameter in parameters:
+        check(parameter.option in out, "%s --help lists %s" % (method.name, parameter.option))
+        alternative = other_value(parameter)
+        if alternative is None:
+            continue
+        text, expected = alternative
+        algorithm = make_filter(method, {parameter.option[2:]: text})
+        got = getattr(algorithm, "Get" + parameter.name)()
+        check(got == expected, "%s %s %s reaches the filter (got %r, expected %r)"
+              % (method.name, parameter.option, text, got, expected))
+        set_checked += 1
+        if parameter.kind == "float" and parameter.maximum is not None \
+                and parameter.maximum >= 1e299:
+            # VTK_DOUBLE_MAX is shown as inf, and inf is accepted for it.
+            algorithm = make_filter(method, {parameter.name: "inf"})
+            check(getattr(algorithm, "Get" + parameter.name)() == parameter.maximum,
+                  "%s %s inf = the class's maximum" % (method.name, parameter.option))
+    ranged = [p for p in parameters if p.minimum is not None and p.maximum < 1e299
+              and p.kind == "float"]
+    if ranged:
+        code, _, err = run([path("cloud.xyz"), "-m", method.name, ranged[0].option,
+                            repr(ranged[0].maximum * 2 + 1)])
+        check(code == 2 and "out of range" in err, "%s %s beyond its range: exit 2 (%d, %r)"
+              % (method.name, ranged[0].option, code, err))
+print("parameters set through their option text and read back: %d" % set_checked)
+check(set_checked >= 30, "the parameters of the methods were checked")
+
 # The picture: offscreen (re-run under xvfb-run when there is no display).
 png = path("terrain.png")
 code, out, err = run([path("writer-binary.pcd"), "-m", "terrain", "--png", png,
@@ -457,12 +519,23 @@ for method in METHODS:
         continue
     output = path("sphere-%s.vtp" % method.name)
     code, out, err = run([path("sphere.ply"), "-m", method.name, "-o", output, "-q"])
+    check("Traceback" not in err, "%s: no traceback" % method.name)
     check(code == 0, "%s on a sphere: exit 0 (got %d: %r)" % (method.name, code, err))
     if code == 0:
         mesh = read_mesh(output)
         check(mesh.GetNumberOfPolys() > 0, "%s: triangles" % method.name)
         check(mesh.GetNumberOfPoints() == 2000, "%s: every point passed through" % method.name)
         check("quality:" in out, "%s: summary printed" % method.name)
+# The greedy method with parameters given as a user types them (a named choice, a count, inf).
+if any(m.name == "greedy" and m.available for m in METHODS):
+    code, out, err = run([path("sphere.ply"), "-m", "greedy", "--crossing-test", "on",
+                          "--number-of-neighbors", "12", "--maximum-hole-diameter", "inf",
+                          "--set", "FillHoles=on", "-o", path("sphere-greedy-set.vtp"), "-q"])
+    check(code == 0 and "quality:" in out, "greedy with parameters: exit 0 (%d, %r)"
+          % (code, err))
+    if code == 0:
+        check(read_mesh(path("sphere-greedy-set.vtp")).GetNumberOfPolys() > 0,
+              "greedy with parameters: triangles")
 
 # Ctrl-C while the filter runs: SIGINT once the progress bar shows the filter under way (10^6
 # points keep it busy for seconds after that); the filter aborts, the command exits 130.

@@ -2,9 +2,9 @@
 
 A programmable source gives each process a contiguous piece of one cloud of 2,000 random points
 on the unit sphere, with their normals (point array Normals) and their index in the whole cloud
-(OriginalIndex). Every filter proxy of the plugin (IncrementalDelaunay3D, PerimeterPeelSurface,
-LocalOptimumGrowth, CDTAdvancingFront and, when this build's plugin has it,
-GreedySurfaceTriangulation) runs on the split cloud with its default properties, followed by a
+(OriginalIndex). Every filter proxy of Plugin/PointCloudSurface.xml (IncrementalDelaunay3D,
+PerimeterPeelSurface, LocalOptimumGrowth, CDTAdvancingFront, GreedySurfaceTriangulation, and any
+proxy added there later) runs on the split cloud with its default properties, followed by a
 ReconstructionQuality proxy; the fetched mesh and measures are compared with the serial answer
 computed in this script: the plain VTK class of the filter (the Python package), same
 parameters, run in-process on the whole cloud with a single-process controller, then measured
@@ -25,7 +25,9 @@ has 2V - 4 triangles over all V points, closed, genus 0.
 Usage: mpirun -np N pvbatch TestParallelGather.py <path to PointCloudSurface.so>
 (PYTHONPATH must reach the build's pointcloudsurface package.)
 """
+import os
 import sys
+import xml.etree.ElementTree as ElementTree
 
 import numpy as np
 from paraview import servermanager
@@ -37,14 +39,8 @@ from vtkmodules.vtkParallelCore import vtkDummyController, vtkMultiProcessContro
 
 POINTS = 2000
 SEED = 17
-# Proxy name, class name, properties set on both (besides the defaults).
-FILTERS = [
-    ("IncrementalDelaunay3D", "vtkIncrementalDelaunay3D", {"GenerateTetrahedra": 0}),
-    ("PerimeterPeelSurface", "vtkPerimeterPeelSurface", {}),
-    ("LocalOptimumGrowth", "vtkLocalOptimumGrowth", {}),
-    ("CDTAdvancingFront", "vtkCDTAdvancingFront", {}),
-    ("GreedySurfaceTriangulation", "vtkGreedySurfaceTriangulation", {}),
-]
+# Properties set on both sides besides the defaults, by proxy name.
+PROPERTIES = {"IncrementalDelaunay3D": {"GenerateTetrahedra": 0}}
 TIMINGS = {"Seconds", "PointsPerSecond"}
 
 
@@ -185,13 +181,16 @@ check(cloud.GetFieldData().GetArray("NumberOfPieces").GetValue(0) == processes,
 whole = sphere_cloud()
 whole_cloud = make_polydata(whole)
 first_piece = make_polydata(whole[:POINTS // processes])
+# Every filter proxy of the plugin's XML with its class (a new proxy is tested here too).
+xml_path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Plugin",
+                        "PointCloudSurface.xml")
+FILTERS = [(element.get("name"), element.get("class"))
+           for element in ElementTree.parse(xml_path).iter("SourceProxy")
+           if element.get("name") != "ReconstructionQuality"]
 tested = []
-for proxy_name, class_name, properties in FILTERS:
-    if proxy_name not in globals():  # LoadPlugin defines the proxies' functions here
-        # Only a proxy that another engineer has not added yet may be missing.
-        check(proxy_name == "GreedySurfaceTriangulation", "the plugin has %s" % proxy_name)
-        print("processes %d: %s: no such proxy in this build, skipped" % (processes, proxy_name))
-        continue
+for proxy_name, class_name in FILTERS:
+    check(proxy_name in globals(), "LoadPlugin defines %s" % proxy_name)
+    properties = PROPERTIES.get(proxy_name, {})
     tested.append(proxy_name)
     proxy = globals()[proxy_name](Input=cloud_source)
     for name, value in properties.items():
@@ -242,5 +241,5 @@ for proxy_name, class_name, properties in FILTERS:
         check(np.array_equal(original, np.arange(POINTS)),
               "points gathered in process order (the serial order)")
 
-check(len(tested) >= 4, "every filter proxy tested (%s)" % ", ".join(tested))
+check(len(tested) >= 5, "every filter proxy tested (%s)" % ", ".join(tested))
 print("processes %d: quality as serial (%s)" % (processes, ", ".join(tested)))

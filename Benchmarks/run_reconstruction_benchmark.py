@@ -530,9 +530,11 @@ def quality_section(runner, args, rng, lines):
                  "orientation | accuracy mean | completeness max | Hausdorff | min angle P1 |")
     lines.append("|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     summary = {}
+    topologies = {}
     for name, points, reference in inputs:
         spacing = mean_spacing(points)
         topology = reference_topology(reference)
+        topologies[name] = topology
         for method in runner.methods():
             result = runner.run(method, points, spacing)
             print(name, method, {k: v for k, v in result.items() if k != "mesh"}, flush=True)
@@ -553,7 +555,41 @@ def quality_section(runner, args, rng, lines):
                 fmt(q["CompletenessMaxOverSpacing"]), fmt(q["HausdorffOverSpacing"]),
                 fmt(q["MinAngleP1"], 1)))
     lines.append("")
-    return summary
+    return summary, topologies
+
+
+def summary_section(summary, lines, topologies):
+    """One row per method over every input of the quality table: the figures a user compares."""
+    cgal = {name: result for name, _, result in summary.get("cgal-afsr", [])}
+    lines.append("## Summary\n")
+    lines.append("Over every input of the quality table below (%d inputs). Time ratio: the method's "
+                 "time divided by CGAL's advancing front on the same cloud (median, and the worst). "
+                 "Closed / right genus: outputs that are closed 2-manifolds, and of those the "
+                 "ones with the reference's genus, among the inputs whose reference is closed. "
+                 "Distances in mean spacings.\n" % len(topologies))
+    lines.append("| method | inputs | time ratio median (max) | coverage median (min) | "
+                 "non-manifold edges + vertices (sum) | closed / right genus | orientation min | "
+                 "Hausdorff median (max) |")
+    lines.append("|---|---:|---:|---:|---:|---:|---:|---:|")
+    closed_inputs = [n for n, t in topologies.items() if t.startswith("closed")]
+    for method, rows in summary.items():
+        ratios = [r["seconds"] / cgal[n]["seconds"] for n, _, r in rows
+                  if n in cgal and cgal[n]["seconds"] > 0]
+        coverage = [q["Coverage"] for _, q, _ in rows]
+        nonmanifold = sum(int(q["NumberOfNonManifoldEdges"] + q["NumberOfNonManifoldVertices"])
+                          for _, q, _ in rows)
+        closed = [(n, q) for n, q, _ in rows if n in closed_inputs and q["NumberOfBoundaryLoops"] == 0
+                  and q["NumberOfNonManifoldEdges"] == 0 and q["NumberOfNonManifoldVertices"] == 0]
+        right = [n for n, q in closed if topologies[n] == "closed, genus %d" % int(q["Genus"])]
+        tested_closed = [n for n, _, _ in rows if n in closed_inputs]
+        hausdorff = [q["HausdorffOverSpacing"] for _, q, _ in rows]
+        orientation = [q["OrientationConsistency"] for _, q, _ in rows]
+        lines.append("| %s | %d | %s (%s) | %s (%s) | %d | %d / %d of %d | %s | %s (%s) |" % (
+            method, len(rows), fmt(float(np.median(ratios)) if ratios else None),
+            fmt(max(ratios) if ratios else None), fmt(float(np.median(coverage)), 4),
+            fmt(min(coverage), 4), nonmanifold, len(closed), len(right), len(tested_closed),
+            fmt(min(orientation), 3), fmt(float(np.median(hausdorff))), fmt(max(hausdorff))))
+    lines.append("")
 
 
 def fit_exponent(ns, values):
@@ -687,7 +723,10 @@ def main():
         runner = Runner(args, workdir)
         lines.append("Methods: %s. Not built yet (skipped): %s.\n" % (
             ", ".join(runner.methods()), ", ".join(runner.missing) or "none"))
-        quality_section(runner, args, rng, lines)
+        table = []
+        summary, topologies = quality_section(runner, args, rng, table)
+        summary_section(summary, lines, topologies)
+        lines.extend(table)
         if not args.skip_scaling:
             scaling_section(runner, args, rng, lines, args.output_dir)
     name = "reconstruction_quick.md" if args.quick else "reconstruction.md"

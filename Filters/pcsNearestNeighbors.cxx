@@ -118,4 +118,60 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
   }
   return !progress || progress(1.0);
 }
+
+void SetSurfaceSampleDivisions(
+  vtkStaticPointLocator* locator, const double bounds[6], int32_t n, double binsPerPoint)
+{
+  // Cubic bins of side h with prod(extent / h) = bins over the axes longer than h; an axis
+  // shorter than h gets one division and leaves the product, and h is recomputed without it
+  // (so that a nearly flat or straight cloud does not get bins^(3/2) bins).
+  const double bins = std::max(1.0, binsPerPoint * std::max<int32_t>(n, 1));
+  bool active[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    const double extent = bounds[2 * i + 1] - bounds[2 * i];
+    active[i] = extent > 0.0 && std::isfinite(extent);
+  }
+  double h = 0.0;
+  for (int pass = 0; pass < 3; ++pass)
+  {
+    double measure = 1.0;
+    int dimension = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+      if (active[i])
+      {
+        measure *= bounds[2 * i + 1] - bounds[2 * i];
+        ++dimension;
+      }
+    }
+    h = dimension > 0 && measure > 0.0 && std::isfinite(measure)
+      ? std::pow(measure / bins, 1.0 / dimension)
+      : 0.0;
+    bool changed = false;
+    for (int i = 0; i < 3; ++i)
+    {
+      if (active[i] && !(bounds[2 * i + 1] - bounds[2 * i] >= h))
+      {
+        active[i] = false;
+        changed = true;
+      }
+    }
+    if (!changed)
+    {
+      break;
+    }
+  }
+  int divisions[3] = { 1, 1, 1 };
+  for (int i = 0; i < 3; ++i)
+  {
+    if (active[i] && h > 0.0)
+    {
+      divisions[i] = static_cast<int>(
+        std::min(std::ceil((bounds[2 * i + 1] - bounds[2 * i]) / h), std::ceil(bins)));
+    }
+  }
+  locator->AutomaticOff();
+  locator->SetDivisions(divisions);
+}
 }

@@ -25,6 +25,15 @@ namespace pcs
 /// then returns false and the table is incomplete).
 bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int32_t n, int k,
   std::vector<int32_t>& neighbors, const std::function<bool(double)>& progress = nullptr);
+
+/// Bin grid of `locator` (divisions set, Automatic off) for a sample of a surface: `n` points in
+/// the box `bounds`, about `binsPerPoint` bins per point over the box's volume (its area when
+/// flat, its length when straight). VTK's automatic grid aims at a few points per bin of the box,
+/// but a surface sample occupies only a thin layer of those bins, so the bins it does occupy
+/// hold many points; finer bins keep the radius queries of FindNearestNeighbors short. Call it
+/// before BuildLocator; zero or non-finite extents give one division on that axis.
+void SetSurfaceSampleDivisions(
+  vtkStaticPointLocator* locator, const double bounds[6], int32_t n, double binsPerPoint = 4.0);
 }
 
 #endif

@@ -4,6 +4,7 @@
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 #include "pcsHoleFilling.h"
+#include "pcsNearestNeighbors.h"
 #include "pcsPredicates.h"
 #include "pcsProjectedTests.h"
 #include "pcsSpatialSort.h"
@@ -1454,33 +1455,6 @@ void Grower::Run()
   this->OrientComponents();
 }
 
-// A radius whose ball holds about K + 1 points of a surface sample: from the mean distance to
-// the nearest neighbour of a few hundred points (2D density: the K-th neighbour lies about
-// sqrt(K) nearest-neighbour distances away). Only a starting value: every query adapts it.
-double EstimateNeighborRadius(vtkStaticPointLocator* locator, const double* x, Id n, int k)
-{
-  vtkNew<vtkIdList> list;
-  double sum = 0.0;
-  int samples = 0;
-  const Id step = std::max<Id>(1, n / 256);
-  for (Id i = 0; i < n; i += step)
-  {
-    locator->FindClosestNPoints(2, x + 3 * static_cast<size_t>(i), list);
-    for (vtkIdType j = 0; j < list->GetNumberOfIds(); ++j)
-    {
-      const vtkIdType id = list->GetId(j);
-      if (id != i)
-      {
-        sum += std::sqrt(Distance2(x + 3 * static_cast<size_t>(i), x + 3 * id));
-        ++samples;
-        break;
-      }
-    }
-  }
-  const double spacing = samples > 0 && sum > 0.0 ? sum / samples : 1.0;
-  return 1.2 * spacing * std::sqrt(4.0 * (k + 1.0) / vtkMath::Pi());
-}
-
 } // namespace
 
 //------------------------------------------------------------------------------------------------
@@ -1702,65 +1676,24 @@ int vtkLocalOptimumGrowth::RequestData(
     vtkSmartPointer<vtkStaticPointLocator> locator = this->Locator;
     if (!locator)
     {
+      // A surface sample fills only a thin layer of the bins of its bounding box: about 4 bins
+      // per point keep the radius queries short (see the class documentation).
       locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+      double bounds[6];
+      internalPoints->GetBounds(bounds);
+      pcs::SetSurfaceSampleDivisions(locator, bounds, n);
     }
     locator->SetDataSet(cloud);
     locator->BuildLocator();
-    // K nearest neighbours by radius queries (much faster than FindClosestNPoints): the radius
-    // starts from the previous point's (Hilbert order: similar density) and grows until the
-    // ball holds K other points; the K nearest are then selected, ties broken by index.
-    const double startRadius = EstimateNeighborRadius(locator, x.data(), n, k);
-    vtkSMPThreadLocalObject<vtkIdList> lists;
-    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-      vtkIdList* list = lists.Local();
-      std::vector<std::pair<double, Id>> found;
-      double radius = startRadius;
-      for (vtkIdType i = begin; i < end; ++i)
+    // The shared K-nearest-neighbour search (adaptive radius queries, ties broken by index,
+    // threaded in blocks); abort stops it between blocks and the growth is then skipped.
+    pcs::FindNearestNeighbors(locator, x.data(), n, k, knn, [this](double fraction) {
+      if (this->GetAbortExecute())
       {
-        // Abort: stop early (the growth is then skipped; the output has no triangles).
-        if ((i & 4095) == 0 && this->GetAbortExecute())
-        {
-          break;
-        }
-        const double* p = &x[3 * i];
-        for (int attempt = 0;; ++attempt)
-        {
-          locator->FindPointsWithinRadius(radius, p, list);
-          if (list->GetNumberOfIds() > k || attempt > 60)
-          {
-            break;
-          }
-          radius *= list->GetNumberOfIds() > 1
-            ? std::min(2.0, 1.1 * std::sqrt((k + 1.0) / list->GetNumberOfIds()))
-            : 2.0;
-        }
-        const vtkIdType count = list->GetNumberOfIds();
-        found.clear();
-        for (vtkIdType j = 0; j < count; ++j)
-        {
-          const vtkIdType id = list->GetId(j);
-          if (id != i)
-          {
-            found.emplace_back(Distance2(p, &x[3 * id]), static_cast<Id>(id));
-          }
-        }
-        const size_t keep = std::min<size_t>(k, found.size());
-        if (keep < found.size())
-        {
-          std::nth_element(found.begin(), found.begin() + keep, found.end());
-        }
-        std::sort(found.begin(), found.begin() + keep);
-        Id* out = &knn[static_cast<size_t>(i) * k];
-        for (size_t j = 0; j < keep; ++j)
-        {
-          out[j] = found[j].second;
-        }
-        // Next start: a little beyond this point's K-th neighbour (similar density nearby).
-        if (keep > 0)
-        {
-          radius = 1.1 * std::sqrt(found[keep - 1].first);
-        }
+        return false;
       }
+      this->UpdateProgress(0.05 + 0.1 * fraction);
+      return !this->GetAbortExecute();
     });
     if (this->Locator)
     {

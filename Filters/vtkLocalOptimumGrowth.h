@@ -10,9 +10,16 @@
  *
  * Algorithm.
  * 1. Neighbours ("Materials and methods", K-nearest neighbours and hash table): the K =
- *    NumberOfNeighbors nearest neighbours of every point, computed once (vtkSMPTools) with a
- *    vtkStaticPointLocator, VTK's uniform bin grid, i.e. the paper's hash table. Points are
+ *    NumberOfNeighbors nearest neighbours of every point (ties: smaller index), computed once
+ *    with a vtkStaticPointLocator, VTK's uniform bin grid, i.e. the paper's hash table, by the
+ *    project's shared search (adaptive radius queries, threaded with vtkSMPTools). Points are
  *    renumbered along a Hilbert curve first (memory locality); exact duplicates are merged.
+ *    Added: unless a locator is set, its grid has about 4 bins per point over the bounding box
+ *    instead of VTK's automatic few points per bin -- a surface sample occupies only a thin
+ *    layer of the box's bins, so the automatic grid puts tens of points in each occupied bin.
+ *    Measured (1 thread, loaded machine, best of runs): neighbour search on 10^5 points sampled
+ *    on CGAL's bunny 0.57 -> 0.50 s, on 10^6 sphere points 5.8 -> 5.1 s, on 10^5 sphere points
+ *    unchanged (0.35 s); the triangles are the same.
  * 2. Seed triangle (step 1 of the paper): P1 the point of largest x (ties: largest y, then z),
  *    P2 its nearest neighbour, P3 the point of the K-neighbourhoods of P1 and P2 minimizing
  *    |P1P3| + |P2P3| among those meeting constraints 2 and 3; when no P3 exists the next
@@ -32,7 +39,8 @@
  *        edge-length ratio of every new triangle; a point close to the middle of the edge
  *        stays a candidate, so it is meshed instead of being covered by the triangle;
  *    (3) the angles of (b, a, c) at a and at b are at most MaximumBaseAngle (paper: the
- *        projection of c falls on the edge, 90 degrees);
+ *        projection of c falls on the edge, 90 degrees; default 120 here, since 90 leaves many
+ *        front edges of a random sampling without any candidate);
  *    (4) an edge has at most two triangles and interior points (whose umbrella is closed)
  *        are excluded -- with the manifold rules below.
  *    The local-optimality score (the paper does not give one): among the admissible candidates,
@@ -78,8 +86,8 @@
  *
  * Cost: O(KN) for N points (the paper's bound): the neighbour search is done once, each front
  * edge examines at most 2K candidates and their neighbourhood, and every topological query is
- * O(1). Memory: about 4K + 200 bytes per point. The neighbour search is threaded (vtkSMPTools);
- * the growth is sequential.
+ * O(1). Memory: about 4K + 230 bytes per point (32 of them for the bin grid). The neighbour
+ * search is threaded (vtkSMPTools); the growth is sequential.
  *
  * @warning
  * The method assumes a surface sampled densely enough that K neighbours reach across every
@@ -143,8 +151,8 @@ public:
   ///@{
   /**
    * Constraint 3: largest angle, in degrees, of a new triangle at either end of the expanded
-   * edge; 90 keeps the projection of the new point on the edge (the paper's rule). Default 90;
-   * range [30, 179].
+   * edge; 90 keeps the projection of the new point on the edge (the paper's rule, which leaves
+   * many front edges of random samplings without a candidate). Default 120; range [30, 179].
    */
   vtkSetClampMacro(MaximumBaseAngle, double, 30.0, 179.0);
   vtkGetMacro(MaximumBaseAngle, double);
@@ -171,8 +179,9 @@ public:
 
   ///@{
   /**
-   * The point locator used for the K-nearest-neighbour search (a vtkStaticPointLocator is
-   * created when none is set).
+   * The point locator used for the K-nearest-neighbour search. Default none: a
+   * vtkStaticPointLocator with about 4 bins per point is created. A locator set here is used
+   * with its own bin settings.
    */
   void SetLocator(vtkStaticPointLocator* locator);
   vtkGetObjectMacro(Locator, vtkStaticPointLocator);

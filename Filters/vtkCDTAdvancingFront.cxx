@@ -1222,7 +1222,8 @@ int vtkCDTAdvancingFront::RequestData(
     return finish();
   }
 
-  // Normals: the input's, else estimated (vtkPCANormalEstimation, consistently oriented).
+  // Normals: the input's, else estimated (vtkPCANormalEstimation, consistently oriented). Input
+  // normals that are zero-length or not finite count as missing: those are estimated too.
   std::vector<double> normals(3 * static_cast<size_t>(local), 0.0);
   vtkDataArray* inputNormals =
     this->UseInputNormals ? this->GetInputArrayToProcess(0, input) : nullptr;
@@ -1235,15 +1236,18 @@ int vtkCDTAdvancingFront::RequestData(
                                             "are estimated instead.");
     inputNormals = nullptr;
   }
-  if (inputNormals)
+  auto isBadNormal = [](const double* n)
   {
-    for (Id k = 0; k < local; ++k)
-    {
-      inputNormals->GetTuple(inputId[k], &normals[3 * static_cast<size_t>(k)]);
-    }
-  }
-  else
+    const double length2 = Dot(n, n);
+    return !std::isfinite(length2) || !(length2 > 0.0);
+  };
+  // The estimated normals, for every point: vtkPCANormalEstimation with its graph traversal (the
+  // normals consistent with each other), then all flipped if needed so that the normal of the
+  // point farthest from the centroid (a point of the convex hull, where the outside is known)
+  // points away from the centroid: outwards on a closed surface.
+  auto estimateNormals = [&](std::vector<double>& estimatedNormals)
   {
+    estimatedNormals.assign(3 * static_cast<size_t>(local), 0.0);
     vtkNew<vtkPCANormalEstimation> estimation;
     estimation->SetInputData(cloud);
     estimation->SetLocator(locator); // its resized bins (ResizeBins) serve the K nearest points
@@ -1255,12 +1259,9 @@ int vtkCDTAdvancingFront::RequestData(
     {
       for (Id k = 0; k < local; ++k)
       {
-        estimated->GetTuple(k, &normals[3 * static_cast<size_t>(k)]);
+        estimated->GetTuple(k, &estimatedNormals[3 * static_cast<size_t>(k)]);
       }
     }
-    // The traversal makes the normals consistent with each other, not outward: the normal of the
-    // point farthest from the centroid (a point of the convex hull, where the outside is known)
-    // is made to point away from the centroid, and all normals follow it.
     double centroid[3] = { 0.0, 0.0, 0.0 };
     for (Id k = 0; k < local; ++k)
     {
@@ -1281,14 +1282,18 @@ int vtkCDTAdvancingFront::RequestData(
     const double away[3] = { xyz[3 * static_cast<size_t>(farthest)] - centroid[0],
       xyz[3 * static_cast<size_t>(farthest) + 1] - centroid[1],
       xyz[3 * static_cast<size_t>(farthest) + 2] - centroid[2] };
-    if (Dot(away, &normals[3 * static_cast<size_t>(farthest)]) < 0.0)
+    if (Dot(away, &estimatedNormals[3 * static_cast<size_t>(farthest)]) < 0.0)
     {
-      for (double& c : normals)
+      for (double& c : estimatedNormals)
       {
         c = -c;
       }
     }
-    // Passed to the output ("Normals", or "EstimatedNormals" if the input has a "Normals").
+  };
+  // The normals used, passed to the output when some were estimated ("Normals", or
+  // "EstimatedNormals" if the input has a "Normals" array).
+  auto passNormals = [&]()
+  {
     vtkNew<vtkDoubleArray> outputNormals;
     const bool clash = output->GetPointData()->GetArray("Normals") != nullptr;
     outputNormals->SetName(clash ? "EstimatedNormals" : "Normals");
@@ -1304,6 +1309,55 @@ int vtkCDTAdvancingFront::RequestData(
     {
       output->GetPointData()->SetNormals(outputNormals);
     }
+  };
+  if (inputNormals)
+  {
+    vtkIdType missing = 0;
+    for (Id k = 0; k < local; ++k)
+    {
+      double* n = &normals[3 * static_cast<size_t>(k)];
+      inputNormals->GetTuple(inputId[k], n);
+      missing += isBadNormal(n) ? 1 : 0;
+    }
+    if (missing > 0)
+    {
+      // The estimated normals take the orientation of the input normals (the sign of the sum of
+      // their dot products with the valid input normals; outwards if none is valid).
+      vtkWarningMacro(<< missing << " of " << local << " input normal(s) (array "
+                      << (inputNormals->GetName() ? inputNormals->GetName() : "")
+                      << ") are zero-length or not finite: those normals are estimated "
+                         "(vtkPCANormalEstimation).");
+      std::vector<double> estimated;
+      estimateNormals(estimated);
+      double agreement = 0.0;
+      for (Id k = 0; k < local; ++k)
+      {
+        const double* n = &normals[3 * static_cast<size_t>(k)];
+        if (!isBadNormal(n))
+        {
+          const double length = std::sqrt(Dot(n, n));
+          agreement += Dot(n, &estimated[3 * static_cast<size_t>(k)]) / length;
+        }
+      }
+      const double sign = agreement < 0.0 ? -1.0 : 1.0;
+      for (Id k = 0; k < local; ++k)
+      {
+        double* n = &normals[3 * static_cast<size_t>(k)];
+        if (isBadNormal(n))
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            n[c] = sign * estimated[3 * static_cast<size_t>(k) + c];
+          }
+        }
+      }
+      passNormals();
+    }
+  }
+  else
+  {
+    estimateNormals(normals);
+    passNormals();
   }
   this->UpdateProgress(0.1);
   if (this->GetAbortExecute())
@@ -1331,8 +1385,9 @@ int vtkCDTAdvancingFront::RequestData(
   this->NumberOfSkippedPoints += badNormals;
   if (badNormals > 0)
   {
-    vtkWarningMacro(
-      "Skipped " << badNormals << " point(s) whose normal is zero-length or not finite.");
+    vtkWarningMacro("Skipped " << badNormals
+                               << " point(s) whose normal is zero-length or not finite (also "
+                                  "when estimated: too few distinct neighbours).");
   }
 
   // Exact duplicates (vtkStaticPointLocator::MergePoints with a zero tolerance): in each group of
@@ -1579,6 +1634,7 @@ void vtkCDTAdvancingFront::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNumberOfCandidates: " << this->MaximumNumberOfCandidates << "\n";
   os << indent << "HoleFilling: " << (this->HoleFilling ? "On" : "Off") << "\n";
   os << indent << "HoleFillingRadiusFactor: " << this->HoleFillingRadiusFactor << "\n";
+  os << indent << "HoleFillingMinimumNormalDot: " << this->HoleFillingMinimumNormalDot << "\n";
   os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";
   os << indent << "NumberOfFrontTriangles: " << this->NumberOfFrontTriangles << "\n";
   os << indent << "NumberOfSeedTriangles: " << this->NumberOfSeedTriangles << "\n";

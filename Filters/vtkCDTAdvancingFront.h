@@ -13,8 +13,11 @@
  * array; otherwise they are estimated with vtkPCANormalEstimation (NormalSampleSize nearest
  * points, orientation made consistent by its graph traversal; then all are flipped if needed so
  * that the normal of the point farthest from the centroid points away from it: outwards on a
- * closed surface). The normals used are passed to
- * the output (point data `Normals` when estimated).
+ * closed surface). Input normals that are zero-length or not finite count as missing: a warning
+ * names how many, and those points get estimated normals (oriented like the valid input normals:
+ * all estimated normals are flipped when their dot products with the valid input normals sum to
+ * a negative value). The normals used are passed to the output when some were estimated (point
+ * data `Normals`, or `EstimatedNormals` when the input has a `Normals` array).
  *
  * Rules (section II; each one a parameter below). A triangle is a candidate when all hold:
  * - II.A: its third point lies in the sphere of radius NeighborhoodRadius around the midpoint of
@@ -78,7 +81,8 @@
  * over the used points of the mean angle, in degrees, between a point's normal and the planes of
  * its triangles; 90 means tangent), and `NumberOfFrontTriangles` (seed and front triangles),
  * `NumberOfSeedTriangles`, `NumberOfUnusedPoints`, `NumberOfDuplicatePoints`,
- * `NumberOfSkippedPoints` (non-finite coordinates or normals, zero-length normals),
+ * `NumberOfSkippedPoints` (non-finite coordinates; a point whose normal could not be estimated
+ * either),
  * `NumberOfRemovedTriangles` (pinch repair),
  * `MeanSpacing` and `NeighborhoodRadiusUsed`.
  *
@@ -92,7 +96,8 @@
  * The result depends on the normals: they must be consistently oriented (a flipped patch is
  * meshed separately, the II.C.1 rule stops the front at the flip). Exact duplicate points are
  * meshed once (the other copies stay unused and are counted). Points with non-finite
- * coordinates, non-finite or zero-length normals are skipped and counted, with a warning. Fewer
+ * coordinates are skipped and counted, with a warning; zero-length or non-finite input normals are
+ * estimated, with a warning (see Normals above). Fewer
  * than 3 usable points give a warning and an output without triangles. Under MPI the input is
  * gathered on process 0, which computes the mesh; the other processes output nothing.
  *
@@ -117,7 +122,8 @@ public:
   /**
    * Use the input's point normals (the array selected with SetInputArrayToProcess(0, ...), by
    * default the active normals) when present. Default on. When off, or when the input has no
-   * such 3-component point array, the normals are estimated with vtkPCANormalEstimation.
+   * such 3-component point array, the normals are estimated with vtkPCANormalEstimation; so are
+   * the input normals that are zero-length or not finite (with a warning).
    */
   vtkSetMacro(UseInputNormals, bool);
   vtkGetMacro(UseInputNormals, bool);

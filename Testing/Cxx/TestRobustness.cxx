@@ -84,6 +84,14 @@ vtkSmartPointer<vtkPolyData> FilterEntry::Prepare(vtkPolyData* cloud) const
   return this->Info.ConsumesMesh ? HullOf(cloud) : Identity(cloud);
 }
 
+// The filters that read the input's point normals (the active normals): the inputs with
+// zero-length or NaN normals must give them a warning, and every point must still be used (a
+// missing normal is estimated).
+bool TakesNormals(const std::string& name)
+{
+  return name == "vtkCDTAdvancingFront";
+}
+
 // Parameter limits of each filter, by class name.
 std::vector<std::pair<std::string, std::function<void(vtkPolyDataAlgorithm*)>>> ExtremesOf(
   const std::string& name)
@@ -191,7 +199,9 @@ struct InputCase
 {
   std::string Name;
   std::vector<double> XYZ;
-  bool Unusable; // a warning or an error is required
+  bool Unusable;               // a warning or an error is required
+  std::vector<double> Normals; // the active point normals (none when empty)
+  bool BadNormals = false;     // some normals are zero-length or not finite
 };
 
 std::vector<InputCase> Inputs()
@@ -267,6 +277,25 @@ std::vector<InputCase> Inputs()
     cases.push_back({ "sphere with NaN and Inf coordinates", xyz, true });
   }
   cases.push_back({ "sphere", Sphere(2000, 6), false });
+  // Normals (exact, outward on the unit sphere) with zero-length or NaN ones.
+  for (int kind = 0; kind < 4; ++kind)
+  {
+    const std::vector<double> xyz = Sphere(2000, 31 + kind);
+    std::vector<double> normals(xyz);
+    const char* names[4] = { "sphere with exact normals", "sphere with 10 % zero-length normals",
+      "sphere with only zero-length normals", "sphere with 5 % NaN normals" };
+    for (size_t i = 0; i < normals.size() / 3; ++i)
+    {
+      const bool zero = (kind == 1 && i % 10 == 0) || kind == 2;
+      const bool nan = kind == 3 && i % 20 == 0;
+      for (int c = 0; c < 3; ++c)
+      {
+        normals[3 * i + c] =
+          zero ? 0.0 : (nan ? std::numeric_limits<double>::quiet_NaN() : normals[3 * i + c]);
+      }
+    }
+    cases.push_back({ names[kind], xyz, false, normals, kind > 0 });
+  }
   return cases;
 }
 
@@ -413,6 +442,18 @@ bool RunCase(const FilterEntry& filter, const InputCase& input)
   const std::string label = filter.Info.Name + " / " + input.Name;
   auto cloud = pcstest::MakeCloud(input.XYZ);
   AddPointArrays(cloud);
+  if (!input.Normals.empty())
+  {
+    vtkNew<vtkDoubleArray> normals;
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    normals->SetNumberOfTuples(cloud->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < cloud->GetNumberOfPoints(); ++i)
+    {
+      normals->SetTuple(i, &input.Normals[3 * i]);
+    }
+    cloud->GetPointData()->SetNormals(normals);
+  }
   auto prepared = filter.Prepare(cloud);
   Algorithm algorithm = filter.Info.Make();
   algorithm->SetInputData(prepared);
@@ -420,6 +461,17 @@ bool RunCase(const FilterEntry& filter, const InputCase& input)
   if (input.Unusable)
   {
     PCS_CHECK(messages.Warnings + messages.Errors > 0, label << ": no warning or error");
+  }
+  if (!input.Normals.empty() && TakesNormals(filter.Info.Name))
+  {
+    PCS_CHECK(!input.BadNormals || messages.Warnings > 0, label << ": no warning");
+    vtkNew<vtkReconstructionQuality> quality;
+    quality->SetInputData(algorithm->GetOutput());
+    quality->ComputeDistancesOff();
+    quality->Update();
+    const vtkIdType used = pcstest::FieldCount(quality->GetOutput(), "NumberOfUsedPoints");
+    PCS_CHECK(used == prepared->GetNumberOfPoints(),
+      label << ": " << used << " of " << prepared->GetNumberOfPoints() << " points used");
   }
   return CheckOutput(filter, label, prepared, algorithm->GetOutput(), true);
 }

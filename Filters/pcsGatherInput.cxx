@@ -1,12 +1,129 @@
 #include "pcsGatherInput.h"
 
 #include "vtkAppendPolyData.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkIdList.h"
 #include "vtkMultiProcessController.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <array>
+#include <cmath>
+#include <map>
 #include <vector>
+
+namespace
+{
+// The cells of `cells` with their point ids replaced through `newId`.
+vtkSmartPointer<vtkCellArray> Renumber(vtkCellArray* cells, const std::vector<vtkIdType>& newId)
+{
+  auto renumbered = vtkSmartPointer<vtkCellArray>::New();
+  if (!cells || cells->GetNumberOfCells() == 0)
+  {
+    return renumbered;
+  }
+  renumbered->AllocateExact(cells->GetNumberOfCells(), cells->GetNumberOfConnectivityIds());
+  vtkNew<vtkIdList> ids;
+  auto iterator = vtk::TakeSmartPointer(cells->NewIterator());
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+  {
+    iterator->GetCurrentCell(ids);
+    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+    {
+      ids->SetId(i, newId[ids->GetId(i)]);
+    }
+    renumbered->InsertNextCell(ids);
+  }
+  return renumbered;
+}
+
+// A mesh split in pieces by a source or a reader repeats the vertices on the piece borders in
+// each piece. Keeps each such vertex once: a point that is a vertex of a line, polygon or strip
+// of its piece and has exactly the coordinates of such a vertex of an earlier piece becomes
+// that point. Points that no cell uses (cloud points), and coincident points within one piece,
+// are left alone, so a cloud gathered from pieces keeps every point. `pieceEnd[k]` is one past
+// the last point of piece k in `mesh`.
+void MergePieceSeams(vtkPolyData* mesh, const std::vector<vtkIdType>& pieceEnd)
+{
+  const vtkIdType numberOfPoints = mesh->GetNumberOfPoints();
+  std::vector<char> used(numberOfPoints, 0);
+  for (vtkCellArray* cells : { mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() })
+  {
+    if (!cells)
+    {
+      continue;
+    }
+    vtkNew<vtkIdList> ids;
+    auto iterator = vtk::TakeSmartPointer(cells->NewIterator());
+    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+    {
+      iterator->GetCurrentCell(ids);
+      for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+      {
+        used[ids->GetId(i)] = 1;
+      }
+    }
+  }
+  // First used occurrence of each exact coordinate triple (finite points only: NaN has no
+  // ordering), and the piece it came from.
+  std::map<std::array<double, 3>, std::pair<vtkIdType, std::size_t>> first;
+  std::vector<vtkIdType> newId(numberOfPoints);
+  vtkIdType kept = 0;
+  std::size_t piece = 0;
+  for (vtkIdType id = 0; id < numberOfPoints; ++id)
+  {
+    while (piece + 1 < pieceEnd.size() && id >= pieceEnd[piece])
+    {
+      ++piece;
+    }
+    std::array<double, 3> x;
+    mesh->GetPoint(id, x.data());
+    const bool finite = std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+    if (used[id] && finite)
+    {
+      auto found = first.find(x);
+      if (found != first.end() && found->second.second < piece)
+      {
+        newId[id] = newId[found->second.first];
+        continue;
+      }
+      if (found == first.end())
+      {
+        first.emplace(x, std::make_pair(id, piece));
+      }
+    }
+    newId[id] = kept++;
+  }
+  if (kept == numberOfPoints)
+  {
+    return;
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataType(mesh->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(kept);
+  vtkNew<vtkPointData> pointData;
+  pointData->CopyAllocate(mesh->GetPointData(), kept);
+  vtkIdType next = 0;
+  for (vtkIdType id = 0; id < numberOfPoints; ++id)
+  {
+    if (newId[id] == next) // a kept point (merged ones map to an earlier, smaller id)
+    {
+      points->SetPoint(next, mesh->GetPoint(id));
+      pointData->CopyData(mesh->GetPointData(), id, next);
+      ++next;
+    }
+  }
+  mesh->SetVerts(Renumber(mesh->GetVerts(), newId));
+  mesh->SetLines(Renumber(mesh->GetLines(), newId));
+  mesh->SetPolys(Renumber(mesh->GetPolys(), newId));
+  mesh->SetStrips(Renumber(mesh->GetStrips(), newId));
+  mesh->SetPoints(points);
+  mesh->GetPointData()->ShallowCopy(pointData);
+}
+} // namespace
 
 namespace pcs
 {
@@ -36,21 +153,29 @@ vtkSmartPointer<vtkPointSet> GatherInputOnFirstProcess(vtkPointSet* input)
     return nullptr;
   }
   vtkNew<vtkAppendPolyData> append;
-  int inputs = 0;
+  std::vector<vtkIdType> pieceEnd;
+  vtkIdType points = 0;
+  int piecesWithCells = 0;
   for (const auto& received : pieces)
   {
     auto* polyData = vtkPolyData::SafeDownCast(received);
     if (polyData && polyData->GetNumberOfPoints() > 0)
     {
       append->AddInputData(polyData);
-      ++inputs;
+      points += polyData->GetNumberOfPoints();
+      pieceEnd.push_back(points);
+      piecesWithCells += polyData->GetNumberOfCells() > polyData->GetNumberOfVerts() ? 1 : 0;
     }
   }
   auto gathered = vtkSmartPointer<vtkPolyData>::New();
-  if (inputs > 0)
+  if (!pieceEnd.empty())
   {
     append->Update();
     gathered->ShallowCopy(append->GetOutput());
+    if (piecesWithCells > 1)
+    {
+      MergePieceSeams(gathered, pieceEnd);
+    }
   }
   return gathered;
 }

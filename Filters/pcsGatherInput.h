@@ -16,6 +16,11 @@ namespace pcs
 /// computes on process 0 only and leaves its outputs empty elsewhere, so the result is the same
 /// surface as a serial run over the same points in the same order. With one process it returns
 /// `input` itself (no copy). Pieces without points are skipped (their arrays may differ).
+/// A mesh split in pieces (by a source or a reader) repeats its piece-border vertices in each
+/// piece: when two or more pieces have lines, polygons or strips, a vertex of such a cell with
+/// exactly the coordinates of such a vertex of an earlier piece is kept once (its first
+/// occurrence; cells renumbered), so the gathered mesh has the serial mesh's topology. Points no
+/// cell uses (cloud points) and coincident points within one piece are never merged.
 /// Every process must call it (it communicates).
 vtkSmartPointer<vtkPointSet> GatherInputOnFirstProcess(vtkPointSet* input);
 }

@@ -1,7 +1,8 @@
 """Parallel correctness under MPI (issue 8): run with `mpirun -np N pvbatch` (N = 1, 2, 4).
 
 A programmable source gives each process a contiguous piece of one cloud of 2,000 random points
-on the unit sphere, with their normals (point array Normals) and their index in the whole cloud
+on the unit sphere followed by exact copies of its first 20 points (2,020 in all, the copies in
+the last piece), with their normals (point array Normals) and their index in the whole cloud
 (OriginalIndex). Every filter proxy of Plugin/PointCloudSurface.xml (IncrementalDelaunay3D,
 PerimeterPeelSurface, LocalOptimumGrowth, CDTAdvancingFront, GreedySurfaceTriangulation, and any
 proxy added there later) runs on the split cloud with its default properties, followed by a
@@ -20,7 +21,13 @@ by vtkReconstructionQuality. They must agree exactly, whatever N is:
 A rank that meshed only its own piece would fail: with N > 1 the script checks that the mesh of
 the first piece alone differs from the whole-cloud reference (the comparison can tell them
 apart). Known by construction besides: the points are in convex position, so the Delaunay hull
-has 2V - 4 triangles over all V points, closed, genus 0.
+has 2V - 4 triangles over the V = 2,000 distinct points, closed, genus 0.
+
+ReconstructionQuality on a mesh split in pieces (as a partitioned file is read): a second
+programmable source gives each process a band of rows of a 24 x 12 torus grid mesh, each band
+with its own copy of the border row it shares with the next band (the same coordinates). The
+gathered mesh must measure as the serial one: 288 points, 576 triangles, closed, one component,
+Euler characteristic 0, genus 1, every field value equal.
 
 Usage: mpirun -np N pvbatch TestParallelGather.py <path to PointCloudSurface.so>
 (PYTHONPATH must reach the build's pointcloudsurface package.)
@@ -38,6 +45,8 @@ from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkParallelCore import vtkDummyController, vtkMultiProcessController
 
 POINTS = 2000
+DUPLICATES = 20  # exact copies of the first points, at the end (in the last piece)
+TOTAL = POINTS + DUPLICATES
 SEED = 17
 # Properties set on both sides besides the defaults, by proxy name.
 PROPERTIES = {"IncrementalDelaunay3D": {"GenerateTetrahedra": 0}}
@@ -54,7 +63,7 @@ def sphere_cloud():
     """The whole cloud: points and normals (the same numbers as the programmable source)."""
     points = np.random.default_rng(SEED).normal(size=(POINTS, 3))
     points /= np.linalg.norm(points, axis=1)[:, None]
-    return points
+    return np.vstack([points, points[:DUPLICATES]])
 
 
 SOURCE_SCRIPT = """
@@ -67,6 +76,7 @@ piece = info.Get(sddp.UPDATE_PIECE_NUMBER())
 pieces = info.Get(sddp.UPDATE_NUMBER_OF_PIECES())
 p = np.random.default_rng(%d).normal(size=(%d, 3))
 p /= np.linalg.norm(p, axis=1)[:, None]
+p = np.vstack([p, p[:%d]])
 begin, end = piece * len(p) // pieces, (piece + 1) * len(p) // pieces
 chunk = np.ascontiguousarray(p[begin:end])
 points = vtkPoints()
@@ -83,7 +93,7 @@ count = vtkDoubleArray()
 count.SetName("NumberOfPieces")
 count.InsertNextValue(pieces)
 out.GetFieldData().AddArray(count)
-""" % (SEED, POINTS)
+""" % (SEED, POINTS, DUPLICATES)
 
 
 def make_polydata(points, begin=0):
@@ -174,13 +184,13 @@ cloud_source.Script = SOURCE_SCRIPT
 
 # The source really is split: one piece per process.
 cloud = servermanager.Fetch(cloud_source)
-check(cloud.GetNumberOfPoints() == POINTS, "the pieces add up to the cloud")
+check(cloud.GetNumberOfPoints() == TOTAL, "the pieces add up to the cloud")
 check(cloud.GetFieldData().GetArray("NumberOfPieces").GetValue(0) == processes,
       "one piece per process")
 
 whole = sphere_cloud()
 whole_cloud = make_polydata(whole)
-first_piece = make_polydata(whole[:POINTS // processes])
+first_piece = make_polydata(whole[:TOTAL // processes])
 # Every filter proxy of the plugin's XML with its class (a new proxy is tested here too).
 xml_path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Plugin",
                         "PointCloudSurface.xml")
@@ -208,8 +218,8 @@ for proxy_name, class_name in FILTERS:
           % (processes, proxy_name, measured.GetNumberOfPoints(), len(triangles), len(expected),
              values.get("Genus", float("nan")), values.get("NumberOfBoundaryEdges", -1)))
     check(len(expected) > 0, "%s: the serial reference has triangles" % proxy_name)
-    check(measured.GetNumberOfPoints() == reference.GetNumberOfPoints() == POINTS,
-          "%s: all %d points on the output (got %d)" % (proxy_name, POINTS,
+    check(measured.GetNumberOfPoints() == reference.GetNumberOfPoints() == TOTAL,
+          "%s: all %d points on the output (got %d)" % (proxy_name, TOTAL,
                                                         measured.GetNumberOfPoints()))
     check(len(triangles) == len(expected), "%s: %d triangles as serial (got %d)"
           % (proxy_name, len(expected), len(triangles)))
@@ -234,12 +244,112 @@ for proxy_name, class_name in FILTERS:
     if proxy_name == "IncrementalDelaunay3D":
         # Convex position: the hull has 2V - 4 triangles, every point used, closed, genus 0.
         check(len(triangles) == 2 * POINTS - 4, "hull: 2V - 4 triangles")
-        check(values["Coverage"] == 1.0 and values["NumberOfBoundaryEdges"] == 0
+        check(values["NumberOfUsedPoints"] == POINTS and values["NumberOfBoundaryEdges"] == 0
               and values["NumberOfNonManifoldEdges"] == 0 and values["Genus"] == 0
-              and values["EulerCharacteristic"] == 2, "hull: closed genus 0 over every point")
+              and values["EulerCharacteristic"] == 2,
+              "hull: closed genus 0 over every distinct point")
         original = vtk_to_numpy(measured.GetPointData().GetArray("OriginalIndex"))
-        check(np.array_equal(original, np.arange(POINTS)),
+        check(np.array_equal(original, np.arange(TOTAL)),
               "points gathered in process order (the serial order)")
 
 check(len(tested) >= 5, "every filter proxy tested (%s)" % ", ".join(tested))
+
+# ------------------------------------------------------------------------------------------
+# ReconstructionQuality on a mesh split in pieces that repeat their border vertices.
+TORUS_SCRIPT = """
+import numpy as np
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray
+from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray
+from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
+info = self.GetOutputInformation(0)
+piece = info.Get(sddp.UPDATE_PIECE_NUMBER())
+pieces = info.Get(sddp.UPDATE_NUMBER_OF_PIECES())
+NU, NV = 24, 12
+begin, end = piece * NU // pieces, (piece + 1) * NU // pieces
+# Rows begin..end, row end a copy of the next band's first row (rows wrap: NU is row 0); one
+# piece wraps by index instead, with no copy.
+rows = list(range(begin, end + (1 if pieces > 1 else 0)))
+u = 2 * np.pi * (np.array(rows) % NU) / NU
+v = 2 * np.pi * np.arange(NV) / NV
+uu, vv = np.meshgrid(u, v, indexing="ij")
+xyz = np.stack([(2 + np.cos(vv)) * np.cos(uu), (2 + np.cos(vv)) * np.sin(uu), np.sin(vv)],
+               axis=-1).reshape(-1, 3)
+local = {row: i for i, row in enumerate(rows)}
+def pid(row, j):
+    row = row if row in local else row % NU
+    return local[row] * NV + j % NV
+triangles = []
+for row in range(begin, end):
+    for j in range(NV):
+        a, b, c, d = pid(row, j), pid(row + 1, j), pid(row + 1, j + 1), pid(row, j + 1)
+        triangles += [(a, b, c), (a, c, d)]
+triangles = np.array(triangles, dtype=np.int64)
+cells = vtkCellArray()
+cells.SetData(numpy_to_vtkIdTypeArray(np.arange(0, 3 * len(triangles) + 1, 3), deep=True),
+              numpy_to_vtkIdTypeArray(triangles.ravel(), deep=True))
+points = vtkPoints()
+points.SetData(numpy_to_vtk(np.ascontiguousarray(xyz), deep=True))
+out = self.GetOutput()
+out.SetPoints(points)
+out.SetPolys(cells)
+"""
+torus_source = simple.ProgrammableSource(OutputDataSetType="vtkPolyData")
+torus_source.Script = TORUS_SCRIPT
+torus_quality = globals()["ReconstructionQuality"](Input=torus_source)
+torus_quality.UpdatePipeline()
+torus = servermanager.Fetch(torus_quality)
+
+
+def serial_torus():
+    from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
+    from vtkmodules.vtkFiltersPython import vtkPythonAlgorithm  # noqa: F401 (not needed)
+    import pointcloudsurface
+
+    class Info:  # what the script reads from its output information: one piece of one
+        def Get(self, key):
+            return 1 if key is vtkStreamingDemandDrivenPipeline.UPDATE_NUMBER_OF_PIECES() else 0
+
+    class Self:
+        def __init__(self):
+            self.output = vtkPolyData()
+
+        def GetOutputInformation(self, port):
+            return Info()
+
+        def GetOutput(self):
+            return self.output
+
+    holder = Self()
+    exec(TORUS_SCRIPT, {"self": holder})
+
+    def run():
+        quality = pointcloudsurface.vtkReconstructionQuality()
+        quality.SetInputData(holder.output)
+        quality.Update()
+        result = vtkPolyData()
+        result.ShallowCopy(quality.GetOutput())
+        return result
+
+    return serial(run)
+
+
+torus_reference = serial_torus()
+values, expected_values = field_values(torus), field_values(torus_reference)
+print("processes %d: split torus mesh: %d points, %d triangles, %d boundary edges, genus %g "
+      "(serial %d points, genus %g)" % (processes, torus.GetNumberOfPoints(),
+                                        values["NumberOfTriangles"],
+                                        values["NumberOfBoundaryEdges"], values["Genus"],
+                                        torus_reference.GetNumberOfPoints(),
+                                        expected_values["Genus"]))
+check(torus_reference.GetNumberOfPoints() == 288 and expected_values["NumberOfTriangles"] == 576
+      and expected_values["NumberOfBoundaryEdges"] == 0 and expected_values["Genus"] == 1
+      and expected_values["EulerCharacteristic"] == 0, "serial torus: closed, genus 1")
+check(torus.GetNumberOfPoints() == 288, "split torus: the border copies merged (%d points)"
+      % torus.GetNumberOfPoints())
+differing = [name for name in sorted(expected_values)
+             if not same_value(values.get(name), expected_values[name])]
+check(not differing, "split torus: quality as serial; differ: %s" % ", ".join(
+    "%s %r (serial %r)" % (n, values.get(n), expected_values[n]) for n in differing))
+tested.append("ReconstructionQuality on a split mesh")
 print("processes %d: quality as serial (%s)" % (processes, ", ".join(tested)))

@@ -698,6 +698,19 @@ def cpu_model():
     return platform.processor()
 
 
+def source_state():
+    """The commit measured, and whether the working tree differed from it."""
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    try:
+        commit = subprocess.run(["git", "-C", root, "rev-parse", "--short", "HEAD"], check=True,
+                                capture_output=True, text=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", root, "status", "--porcelain", "--untracked-files=no"],
+                               check=True, capture_output=True, text=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "not a git checkout"
+    return "commit %s%s" % (commit, " with local changes" if dirty else "")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--bench-bin", default="build-bench/bin")
@@ -716,9 +729,11 @@ def main():
     os.makedirs(args.output_dir, exist_ok=True)
     rng = np.random.default_rng(2026)
     lines = ["# Reconstruction benchmark\n",
-             "Command: `Benchmarks/run_reconstruction_benchmark.sh%s`. Date %s; %s, %d cores; %s.\n"
-             % (" --quick" if args.quick else "", datetime.date.today().isoformat(), cpu_model(),
-                os.cpu_count(), platform.platform())]
+             "Command: `Benchmarks/run_reconstruction_benchmark.sh%s`. Date %s; %s, %d cores; %s; "
+             "source %s; load average %.1f at the start.\n"
+             % (" ".join([""] + [a for a in sys.argv[1:] if a in ("--quick", "--skip-scaling")]),
+                datetime.date.today().isoformat(), cpu_model(), os.cpu_count(), platform.platform(),
+                source_state(), os.getloadavg()[0])]
     with tempfile.TemporaryDirectory(prefix="pcs-bench-") as workdir:
         runner = Runner(args, workdir)
         lines.append("Methods: %s. Not built yet (skipped): %s.\n" % (

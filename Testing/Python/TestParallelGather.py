@@ -303,10 +303,9 @@ torus = servermanager.Fetch(torus_quality)
 
 def serial_torus():
     from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
-    from vtkmodules.vtkFiltersPython import vtkPythonAlgorithm  # noqa: F401 (not needed)
     import pointcloudsurface
 
-    class Info:  # what the script reads from its output information: one piece of one
+    class Info:  # what the script reads from its output information: piece 0 of 1
         def Get(self, key):
             return 1 if key is vtkStreamingDemandDrivenPipeline.UPDATE_NUMBER_OF_PIECES() else 0
 

@@ -7,8 +7,8 @@ the last piece), with their normals (point array Normals) and their index in the
 PerimeterPeelSurface, LocalOptimumGrowth, CDTAdvancingFront, GreedySurfaceTriangulation, and any
 proxy added there later) runs on the split cloud with its default properties, followed by a
 ReconstructionQuality proxy; the fetched mesh and measures are compared with the serial answer
-computed in this script: the plain VTK class of the filter (the Python package), same
-parameters, run in-process on the whole cloud with a single-process controller, then measured
+computed in this script: the plain VTK class of the filter (the Python package), given the
+proxy's property values through the same setters, run in-process on the whole cloud with a single-process controller, then measured
 by vtkReconstructionQuality. They must agree exactly, whatever N is:
 
 - the number of points passed through and the triangles themselves, as oriented triples of
@@ -48,7 +48,7 @@ POINTS = 2000
 DUPLICATES = 20  # exact copies of the first points, at the end (in the last piece)
 TOTAL = POINTS + DUPLICATES
 SEED = 17
-# Properties set on both sides besides the defaults, by proxy name.
+# Proxy properties changed from their defaults (the serial reference gets every proxy value).
 PROPERTIES = {"IncrementalDelaunay3D": {"GenerateTetrahedra": 0}}
 TIMINGS = {"Seconds", "PointsPerSecond"}
 
@@ -123,13 +123,14 @@ def serial(function):
 
 
 def serial_mesh(class_name, properties, cloud):
-    """The plain VTK filter and vtkReconstructionQuality on ``cloud``, serially."""
+    """The plain VTK filter, its setters called with ``properties`` ({setter: value}), and
+    vtkReconstructionQuality on ``cloud``, serially."""
     import pointcloudsurface
 
     def run():
         algorithm = getattr(pointcloudsurface, class_name)()
-        for name, value in properties.items():
-            getattr(algorithm, "Set" + name)(value)
+        for setter, value in properties.items():
+            getattr(algorithm, setter)(value)
         algorithm.SetInputData(cloud)
         quality = pointcloudsurface.vtkReconstructionQuality()
         quality.SetInputConnection(algorithm.GetOutputPort(0))
@@ -194,17 +195,33 @@ first_piece = make_polydata(whole[:TOTAL // processes])
 # Every filter proxy of the plugin's XML with its class (a new proxy is tested here too).
 xml_path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Plugin",
                         "PointCloudSurface.xml")
-FILTERS = [(element.get("name"), element.get("class"))
+FILTERS = [(element.get("name"), element.get("class"), element)
            for element in ElementTree.parse(xml_path).iter("SourceProxy")
            if element.get("name") != "ReconstructionQuality"]
+
+
+def proxy_settings(proxy, element):
+    """{setter: value} of the proxy's one-number properties, as ParaView sends them to the
+    class (so the serial reference runs with the proxy's values, whatever its defaults)."""
+    settings = {}
+    for prop in element:
+        if prop.tag in ("IntVectorProperty", "DoubleVectorProperty") \
+                and prop.get("number_of_elements") == "1" and prop.get("command"):
+            settings[prop.get("command")] = proxy.SMProxy.GetProperty(
+                prop.get("name")).GetElement(0)
+    return settings
+
 tested = []
-for proxy_name, class_name in FILTERS:
+for proxy_name, class_name, element in FILTERS:
     check(proxy_name in globals(), "LoadPlugin defines %s" % proxy_name)
-    properties = PROPERTIES.get(proxy_name, {})
     tested.append(proxy_name)
     proxy = globals()[proxy_name](Input=cloud_source)
-    for name, value in properties.items():
+    for name, value in PROPERTIES.get(proxy_name, {}).items():
         setattr(proxy, name, value)
+    properties = proxy_settings(proxy, element)
+    check(len(properties) > 0, "%s: its properties found in the XML" % proxy_name)
+    print("processes %d: %s: %s" % (processes, proxy_name, ", ".join(
+        "%s(%g)" % item for item in sorted(properties.items()))))
     # The reference is the split cloud itself: ReconstructionQuality gathers both inputs.
     quality = globals()["ReconstructionQuality"](Input=proxy, Reference=cloud_source)
     quality.UpdatePipeline()

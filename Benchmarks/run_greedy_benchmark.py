@@ -1,0 +1,103 @@
+"""vtkGreedySurfaceTriangulation against CGAL's Advancing Front Surface Reconstruction (issue 7).
+
+Each input is given to pcsBenchGreedySurfaceTriangulation once per method, each run in its own
+process, on the same cloud (the executable's damage and noise use fixed seeds): "ours" (the
+filter's defaults) and "cgal" (CGAL::advancing_front_surface_reconstruction, defaults). Inputs
+are the vertices of meshes of CGAL's demo data, clean, damaged (two regions removed, three
+thinned tenfold: the reconstruction benchmark's definition) and noisy (Gaussian noise of 1/4 of
+the mean spacing); the reference surface is the undamaged mesh.
+
+Printed per input and method: points, time, points/s, triangles, unused points, boundary edges /
+loops, non-manifold edges / vertices, components, genus, Hausdorff / spacing, completeness (share
+of the reference vertices within 2 mean spacings of the mesh); and the criteria of issue 7 on
+the damaged and noisy inputs: 0 non-manifold edges, boundary edges <= 10 % of CGAL's,
+completeness >= 99 %.
+
+Usage:
+  /usr/bin/python3 Benchmarks/run_greedy_benchmark.py --bench-bin build/bin \
+      --data <dir with meshes/*.off> [--seeds 7 8 9] [--markdown table.md] \
+      meshes/bunny00.off meshes/armadillo.off ...
+"""
+import argparse
+import datetime
+import json
+import os
+import platform
+import subprocess
+
+
+def run(binary, method, spec):
+    out = subprocess.run([binary, method, spec], check=True, capture_output=True, text=True)
+    line = [l for l in out.stdout.splitlines() if l.startswith("{")][-1]
+    return json.loads(line)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--bench-bin", default="build/bin")
+    parser.add_argument("--data", default="build/Testing/CGALData/data")
+    parser.add_argument("--seeds", type=int, nargs="+", default=[7])
+    parser.add_argument("--markdown")
+    parser.add_argument("--methods", nargs="+", default=["ours", "cgal"])
+    parser.add_argument("--variants", nargs="+", default=["clean", "damaged", "noisy"])
+    parser.add_argument("inputs", nargs="+")
+    args = parser.parse_args()
+    binary = os.path.join(args.bench_bin, "pcsBenchGreedySurfaceTriangulation")
+    header = ("| input | points | method | time s | points/s | triangles | unused | boundary "
+              "edges / loops | non-manifold edges / vertices | components | genus | Hausdorff | "
+              "completeness (2 s) | criteria |")
+    lines = [header, "|" + "---|" * 14]
+    print(header)
+    failures = 0
+    for rel in args.inputs:
+        path = rel if os.path.isabs(rel) else os.path.join(args.data, rel)
+        name = os.path.basename(rel)
+        for variant in args.variants:
+            seeds = [None] if variant == "clean" else args.seeds
+            for seed in seeds:
+                if variant == "clean":
+                    spec, label = path, name
+                elif variant == "damaged":
+                    spec, label = "damaged=%d:%s" % (seed, path), "%s damaged (seed %d)" % (name, seed)
+                else:
+                    spec = "noisy:damaged=%d:%s" % (seed, path) if variant == "noisy-damaged" \
+                        else "noisy:%s" % path
+                    label = "%s %s" % (name, variant) + (" (seed %d)" % seed
+                                                         if variant == "noisy-damaged" else "")
+                    if variant == "noisy" and seed != seeds[0]:
+                        continue
+                results = {m: run(binary, m, spec) for m in args.methods}
+                for m in args.methods:
+                    r = results[m]
+                    verdict = ""
+                    if m == "ours" and variant != "clean" and "cgal" in results:
+                        c = results["cgal"]
+                        ok = (r["non_manifold_edges"] == 0
+                              and r["boundary_edges"] <= 0.1 * c["boundary_edges"]
+                              and r["completeness_2s"] >= 0.99)
+                        failures += 0 if ok else 1
+                        verdict = "ok" if ok else "FAILS"
+                    row = ("| %s | %d | %s | %.3f | %.0f | %d | %d | %d / %d | %d / %d | %d | %s | "
+                           "%.2f | %.4f | %s |" % (
+                               label, r["points"], m, r["seconds"], r["points_per_second"],
+                               r["triangles"], r["unused"], r["boundary_edges"],
+                               r["boundary_loops"], r["non_manifold_edges"],
+                               r["non_manifold_vertices"], r["components"],
+                               r["genus"] if r["genus"] >= 0 else "-",
+                               r["hausdorff_over_spacing"], r["completeness_2s"], verdict))
+                    print(row, flush=True)
+                    lines.append(row)
+    if args.markdown:
+        load = os.getloadavg()
+        with open(args.markdown, "w") as f:
+            f.write("# vtkGreedySurfaceTriangulation against CGAL's advancing front\n\n")
+            f.write("Command: `/usr/bin/python3 Benchmarks/run_greedy_benchmark.py %s`. Date %s; "
+                    "%s; load average at the end %.1f.\n\n" % (
+                        " ".join(os.sys.argv[1:]), datetime.date.today().isoformat(),
+                        platform.processor() or platform.machine(), load[0]))
+            f.write("\n".join(lines) + "\n")
+    print("criteria failures:", failures)
+
+
+if __name__ == "__main__":
+    main()

@@ -10,6 +10,14 @@ triangles' vertex set, with used points > 0 and never both copies of a duplicate
 ReconstructionQuality proxy then measures each mesh: its triangle and used-point counts must be
 the ones counted here.
 
+The XML against the classes (the Python package's wrapped classes): every proxy has long and
+short help and the menu category "Point Cloud Surface", every property has documentation; each
+one-number property's default is the class's default (doubles to 1e-9 relative: the XML writes
+decimals), its range domain is the class's clamp range (no max = VTK_DOUBLE_MAX), a clamped
+parameter has a range, boolean or enumeration domain, an enumeration lists exactly the clamp
+range; and every parameter of the class (its own Set/Get pairs, as the command line finds them)
+has a property.
+
 Usage: pvpython TestPluginLoad.py <path to PointCloudSurface.so>
 """
 import os
@@ -24,6 +32,7 @@ def check(condition, message):
     if not condition:
         print("FAILED:", message)
         sys.exit(1)
+    return True
 
 
 LoadPlugin(sys.argv[1], ns=globals())
@@ -143,4 +152,68 @@ for name in proxies:
         fd.GetArray("NumberOfNonManifoldEdges").GetTuple1(0)))
     ran.append(name)
 check(len(ran) == len(proxies) - 1, "every reconstruction proxy ran")
+
+# ------------------------------------------------------------------------------------------
+# The XML against the classes.
+import pointcloudsurface  # noqa: E402
+from pointcloudsurface.methods import discover_parameters  # noqa: E402
+
+
+def close(a, b):
+    return a == b or abs(a - b) <= 1e-9 * (abs(a) + abs(b))
+
+
+for element in ElementTree.parse(xml_path).iter("SourceProxy"):
+    name, class_name = element.get("name"), element.get("class")
+    cls = getattr(pointcloudsurface, class_name, None)
+    if not check(cls is not None, "%s: class %s in the package" % (name, class_name)):
+        continue
+    instance = cls()
+    doc = element.find("Documentation")
+    check(doc is not None and doc.get("long_help") and doc.get("short_help"),
+          "%s: long_help and short_help" % name)
+    menu = element.find("Hints/ShowInMenu")
+    check(menu is not None and menu.get("category") == "Point Cloud Surface",
+          "%s: in the Point Cloud Surface menu" % name)
+    exposed = set()
+    for prop in element:
+        if not prop.tag.endswith("Property"):
+            continue
+        label = "%s.%s" % (name, prop.get("name"))
+        text = prop.find("Documentation")
+        check(text is not None and (text.text or "").strip(), "%s: documented" % label)
+        command = prop.get("command") or ""
+        if (prop.tag not in ("IntVectorProperty", "DoubleVectorProperty")
+                or prop.get("number_of_elements") != "1" or not command.startswith("Set")):
+            continue
+        parameter = command[3:]
+        exposed.add(parameter)
+        default = float(prop.get("default_values"))
+        actual = getattr(instance, "Get" + parameter)()
+        check(close(float(actual), default), "%s: XML default %r = class default %r"
+              % (label, default, actual))
+        clamped = hasattr(instance, "Get%sMinValue" % parameter)
+        low = getattr(instance, "Get%sMinValue" % parameter)() if clamped else None
+        high = getattr(instance, "Get%sMaxValue" % parameter)() if clamped else None
+        domain = prop.find("IntRangeDomain")
+        domain = domain if domain is not None else prop.find("DoubleRangeDomain")
+        enumeration = prop.find("EnumerationDomain")
+        if domain is not None:
+            if check(clamped, "%s: a range in the XML and a clamp in the class" % label):
+                xml_low = float(domain.get("min")) if domain.get("min") is not None else None
+                xml_high = float(domain.get("max")) if domain.get("max") is not None else None
+                check(xml_low == low, "%s: XML min %r = clamp min %r" % (label, xml_low, low))
+                check(xml_high == high if xml_high is not None else high >= 1e299,
+                      "%s: XML max %r = clamp max %r" % (label, xml_high, high))
+        elif clamped:
+            check(prop.find("BooleanDomain") is not None or enumeration is not None,
+                  "%s: the class clamps it, the XML has no range domain" % label)
+        if enumeration is not None and clamped:
+            values = sorted(int(entry.get("value")) for entry in enumeration.iter("Entry"))
+            check(values == list(range(int(low), int(high) + 1)),
+                  "%s: enumeration %s = clamp range [%s, %s]" % (label, values, low, high))
+    for parameter in discover_parameters(cls):
+        check(parameter.name in exposed, "%s: class parameter %s has a property"
+              % (name, parameter.name))
+    print("%s: %d properties match %s" % (name, len(exposed), class_name))
 print("ok")

@@ -439,7 +439,9 @@ public:
     {
       low[k] = this->Cell(x, k, -extent);
       high[k] = this->Cell(x, k, extent);
-      cells *= high[k] - low[k] + 1;
+      // (Spans reach 2e15 on far-apart points: multiplied only while the product stays small.)
+      const int64_t span = high[k] - low[k] + 1;
+      cells = span <= 0 || span > 343 || cells > 343 ? 344 : cells * span;
     }
     if (cells > 343 || cells <= 0)
     {
@@ -485,7 +487,9 @@ private:
   }
   static int64_t Key(int64_t i, int64_t j, int64_t k)
   {
-    return (i * 73856093) ^ (j * 19349663) ^ (k * 83492791);
+    // Unsigned products: the cell indices reach 1e15 (signed overflow would be undefined).
+    return static_cast<int64_t>((static_cast<uint64_t>(i) * 73856093u) ^
+      (static_cast<uint64_t>(j) * 19349663u) ^ (static_cast<uint64_t>(k) * 83492791u));
   }
 
   double Origin[3] = { 0, 0, 0 };

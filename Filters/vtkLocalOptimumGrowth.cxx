@@ -1187,6 +1187,16 @@ bool Grower::FillHole(const std::vector<Id>& frontLoop)
   {
     return false;
   }
+  // No hole triangle may be a mesh triangle reversed (the loop of a lone triangle would be
+  // "closed" by the same triangle with the other orientation: two coincident triangles).
+  for (size_t t = 0; t + 2 < result.Triangles.size(); t += 3)
+  {
+    const Id* v = &result.Triangles[t];
+    if (this->Mesh.OppositeVertex(v[1], v[0]) == v[2])
+    {
+      return false;
+    }
+  }
   std::vector<int64_t> added;
   bool ok = true;
   for (size_t t = 0; ok && t + 2 < result.Triangles.size(); t += 3)

@@ -3,6 +3,7 @@
 # configures ./build (Ninja, Release) if it is not configured yet and builds it.
 # Idempotent: a second run installs nothing and only rebuilds what changed.
 #   BUILD_DIR=other ./scripts/setup.sh    builds in ./other instead
+#   SETUP_PACKAGES_ONLY=1 ./scripts/setup.sh    only the packages
 set -eu
 cd "$(dirname "$0")/.."
 
@@ -35,6 +36,8 @@ if [ -n "$missing" ]; then
 else
   echo "setup: all packages present"
 fi
+# SETUP_PACKAGES_ONLY=1: stop here (scripts/fuzz.sh builds its own ./build-fuzz only).
+[ "${SETUP_PACKAGES_ONLY:-0}" = 1 ] && exit 0
 
 BUILD_DIR="${BUILD_DIR:-build}"
 if [ ! -f "$BUILD_DIR/build.ninja" ]; then

@@ -18,6 +18,11 @@ int main(int argc, char* argv[])
   for (int i = 1; i < argc; ++i)
   {
     std::vector<fs::path> paths;
+    if (!fs::exists(argv[i]))
+    {
+      std::fprintf(stderr, "no such file or directory: %s\n", argv[i]);
+      return 1;
+    }
     if (fs::is_directory(argv[i]))
     {
       for (const auto& entry : fs::directory_iterator(argv[i]))

@@ -22,11 +22,15 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <queue>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -35,7 +39,7 @@ vtkStandardNewMacro(vtkPerimeterPeelSurface);
 namespace
 {
 // The solid being peeled: the finite tetrahedra of a Delaunay tetrahedralization, each inside or
-// removed, with the number of inside tetrahedra at each vertex.
+// outside (removed, or infinite), with the number of inside and outside cells around each vertex.
 class PeelSolid
 {
 public:
@@ -47,14 +51,17 @@ public:
     const int64_t cells = dt.GetNumberOfCells();
     this->Inside.assign(cells, 0);
     this->Count.assign(numberOfPoints, 0);
+    this->OutsideCount.assign(numberOfPoints, 0);
     for (int64_t c = 0; c < cells; ++c)
     {
-      if (!dt.IsInfinite(c))
+      const bool finite = !dt.IsInfinite(c);
+      this->Inside[c] = finite ? 1 : 0;
+      for (int k = 0; k < 4; ++k)
       {
-        this->Inside[c] = 1;
-        for (int k = 0; k < 4; ++k)
+        const int32_t v = dt.Vertex(c, k);
+        if (v >= 0)
         {
-          ++this->Count[dt.Vertex(c, k)];
+          ++(finite ? this->Count : this->OutsideCount)[v];
         }
       }
     }
@@ -66,6 +73,60 @@ public:
   bool IsExterior(int64_t c, int j) const
   {
     return this->Inside[c] && !this->Inside[this->DT.Neighbor(c, j)];
+  }
+
+  // Bit j set when facet j of c is exterior.
+  int ExteriorMask(int64_t c) const
+  {
+    int mask = 0;
+    for (int j = 0; j < 4; ++j)
+    {
+      mask |= this->IsExterior(c, j) ? 1 << j : 0;
+    }
+    return mask;
+  }
+
+  // Whether vertex v is on the boundary of the solid (has inside and outside cells around it).
+  bool OnBoundary(int32_t v) const { return this->Count[v] > 0 && this->OutsideCount[v] > 0; }
+
+  // Visit the cells around the edge of c joining its slots i and j (c first), walking across the
+  // facets that contain the edge, until `visit` returns true (then returns true).
+  template <typename Visitor>
+  bool AroundEdge(int64_t c, int i, int j, Visitor&& visit) const
+  {
+    int cross = -1, keep = -1;
+    for (int k = 0; k < 4; ++k)
+    {
+      if (k != i && k != j)
+      {
+        (cross < 0 ? cross : keep) = k;
+      }
+    }
+    int32_t kept = this->DT.Vertex(c, keep);
+    int64_t cell = c;
+    do
+    {
+      if (visit(cell))
+      {
+        return true;
+      }
+      const int64_t next = this->DT.Neighbor(cell, cross);
+      const int32_t entering = this->DT.Vertex(next, this->DT.MirrorIndex(cell, cross));
+      cross = 0;
+      while (this->DT.Vertex(next, cross) != kept)
+      {
+        ++cross;
+      }
+      kept = entering;
+      cell = next;
+    } while (cell != c);
+    return false;
+  }
+
+  // Whether a cell around the edge of c joining its slots i and j, other than c, is outside.
+  bool EdgeTouchesOutside(int64_t c, int i, int j) const
+  {
+    return this->AroundEdge(c, i, j, [&](int64_t cell) { return !this->IsInside(cell); });
   }
 
   // The measure of facet j of c (perimeter, area or circumradius of its triangle).
@@ -106,6 +167,34 @@ public:
                            : std::numeric_limits<double>::infinity();
   }
 
+  // The largest measure of the exterior facets of c (-1 when it has none).
+  double LargestExteriorFacet(int64_t c) const
+  {
+    double largest = -1.0;
+    for (int j = 0; j < 4; ++j)
+    {
+      if (this->IsExterior(c, j))
+      {
+        largest = std::max(largest, this->FacetMeasure(c, j));
+      }
+    }
+    return largest;
+  }
+
+  // The largest measure of the facets of c that are not exterior (-1 when it has none).
+  double LargestHiddenFacet(int64_t c) const
+  {
+    double largest = -1.0;
+    for (int j = 0; j < 4; ++j)
+    {
+      if (!this->IsExterior(c, j))
+      {
+        largest = std::max(largest, this->FacetMeasure(c, j));
+      }
+    }
+    return largest;
+  }
+
   // Whether removing c would leave one of its vertices in no inside tetrahedron.
   bool Orphans(int64_t c) const
   {
@@ -119,6 +208,32 @@ public:
     return false;
   }
 
+  // Whether removing the exposed inside cell c keeps the boundary a 2-manifold, given that it is
+  // one now (the sculpting rules of Boissonnat 1984): with one exterior facet, the opposite vertex
+  // must not be on the boundary; with two, the edge joining their opposite vertices must not be on
+  // it; with three or four, a vertex would be left in no tetrahedron.
+  bool KeepsManifold(int64_t c) const
+  {
+    const int mask = this->ExteriorMask(c);
+    int slots[4], k = 0;
+    for (int j = 0; j < 4; ++j)
+    {
+      if (mask & (1 << j))
+      {
+        slots[k++] = j;
+      }
+    }
+    if (k == 1)
+    {
+      return !this->OnBoundary(this->DT.Vertex(c, slots[0]));
+    }
+    if (k == 2)
+    {
+      return !this->EdgeTouchesOutside(c, slots[0], slots[1]);
+    }
+    return false;
+  }
+
   void SetInside(int64_t c, bool inside)
   {
     if (this->IsInside(c) == inside)
@@ -128,7 +243,9 @@ public:
     this->Inside[c] = inside ? 1 : 0;
     for (int k = 0; k < 4; ++k)
     {
-      this->Count[this->DT.Vertex(c, k)] += inside ? 1 : -1;
+      const int32_t v = this->DT.Vertex(c, k);
+      this->Count[v] += inside ? 1 : -1;
+      this->OutsideCount[v] += inside ? -1 : 1;
     }
   }
 
@@ -136,12 +253,326 @@ public:
   const double* XYZ;
   int Measure;
   std::vector<uint8_t> Inside;
-  std::vector<int32_t> Count;
+  std::vector<int32_t> Count;        // inside cells around each vertex
+  std::vector<int32_t> OutsideCount; // outside cells (removed or infinite) around each vertex
 };
 
-// The exterior facets as oriented triangles (outward from the solid). In a positively oriented
-// cell (v0, v1, v2, v3), the increasing-slot triple without vertex j faces away from v_j when j
-// is odd and towards it when j is even.
+// Group removals that the one-cell sculpting rules cannot make. Removing one cell from a solid
+// whose boundary is a manifold, so that it stays one, never changes the solid's topology: a handle
+// (the hole of a torus) only opens when a whole layer of cells goes at once, which the one-cell
+// rules refuse at every step (each step alone pinches the boundary). A group removal starts at a
+// refused cell c that shows the outside a facet over the threshold and grows, largest facet first,
+// across the facets over the threshold into the cells behind them (the paper's rule applied to the
+// group), until the boundary is a manifold again; it never enters a cell that shows the outside a
+// facet under the threshold (that facet is already part of the surface), and it gives up, restoring
+// the group, when a point would be left in no cell, when nothing is left to enter, after
+// MaximumGroup cells, or when the group would split a component off. Cells that a failed group
+// visited are not tried again at this threshold (a later group reaching them fails too), so a
+// threshold costs O(cells) at most.
+class GroupPeeler
+{
+public:
+  GroupPeeler(PeelSolid& solid, int64_t maximumGroup)
+    : Solid(solid)
+    , DT(solid.DT)
+    , MaximumGroup(maximumGroup)
+  {
+    this->Stamp.assign(this->DT.GetNumberOfCells(), 0);
+    this->Failed.assign(this->DT.GetNumberOfCells(), 0);
+    this->Bad.assign(solid.Count.size(), 0);
+  }
+
+  // Forget the failed groups (a new threshold).
+  void Reset() { std::fill(this->Failed.begin(), this->Failed.end(), 0); }
+
+  bool HasFailed(int64_t c) const { return this->Failed[c] != 0; }
+
+  // Try the group that starts at cell c; on success the cells are removed and listed in Group.
+  bool Try(int64_t c, double threshold)
+  {
+    this->Group.clear();
+    this->BadCount = 0;
+    std::priority_queue<std::pair<double, int64_t>> grow;
+    bool ok = this->Add(c, threshold, grow);
+    while (ok && this->BadCount > 0)
+    {
+      if (grow.empty() || static_cast<int64_t>(this->Group.size()) >= this->MaximumGroup)
+      {
+        ok = false;
+        break;
+      }
+      const int64_t n = grow.top().second;
+      grow.pop();
+      if (!this->Solid.IsInside(n) || this->ShowsSmallFacet(n, threshold))
+      {
+        continue;
+      }
+      if (this->Failed[n])
+      {
+        ok = false;
+        break;
+      }
+      ok = this->Add(n, threshold, grow);
+    }
+    if (ok)
+    {
+      // Refuse a group that splits a component off (the Euler characteristic of the boundary
+      // grows): only handles open (it drops) or the topology stays (it does not change).
+      const int64_t after = this->BoundaryEuler();
+      for (int64_t g : this->Group)
+      {
+        this->Solid.SetInside(g, true);
+      }
+      const int64_t before = this->BoundaryEuler();
+      for (int64_t g : this->Group)
+      {
+        this->Solid.SetInside(g, false);
+      }
+      ok = after <= before;
+    }
+    if (!ok)
+    {
+      for (int64_t g : this->Group)
+      {
+        this->Solid.SetInside(g, true);
+        this->Failed[g] = 1;
+      }
+      for (int64_t g : this->Group)
+      {
+        for (int k = 0; k < 4; ++k)
+        {
+          this->Bad[this->DT.Vertex(g, k)] = 0;
+        }
+      }
+      this->Group.clear();
+    }
+    return ok;
+  }
+
+  std::vector<int64_t> Group;
+
+private:
+  // V - E + F of the boundary simplices among the faces of the group's cells (the rest of the
+  // boundary is the same before and after the group goes).
+  int64_t BoundaryEuler()
+  {
+    int64_t euler = 0;
+    this->Edges.clear();
+    this->Vertices.clear();
+    for (int64_t c : this->Group)
+    {
+      for (int j = 0; j < 4; ++j)
+      {
+        const int64_t n = this->DT.Neighbor(c, j);
+        // (A facet between two group cells is never on the boundary: both have one state.)
+        if (this->Solid.IsInside(c) != this->Solid.IsInside(n))
+        {
+          ++euler;
+        }
+        const int32_t v = this->DT.Vertex(c, j);
+        this->Vertices.push_back(v);
+        for (int k = j + 1; k < 4; ++k)
+        {
+          const int32_t w = this->DT.Vertex(c, k);
+          this->Edges.push_back({ std::min(v, w), std::max(v, w), c, j * 4 + k });
+        }
+      }
+    }
+    std::sort(this->Vertices.begin(), this->Vertices.end());
+    this->Vertices.erase(
+      std::unique(this->Vertices.begin(), this->Vertices.end()), this->Vertices.end());
+    for (int32_t v : this->Vertices)
+    {
+      euler += this->Solid.OnBoundary(v) ? 1 : 0;
+    }
+    std::sort(this->Edges.begin(), this->Edges.end(),
+      [](const GroupEdge& a, const GroupEdge& b)
+      { return std::tie(a.V, a.W) < std::tie(b.V, b.W); });
+    for (size_t i = 0; i < this->Edges.size(); ++i)
+    {
+      const GroupEdge& e = this->Edges[i];
+      if (i > 0 && this->Edges[i - 1].V == e.V && this->Edges[i - 1].W == e.W)
+      {
+        continue;
+      }
+      bool inside = false, outside = false;
+      this->Solid.AroundEdge(e.Cell, e.Slots / 4, e.Slots % 4,
+        [&](int64_t cell)
+        {
+          (this->Solid.IsInside(cell) ? inside : outside) = true;
+          return inside && outside;
+        });
+      euler -= inside && outside ? 1 : 0;
+    }
+    return euler;
+  }
+
+  // Whether c shows the outside a facet whose measure is at most the threshold.
+  bool ShowsSmallFacet(int64_t c, double threshold) const
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      if (this->Solid.IsExterior(c, j) && this->Solid.FacetMeasure(c, j) <= threshold)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // Remove c (tentatively) and queue the cells behind its facets over the threshold. Returns false
+  // when a vertex of c is left in no cell.
+  bool Add(int64_t c, double threshold, std::priority_queue<std::pair<double, int64_t>>& grow)
+  {
+    this->Solid.SetInside(c, false);
+    this->Group.push_back(c);
+    for (int k = 0; k < 4; ++k)
+    {
+      const int32_t v = this->DT.Vertex(c, k);
+      if (this->Solid.Count[v] == 0)
+      {
+        return false;
+      }
+      const bool bad = !this->ManifoldAt(v, c);
+      this->BadCount += (bad ? 1 : 0) - this->Bad[v];
+      this->Bad[v] = bad ? 1 : 0;
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+      const int64_t n = this->DT.Neighbor(c, k);
+      if (this->Solid.IsInside(n))
+      {
+        const double m = this->Solid.FacetMeasure(c, k);
+        if (m > threshold)
+        {
+          grow.emplace(m, n);
+        }
+      }
+    }
+    return true;
+  }
+
+  // Whether the boundary is a 2-manifold at vertex v (a cell of which is `start`): in the link of
+  // v, the inside cells form one component, the outside cells one component, and around each edge
+  // (v, w) the state changes at most twice (at most two boundary triangles on the edge).
+  bool ManifoldAt(int32_t v, int64_t start)
+  {
+    ++this->Generation;
+    this->Star.clear();
+    this->Star.push_back(start);
+    this->Stamp[start] = this->Generation;
+    for (size_t i = 0; i < this->Star.size(); ++i)
+    {
+      const int64_t c = this->Star[i];
+      for (int j = 0; j < 4; ++j)
+      {
+        if (this->DT.Vertex(c, j) == v)
+        {
+          continue;
+        }
+        const int64_t n = this->DT.Neighbor(c, j);
+        if (this->Stamp[n] != this->Generation)
+        {
+          this->Stamp[n] = this->Generation;
+          this->Star.push_back(n);
+        }
+      }
+    }
+    // Components of each state: flood fill through the facets that contain v.
+    int components[2] = { 0, 0 };
+    ++this->Generation;
+    for (int64_t seed : this->Star)
+    {
+      if (this->Stamp[seed] == this->Generation)
+      {
+        continue;
+      }
+      const bool inside = this->Solid.IsInside(seed);
+      if (++components[inside ? 1 : 0] > 1)
+      {
+        return false;
+      }
+      this->Fill.clear();
+      this->Fill.push_back(seed);
+      this->Stamp[seed] = this->Generation;
+      while (!this->Fill.empty())
+      {
+        const int64_t c = this->Fill.back();
+        this->Fill.pop_back();
+        for (int j = 0; j < 4; ++j)
+        {
+          const int64_t n = this->DT.Neighbor(c, j);
+          if (this->DT.Vertex(c, j) != v && this->Stamp[n] != this->Generation &&
+            this->Solid.IsInside(n) == inside)
+          {
+            this->Stamp[n] = this->Generation;
+            this->Fill.push_back(n);
+          }
+        }
+      }
+    }
+    if (components[0] == 0 || components[1] == 0)
+    {
+      return true; // v inside the solid (or in no cell: checked by the caller)
+    }
+    // Boundary triangles per edge (v, w), each counted from its inside cell.
+    this->EdgeEnds.clear();
+    for (int64_t c : this->Star)
+    {
+      if (!this->Solid.IsInside(c))
+      {
+        continue;
+      }
+      for (int j = 0; j < 4; ++j)
+      {
+        if (this->DT.Vertex(c, j) != v && this->Solid.IsExterior(c, j))
+        {
+          for (int k = 0; k < 4; ++k)
+          {
+            const int32_t w = this->DT.Vertex(c, k);
+            if (k != j && w != v)
+            {
+              this->EdgeEnds.push_back(w);
+            }
+          }
+        }
+      }
+    }
+    std::sort(this->EdgeEnds.begin(), this->EdgeEnds.end());
+    for (size_t i = 0; i + 2 < this->EdgeEnds.size(); ++i)
+    {
+      if (this->EdgeEnds[i] == this->EdgeEnds[i + 2])
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  struct GroupEdge
+  {
+    int32_t V, W;
+    int64_t Cell;
+    int Slots;
+  };
+  std::vector<GroupEdge> Edges;
+  std::vector<int32_t> Vertices;
+
+  PeelSolid& Solid;
+  const pcs::Delaunay3D& DT;
+  int64_t MaximumGroup;
+  std::vector<uint32_t> Stamp;
+  uint32_t Generation = 0;
+  std::vector<uint8_t> Failed;
+  std::vector<uint8_t> Bad;
+  int64_t BadCount = 0;
+  std::vector<int64_t> Star, Fill;
+  std::vector<int32_t> EdgeEnds;
+};
+
+// The exterior facets as oriented triangles (outward from the solid). In a positively oriented cell
+// (v0, v1, v2, v3), the increasing-slot triple without vertex j faces away from v_j when j is odd
+// and towards it when j is even.
 std::vector<std::array<int32_t, 3>> ExteriorTriangles(const PeelSolid& solid)
 {
   std::vector<std::array<int32_t, 3>> triangles;
@@ -176,130 +607,6 @@ std::vector<std::array<int32_t, 3>> ExteriorTriangles(const PeelSolid& solid)
   return triangles;
 }
 
-// Vertices where the triangle set is not a 2-manifold: an edge with more than two triangles, or
-// triangles around the vertex forming more than one fan (connected through shared edges).
-std::vector<int32_t> SingularVertices(
-  const std::vector<std::array<int32_t, 3>>& triangles, vtkIdType numberOfPoints)
-{
-  // Per vertex: the (other vertex of the edge, triangle) pairs of its corners, two per corner.
-  std::vector<int64_t> offsets(numberOfPoints + 1, 0);
-  for (const auto& t : triangles)
-  {
-    for (int32_t v : t)
-    {
-      offsets[v + 1] += 2;
-    }
-  }
-  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
-  std::vector<std::pair<int32_t, int32_t>> corners(offsets[numberOfPoints]);
-  {
-    std::vector<int64_t> next(offsets.begin(), offsets.end() - 1);
-    for (size_t i = 0; i < triangles.size(); ++i)
-    {
-      const auto& t = triangles[i];
-      for (int k = 0; k < 3; ++k)
-      {
-        const int32_t v = t[k];
-        corners[next[v]++] = { t[(k + 1) % 3], static_cast<int32_t>(i) };
-        corners[next[v]++] = { t[(k + 2) % 3], static_cast<int32_t>(i) };
-      }
-    }
-  }
-  std::vector<int32_t> singular;
-  std::vector<int32_t> parent;
-  for (vtkIdType v = 0; v < numberOfPoints; ++v)
-  {
-    auto first = corners.begin() + offsets[v], last = corners.begin() + offsets[v + 1];
-    if (first == last)
-    {
-      continue;
-    }
-    std::sort(first, last);
-    // Fans: union the two triangles of each edge (v, w); more than two on an edge: singular.
-    const int64_t size = last - first;
-    parent.resize(size);
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&parent](int64_t i) {
-      while (parent[i] != i)
-      {
-        parent[i] = parent[parent[i]];
-        i = parent[i];
-      }
-      return i;
-    };
-    bool bad = false;
-    // Map triangle -> first local index, to join the two corners of one triangle at v.
-    for (int64_t i = 0; i < size && !bad; ++i)
-    {
-      int64_t j = i;
-      while (j + 1 < size && first[j + 1].first == first[i].first)
-      {
-        ++j;
-      }
-      if (j - i + 1 > 2)
-      {
-        bad = true; // edge (v, w) with more than two triangles
-      }
-      else if (j == i + 1)
-      {
-        parent[find(i)] = find(j);
-      }
-      i = j;
-    }
-    if (!bad)
-    {
-      // Corners of the same triangle belong together.
-      std::vector<std::pair<int32_t, int64_t>> byTriangle;
-      byTriangle.reserve(size);
-      for (int64_t i = 0; i < size; ++i)
-      {
-        byTriangle.emplace_back(first[i].second, i);
-      }
-      std::sort(byTriangle.begin(), byTriangle.end());
-      for (int64_t i = 0; i + 1 < size; ++i)
-      {
-        if (byTriangle[i].first == byTriangle[i + 1].first)
-        {
-          parent[find(byTriangle[i].second)] = find(byTriangle[i + 1].second);
-        }
-      }
-      int64_t roots = 0;
-      for (int64_t i = 0; i < size; ++i)
-      {
-        roots += find(i) == i ? 1 : 0;
-      }
-      bad = roots > 1;
-    }
-    if (bad)
-    {
-      singular.push_back(static_cast<int32_t>(v));
-    }
-  }
-  return singular;
-}
-
-// The cells (finite and infinite) that have vertex v, starting from cell `start` which has it.
-void StarOf(const pcs::Delaunay3D& dt, int32_t v, int64_t start, std::vector<int64_t>& star)
-{
-  star.clear();
-  star.push_back(start);
-  for (size_t i = 0; i < star.size(); ++i)
-  {
-    const int64_t c = star[i];
-    for (int j = 0; j < 4; ++j)
-    {
-      if (dt.Vertex(c, j) == v)
-      {
-        continue; // the facet opposite v does not contain it
-      }
-      const int64_t n = dt.Neighbor(c, j);
-      if (std::find(star.begin(), star.end(), n) == star.end())
-      {
-        star.push_back(n);
-      }
-    }
-  }
-}
 } // namespace
 
 //------------------------------------------------------------------------------------------------
@@ -340,10 +647,14 @@ int vtkPerimeterPeelSurface::RequestData(
   used->FillValue(0);
   output->GetPointData()->AddArray(used);
 
-  vtkIdType iterations = 0, removedCount = 0, restoredCount = 0, tetrahedra = 0;
-  double finalThreshold = 0.0;
+  vtkIdType iterations = 0, removedCount = 0, groupCount = 0, tetrahedra = 0;
+  double finalThreshold = 0.0, delaunayTime = 0.0, peelTime = 0.0;
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  Clock::time_point peelStart = start;
   vtkNew<vtkCellArray> polys;
-  auto finish = [&]() {
+  auto finish = [&]()
+  {
     output->SetPolys(polys);
     vtkIdType usedPoints = 0;
     for (vtkIdType i = 0; i < numberOfPoints; ++i)
@@ -355,14 +666,17 @@ int vtkPerimeterPeelSurface::RequestData(
     pcs::AddFieldValue(fd, "FinalThreshold", finalThreshold);
     pcs::AddFieldCount(fd, "NumberOfTetrahedra", tetrahedra);
     pcs::AddFieldCount(fd, "NumberOfRemovedTetrahedra", removedCount);
-    pcs::AddFieldCount(fd, "NumberOfRestoredTetrahedra", restoredCount);
+    pcs::AddFieldCount(fd, "NumberOfGroupRemovals", groupCount);
     pcs::AddFieldCount(fd, "NumberOfTriangles", polys->GetNumberOfCells());
     pcs::AddFieldCount(fd, "NumberOfUsedPoints", usedPoints);
     pcs::AddFieldCount(fd, "NumberOfUnusedPoints", numberOfPoints - usedPoints);
+    pcs::AddFieldValue(fd, "DelaunayTime", delaunayTime);
+    pcs::AddFieldValue(fd, "PeelTime", peelTime);
     if (numberOfPoints > usedPoints && polys->GetNumberOfCells() > 0)
     {
       vtkWarningMacro(<< numberOfPoints - usedPoints << " of " << numberOfPoints
-                      << " point(s) are not on the surface (duplicates, non-finite points or "
+                      << " point(s) are not on the surface (duplicates, non-finite points "
+                         "or "
                          "points inside the solid): see the point data array Used.");
     }
     return 1;
@@ -375,7 +689,8 @@ int vtkPerimeterPeelSurface::RequestData(
   }
   if (numberOfPoints > 150000000)
   {
-    vtkErrorMacro("The input has " << numberOfPoints << " points; at most 150000000 are supported.");
+    vtkErrorMacro(
+      "The input has " << numberOfPoints << " points; at most 150000000 are supported.");
     return finish();
   }
 
@@ -386,8 +701,7 @@ int vtkPerimeterPeelSurface::RequestData(
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
     input->GetPoint(i, &xyz[3 * i]);
-    if (std::isfinite(xyz[3 * i]) && std::isfinite(xyz[3 * i + 1]) &&
-      std::isfinite(xyz[3 * i + 2]))
+    if (std::isfinite(xyz[3 * i]) && std::isfinite(xyz[3 * i + 1]) && std::isfinite(xyz[3 * i + 2]))
     {
       ids.push_back(static_cast<int32_t>(i));
     }
@@ -404,7 +718,8 @@ int vtkPerimeterPeelSurface::RequestData(
   }
 
   pcs::Delaunay3D dt;
-  auto progress = [this](double fraction) {
+  auto progress = [this](double fraction)
+  {
     this->UpdateProgress(0.6 * fraction);
     return !this->GetAbortExecute();
   };
@@ -418,93 +733,168 @@ int vtkPerimeterPeelSurface::RequestData(
     return finish();
   }
   tetrahedra = dt.GetNumberOfFiniteCells();
+  peelStart = Clock::now();
+  delaunayTime = std::chrono::duration<double>(peelStart - start).count();
   this->UpdateProgress(0.6);
 
   // Peeling (paper section 3, steps 3-7).
   PeelSolid solid(dt, xyz.data(), this->FacetMeasure, numberOfPoints);
   const int64_t cells = dt.GetNumberOfCells();
-  double sum = 0.0;
-  int64_t exterior = 0;
-  for (int64_t c = 0; c < cells; ++c)
+  // The mean measure of the exterior facets (paper steps 4 and 7).
+  auto exteriorMean = [&]()
   {
-    for (int j = 0; j < 4 && solid.IsInside(c); ++j)
-    {
-      if (solid.IsExterior(c, j))
-      {
-        sum += solid.FacetMeasure(c, j);
-        ++exterior;
-      }
-    }
-  }
-  const bool fixed = this->Threshold > 0.0;
-  double mean = exterior > 0 ? sum / exterior : 0.0;
-  double threshold = fixed ? std::ldexp(this->Threshold, exponent) : mean * this->ThresholdFactor;
-  using Entry = std::pair<double, int64_t>; // measure, 4 * cell + facet
-  std::priority_queue<Entry> queue;
-  bool aborted = false;
-  while (!aborted)
-  {
+    double sum = 0.0;
+    int64_t exterior = 0;
     for (int64_t c = 0; c < cells; ++c)
     {
       for (int j = 0; j < 4 && solid.IsInside(c); ++j)
       {
         if (solid.IsExterior(c, j))
         {
-          const double m = solid.FacetMeasure(c, j);
-          if (m > threshold)
-          {
-            queue.emplace(m, 4 * c + j);
-          }
+          sum += solid.FacetMeasure(c, j);
+          ++exterior;
         }
       }
     }
-    while (!queue.empty())
+    return exterior > 0 ? sum / exterior : 0.0;
+  };
+  const bool fixed = this->Threshold > 0.0;
+  double mean = exteriorMean();
+  double threshold = fixed ? std::ldexp(this->Threshold, exponent) : mean * this->ThresholdFactor;
+
+  // Cells with an exterior facet over the threshold, largest first (stale entries are skipped).
+  using Entry = std::pair<double, int64_t>; // largest exterior facet measure, cell
+  std::priority_queue<Entry> queue;
+  auto push = [&](int64_t c)
+  {
+    const double m = solid.LargestExteriorFacet(c);
+    if (m > threshold)
     {
-      const int64_t facet = queue.top().second;
+      queue.emplace(m, c);
+    }
+  };
+  const bool manifold = this->ManifoldOutput;
+  // GroupFactor is a ratio of lengths: squared for the area measure.
+  const double groupFactor =
+    this->GroupFactor * (this->FacetMeasure == AREA ? this->GroupFactor : 1.0);
+  bool aborted = false;
+  auto removed = [&]()
+  {
+    ++removedCount;
+    if (removedCount % 65536 == 0)
+    {
+      this->UpdateProgress(std::min(0.9, 0.6 + 0.3 * removedCount / double(tetrahedra)));
+      aborted = this->GetAbortExecute() != 0;
+    }
+  };
+  // One cell at a time (paper steps 5-6), with the sculpting rules when ManifoldOutput is on.
+  auto peelQueue = [&]()
+  {
+    while (!queue.empty() && !aborted)
+    {
+      const Entry top = queue.top();
       queue.pop();
-      const int64_t c = facet >> 2;
-      if (!solid.IsExterior(c, static_cast<int>(facet & 3)) || solid.Orphans(c))
+      const int64_t c = top.second;
+      if (!solid.IsInside(c))
       {
         continue;
       }
-      // Remove c: its exterior facets leave the surface, the others join it.
-      for (int k = 0; k < 4; ++k)
+      const double m = solid.LargestExteriorFacet(c);
+      if (m != top.first)
       {
-        const double m = solid.FacetMeasure(c, k);
-        if (solid.IsExterior(c, k))
-        {
-          sum -= m;
-          --exterior;
-        }
-        else
-        {
-          sum += m;
-          ++exterior;
-          if (m > threshold)
-          {
-            queue.emplace(m, 4 * dt.Neighbor(c, k) + dt.MirrorIndex(c, k));
-          }
-        }
+        push(c); // its exterior changed since it was queued
+        continue;
+      }
+      // With ManifoldOutput, a cell whose facet is not clearly too large for the surface (at most
+      // GroupFactor x threshold) is not removed when it would show a larger facet.
+      if (solid.Orphans(c) ||
+        (manifold &&
+          (!solid.KeepsManifold(c) ||
+            (m <= threshold * groupFactor && solid.LargestHiddenFacet(c) > m))))
+      {
+        continue; // refused; queued again when a neighbour goes
       }
       solid.SetInside(c, false);
-      ++removedCount;
-      if (removedCount % 65536 == 0)
+      for (int k = 0; k < 4; ++k)
       {
-        this->UpdateProgress(std::min(0.9, 0.6 + 0.3 * removedCount / double(tetrahedra)));
-        if (this->GetAbortExecute())
+        const int64_t n = dt.Neighbor(c, k);
+        if (solid.IsInside(n))
         {
-          aborted = true;
-          break;
+          push(n);
+        }
+      }
+      removed();
+    }
+  };
+  std::unique_ptr<GroupPeeler> groups;
+  if (manifold)
+  {
+    groups.reset(new GroupPeeler(solid, std::max<int64_t>(1000, cells / 4)));
+  }
+  std::vector<Entry> candidates;
+  while (!aborted)
+  {
+    for (int64_t c = 0; c < cells; ++c)
+    {
+      if (solid.IsInside(c))
+      {
+        push(c);
+      }
+    }
+    peelQueue();
+    if (groups)
+    {
+      groups->Reset();
+      for (bool more = true; more && !aborted;)
+      {
+        // The refused cells over the threshold, largest facet first.
+        candidates.clear();
+        for (int64_t c = 0; c < cells; ++c)
+        {
+          if (solid.IsInside(c))
+          {
+            const double m = solid.LargestExteriorFacet(c);
+            if (m > threshold * groupFactor)
+            {
+              candidates.emplace_back(m, c);
+            }
+          }
+        }
+        std::sort(candidates.begin(), candidates.end(), std::greater<Entry>());
+        more = false;
+        for (const Entry& candidate : candidates)
+        {
+          const int64_t c = candidate.second;
+          if (aborted || !solid.IsInside(c) || groups->HasFailed(c) ||
+            solid.LargestExteriorFacet(c) <= threshold || !groups->Try(c, threshold))
+          {
+            continue;
+          }
+          more = true;
+          ++groupCount;
+          for (int64_t g : groups->Group)
+          {
+            removed();
+            for (int k = 0; k < 4; ++k)
+            {
+              const int64_t n = dt.Neighbor(g, k);
+              if (solid.IsInside(n))
+              {
+                push(n);
+              }
+            }
+          }
+          peelQueue();
         }
       }
     }
     ++iterations;
-    if (aborted || fixed || exterior == 0 || iterations >= this->MaximumIterations)
+    if (aborted || fixed || iterations >= this->MaximumIterations)
     {
       break;
     }
-    const double updated = sum / exterior;
-    if (std::fabs(updated - mean) <= this->ConvergenceTolerance * mean)
+    const double updated = exteriorMean();
+    if (updated == 0.0 || std::fabs(updated - mean) <= this->ConvergenceTolerance * mean)
     {
       break;
     }
@@ -519,53 +909,6 @@ int vtkPerimeterPeelSurface::RequestData(
   this->UpdateProgress(0.9);
 
   std::vector<std::array<int32_t, 3>> triangles = ExteriorTriangles(solid);
-  if (this->ManifoldOutput)
-  {
-    // Restore the removed tetrahedra around every singular vertex until there is none left.
-    std::vector<int64_t> star;
-    for (int round = 0; round < 10000; ++round)
-    {
-      const std::vector<int32_t> singular = SingularVertices(triangles, numberOfPoints);
-      if (singular.empty() || this->GetAbortExecute())
-      {
-        break;
-      }
-      // A cell of each singular vertex: any inside cell that has it.
-      std::vector<int64_t> startCell(numberOfPoints, -1);
-      for (int32_t v : singular)
-      {
-        startCell[v] = -2; // wanted
-      }
-      for (int64_t c = 0; c < cells; ++c)
-      {
-        if (!solid.IsInside(c))
-        {
-          continue;
-        }
-        for (int k = 0; k < 4; ++k)
-        {
-          const int32_t v = dt.Vertex(c, k);
-          if (startCell[v] == -2)
-          {
-            startCell[v] = c;
-          }
-        }
-      }
-      for (int32_t v : singular)
-      {
-        StarOf(dt, v, startCell[v], star);
-        for (int64_t c : star)
-        {
-          if (!dt.IsInfinite(c) && !solid.IsInside(c))
-          {
-            solid.SetInside(c, true);
-            ++restoredCount;
-          }
-        }
-      }
-      triangles = ExteriorTriangles(solid);
-    }
-  }
 
   vtkNew<vtkTypeInt32Array> connectivity;
   connectivity->SetNumberOfValues(3 * static_cast<vtkIdType>(triangles.size()));
@@ -583,6 +926,7 @@ int vtkPerimeterPeelSurface::RequestData(
   offsets->SetValue(
     static_cast<vtkIdType>(triangles.size()), static_cast<int32_t>(3 * triangles.size()));
   polys->SetData(offsets, connectivity);
+  peelTime = std::chrono::duration<double>(Clock::now() - peelStart).count();
   this->UpdateProgress(1.0);
   return finish();
 }
@@ -592,6 +936,7 @@ void vtkPerimeterPeelSurface::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ThresholdFactor: " << this->ThresholdFactor << "\n";
+  os << indent << "GroupFactor: " << this->GroupFactor << "\n";
   os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
   os << indent << "Threshold: " << this->Threshold << "\n";
   os << indent << "FacetMeasure: " << this->FacetMeasure << "\n";

@@ -47,8 +47,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   }
   const double tetrahedra = pcsfuzz::Field(name, out, "NumberOfTetrahedra");
   const double removed = pcsfuzz::Field(name, out, "NumberOfRemovedTetrahedra");
-  const double restored = pcsfuzz::Field(name, out, "NumberOfRestoredTetrahedra");
-  if (removed < 0 || restored < 0 || removed > tetrahedra)
+  const double groups = pcsfuzz::Field(name, out, "NumberOfGroupRemovals");
+  if (removed < 0 || groups < 0 || groups > removed || removed > tetrahedra)
   {
     pcsfuzz::Fail(name, "tetrahedra counts inconsistent");
   }

@@ -12,10 +12,15 @@ time ratio ours / CGAL, with the criteria of issue 5 checked (0 non-manifold edg
 coverage >= 99 %, boundary edges <= 0.5 % of the edges on closed surfaces, Hausdorff <= 2 mean
 spacings, time <= 0.5 x CGAL from 10^5 points up).
 
+With --scaling PNG the inputs are only timed (no meshes, no quality): for each input family
+given as sphere or torus, sizes 10^4 to 10^6, both methods, with the exponent of the
+least-squares line through log(time) against log(points), plotted log-log into PNG.
+
 Usage:
   /usr/bin/python3 Benchmarks/run_local_optimum_benchmark.py --bench-bin build-log/bin \
       --data <dir with meshes/*.off> sphere:100000 torus:100000 meshes/bunny00.off \
       sample:meshes/bunny00.off:100000 [--markdown table.md] [--ours-only]
+  /usr/bin/python3 Benchmarks/run_local_optimum_benchmark.py --scaling scaling.png sphere torus
 Paths of the form meshes/x.off are looked up under --data (the libcgal-demo data, unpacked as
 Benchmarks/run_reconstruction_benchmark.py does).
 """
@@ -72,6 +77,52 @@ def run(bench, method, spec, workdir):
     return result
 
 
+def scaling(args, bench):
+    sizes = [10000, 30000, 100000, 300000, 1000000]
+    load = open("/proc/loadavg").read().split()[:3]
+    lines = ["Date %s, load average before the run %s; command: `%s`\n"
+             % (datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC"), " ".join(load),
+                " ".join(["Benchmarks/run_local_optimum_benchmark.py"] + sys.argv[1:])),
+             "| input | method | " + " | ".join("%g" % n for n in sizes) + " | exponent |",
+             "|---|---|" + "---:|" * (len(sizes) + 1)]
+    series = {}
+    for family in args.inputs:
+        for method in ["ours", "cgal"]:
+            times = []
+            for n in sizes:
+                out = subprocess.run([bench, method, "%s:%d" % (family, n)], check=True,
+                                     capture_output=True, text=True).stdout
+                times.append(json.loads(out.strip().splitlines()[-1])["seconds"])
+                print(family, method, n, times[-1], flush=True)
+            exponent = float(np.polyfit(np.log(sizes), np.log(times), 1)[0])
+            series[(family, method)] = (times, exponent)
+            lines.append("| %s | %s | %s | %.2f |" % (
+                family, method, " | ".join("%.3f" % t for t in times), exponent))
+        ratios = [a / b for a, b in zip(series[(family, "ours")][0], series[(family, "cgal")][0])]
+        lines.append("| %s | ours / CGAL | %s |  |" % (family, " | ".join("%.2f" % r for r in ratios)))
+    print("\n".join(lines))
+    if args.markdown:
+        with open(args.markdown, "a") as f:
+            f.write("\n".join(lines) + "\n\n")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for (family, method), (times, exponent) in series.items():
+        label = "%s, %s (n^%.2f)" % (family, "vtkLocalOptimumGrowth" if method == "ours"
+                                     else "CGAL advancing front", exponent)
+        ax.loglog(sizes, times, "o-" if method == "ours" else "s--", label=label)
+    ax.set_xlabel("points")
+    ax.set_ylabel("time (s)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(args.scaling, dpi=90)
+    return 0
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -80,8 +131,11 @@ def main():
     parser.add_argument("--data", default="build-log/cgal-data/data")
     parser.add_argument("--markdown", help="append the table to this file")
     parser.add_argument("--ours-only", action="store_true", help="skip CGAL (profiling runs)")
+    parser.add_argument("--scaling", metavar="PNG", help="time sphere/torus from 10^4 to 10^6")
     args = parser.parse_args()
     bench = os.path.join(args.bench_bin, "pcsBenchLocalOptimumGrowth")
+    if args.scaling:
+        return scaling(args, bench)
     load = open("/proc/loadavg").read().split()[:3]
     header = ("| input | points | method | time s | ratio | triangles | coverage | "
               "non-manifold e / v | boundary edges (% of edges) | components | genus | "

@@ -29,11 +29,20 @@ with its own copy of the border row it shares with the next band (the same coord
 gathered mesh must measure as the serial one: 288 points, 576 triangles, closed, one component,
 Euler characteristic 0, genus 1, every field value equal.
 
+Client-server: with `--server MPIEXEC PVSERVER N` the script, run by pvpython, starts
+`MPIEXEC -np N PVSERVER` on a free local port, connects to it, loads the plugin on both sides
+and runs the same checks on the server's N processes (the serial reference in the client).
+
 Usage: mpirun -np N pvbatch TestParallelGather.py <path to PointCloudSurface.so>
+       pvpython TestParallelGather.py <path to PointCloudSurface.so> --server MPIEXEC PVSERVER N
 (PYTHONPATH must reach the build's pointcloudsurface package.)
 """
+import atexit
 import os
+import socket
+import subprocess
 import sys
+import time
 import xml.etree.ElementTree as ElementTree
 
 import numpy as np
@@ -177,8 +186,51 @@ def same_value(a, b):
     return a == b or (a != a and b != b)  # NaN measures (no distances) agree too
 
 
-simple.LoadPlugin(sys.argv[1], ns=globals())
-processes = vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses()
+def start_server(mpiexec, pvserver, count):
+    """``mpiexec -np count pvserver`` on a free local port, once it accepts connections."""
+    with socket.socket() as probe:
+        probe.bind(("localhost", 0))
+        port = probe.getsockname()[1]
+    # pvpython started as an MPI singleton: its Open MPI / PMIx variables would make mpiexec
+    # believe it runs inside a job. The consent to run as root is kept.
+    env = {key: value for key, value in os.environ.items()
+           if not key.startswith(("OMPI_", "PMIX_", "OPAL_", "PRTE_"))
+           or key.startswith("OMPI_ALLOW_RUN_AS_ROOT")}
+    server = subprocess.Popen(
+        [mpiexec, "--oversubscribe", "-np", str(count), pvserver, "--server-port=%d" % port,
+         "--force-offscreen-rendering"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+        stdin=subprocess.DEVNULL, text=True, env=env)
+
+    def stop():
+        if server.poll() is None:
+            server.terminate()
+            try:
+                server.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                server.kill()
+
+    atexit.register(stop)
+    deadline = time.time() + 120
+    said = []
+    for line in server.stdout:
+        if "Accepting connection" in line:
+            return server, port
+        said.append(line.rstrip())
+        check(time.time() < deadline, "pvserver did not start: %s" % "; ".join(said[-5:]))
+    check(False, "pvserver exited (code %s): %s" % (server.wait(), "; ".join(said[-5:])))
+
+
+if "--server" in sys.argv:
+    mpiexec, pvserver, count = sys.argv[sys.argv.index("--server") + 1:][:3]
+    server, port = start_server(mpiexec, pvserver, int(count))
+    simple.Connect("localhost", port)
+    simple.LoadPlugin(sys.argv[1], remote=False, ns=globals())  # the client's proxies
+    simple.LoadPlugin(sys.argv[1], remote=True, ns=globals())
+    processes = servermanager.ActiveConnection.GetNumberOfDataPartitions()
+    check(processes == int(count), "the server runs %s processes (%d)" % (count, processes))
+else:
+    simple.LoadPlugin(sys.argv[1], ns=globals())
+    processes = vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses()
 
 cloud_source = simple.ProgrammableSource(OutputDataSetType="vtkPolyData")
 cloud_source.Script = SOURCE_SCRIPT

@@ -31,6 +31,7 @@
 #include <numeric>
 #include <queue>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -316,8 +317,9 @@ public:
     }
     if (ok)
     {
-      // Refuse a group that splits a component off (the Euler characteristic of the boundary
-      // grows): only handles open (it drops) or the topology stays (it does not change).
+      // The Euler characteristic of the boundary drops when a handle opens, stays when the
+      // topology does, and grows when a handle closes (a bridge goes) or a component splits off:
+      // the last is refused (the solid must stay connected around the group).
       const int64_t after = this->BoundaryEuler();
       for (int64_t g : this->Group)
       {
@@ -328,7 +330,7 @@ public:
       {
         this->Solid.SetInside(g, false);
       }
-      ok = after <= before;
+      ok = after <= before || this->StaysConnected();
     }
     if (!ok)
     {
@@ -352,6 +354,77 @@ public:
   std::vector<int64_t> Group;
 
 private:
+  // Whether the inside cells next to the (removed) group are still connected to each other through
+  // inside cells: a breadth-first search from each of them, merging searches that meet, until one
+  // is left (connected) or a search runs out of cells while others remain (a part split off).
+  bool StaysConnected()
+  {
+    ++this->Generation;
+    this->Fill.clear();
+    this->Label.clear();
+    std::vector<int64_t> root, pending;
+    auto find = [&root](int64_t i)
+    {
+      while (root[i] != i)
+      {
+        root[i] = root[root[i]];
+        i = root[i];
+      }
+      return i;
+    };
+    for (int64_t g : this->Group)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        const int64_t n = this->DT.Neighbor(g, k);
+        if (this->Solid.IsInside(n) && this->Stamp[n] != this->Generation)
+        {
+          this->Stamp[n] = this->Generation;
+          this->Label[n] = static_cast<int64_t>(root.size());
+          root.push_back(static_cast<int64_t>(root.size()));
+          pending.push_back(1);
+          this->Fill.push_back(n);
+        }
+      }
+    }
+    int64_t components = static_cast<int64_t>(root.size());
+    for (size_t head = 0; head < this->Fill.size() && components > 1; ++head)
+    {
+      const int64_t c = this->Fill[head];
+      int64_t r = find(this->Label[c]);
+      for (int k = 0; k < 4; ++k)
+      {
+        const int64_t n = this->DT.Neighbor(c, k);
+        if (!this->Solid.IsInside(n))
+        {
+          continue;
+        }
+        if (this->Stamp[n] != this->Generation)
+        {
+          this->Stamp[n] = this->Generation;
+          this->Label[n] = r;
+          ++pending[r];
+          this->Fill.push_back(n);
+        }
+        else
+        {
+          const int64_t other = find(this->Label[n]);
+          if (other != r)
+          {
+            root[other] = r;
+            pending[r] += pending[other];
+            --components;
+          }
+        }
+      }
+      if (--pending[r] == 0 && components > 1)
+      {
+        return false; // this search is over: its cells are cut off from the others
+      }
+    }
+    return components <= 1;
+  }
+
   // V - E + F of the boundary simplices among the faces of the group's cells (the rest of the
   // boundary is the same before and after the group goes).
   int64_t BoundaryEuler()
@@ -567,6 +640,7 @@ private:
   std::vector<uint8_t> Bad;
   int64_t BadCount = 0;
   std::vector<int64_t> Star, Fill;
+  std::unordered_map<int64_t, int64_t> Label;
   std::vector<int32_t> EdgeEnds;
 };
 
@@ -806,11 +880,13 @@ int vtkPerimeterPeelSurface::RequestData(
         continue;
       }
       // With ManifoldOutput, a cell whose facet is not clearly too large for the surface (at most
-      // GroupFactor x threshold) is not removed when it would show a larger facet.
+      // GroupFactor x threshold) is not removed when it would show a facet more than 1.5 times
+      // larger (a cave under a true surface triangle; neighbouring surface triangles of a uniform
+      // random sample differ by less).
       if (solid.Orphans(c) ||
         (manifold &&
           (!solid.KeepsManifold(c) ||
-            (m <= threshold * groupFactor && solid.LargestHiddenFacet(c) > m))))
+            (m <= threshold * groupFactor && solid.LargestHiddenFacet(c) > 1.5 * m))))
       {
         continue; // refused; queued again when a neighbour goes
       }

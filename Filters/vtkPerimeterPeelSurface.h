@@ -34,9 +34,10 @@
  *      joining their opposite vertices is not on it; with three or four, never (a point would be
  *      left in no tetrahedron). A refused tetrahedron is tried again when a neighbour goes.
  *   2. A tetrahedron whose exterior facet is within the ambiguous band (threshold,
- *      GroupFactor x threshold] is not removed when it would show the outside a larger facet:
- *      on a random sample some true surface triangles are over the mean, and removing the
- *      tetrahedron under one of them would dig a cave into the object.
+ *      GroupFactor x threshold] is not removed when it would show the outside a facet more than
+ *      1.5 times larger: on a random sample some true surface triangles are over the mean, and
+ *      removing the tetrahedron under one of them would dig a cave into the object (its hidden
+ *      facets span the inside), while neighbouring surface triangles differ by less.
  *   3. Removals of one tetrahedron that keep the boundary a manifold never change the topology
  *      of the solid: the hole of a torus opens only when a whole layer of tetrahedra goes at
  *      once. When the peeling stalls, a group removal starts at each refused tetrahedron whose
@@ -47,10 +48,12 @@
  *      every vertex of the group again: in the link of the vertex, the inside cells form one
  *      component, the outside cells one, and each edge has at most two boundary triangles.
  *      The group is given up (and its tetrahedra are not tried again at this threshold: O(n)
- *      per threshold) when a point would be left in no tetrahedron, when no cell is left to
- *      enter, or when it would split a component off (the Euler characteristic of the boundary
- *      would grow). Groups open handles (Euler characteristic - 2) and clear flat layers of
- *      nearly cocircular points (the lids over a torus's hole).
+ *      per threshold) when a point would be left in no tetrahedron or no cell is left to enter.
+ *      The Euler characteristic of the boundary tells what a group does: it drops by 2 when a
+ *      handle opens, stays when the topology stays (e.g. the flat layers of nearly cocircular
+ *      points over a torus's hole go), and grows when a bridge goes (a handle closes, e.g. a
+ *      strip left across a hole) or a part splits off; the last is refused (a search through
+ *      the remaining tetrahedra checks that the cells around the group stay connected).
  * - ManifoldOutput off: the paper's peeling, one tetrahedron at a time with no topology rule (no
  *   point orphaned); the surface may then have non-manifold edges and vertices.
  * - The triangles are oriented consistently, outward from the solid.

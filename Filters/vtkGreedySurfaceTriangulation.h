@@ -95,7 +95,8 @@
  * oriented, an oriented 2-manifold with boundary), point data `Used` (1 for triangle vertices),
  * `Status` (0: correct after step 2, 1: boundary of a correct region, 2: lost and left unused,
  * 3: lost and used by hole filling, 4: not triangulated -- an exact duplicate of another point
- * or non-finite), `LocalUniformity` (m); cell data `Stage` (1: step 1 triangle kept by step 2,
+ * or non-finite; every point when the cloud has fewer than 3 distinct finite points),
+ * `LocalUniformity` (m); cell data `Stage` (1: step 1 triangle kept by step 2,
  * 6: hole filling, 7: made by a step 7 swap); field data `NumberOfTriangles`,
  * `NumberOfLostPoints` (after step 2), `NumberOfIslands`, `NumberOfHoles` (after step 4),
  * `NumberOfBridges`, `NumberOfChords`, `NumberOfHolesFilled`, `NumberOfHolesLeftOpen`,

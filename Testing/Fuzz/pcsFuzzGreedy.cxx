@@ -1,9 +1,10 @@
 // Fuzz target of vtkGreedySurfaceTriangulation: a small, often degenerate cloud from the bytes
 // (pcsFuzzSurface.h), the parameters over their ranges (limits included), then the invariants
 // of pcsFuzzSurface.h (the class promises an oriented 2-manifold with boundary) and its own:
-// - Status in 0..4; lost and unused (2), duplicate or non-finite (4) points are unused, lost
-//   points used by hole filling (3) are used; the points with Status 4 are
-//   NumberOfDuplicatePoints + NumberOfSkippedPoints, and at least the non-finite points;
+// - Status in 0..4; lost and unused (2), not triangulated (4) points are unused, lost points
+//   used by hole filling (3) are used; the points with Status 4 are at least
+//   NumberOfDuplicatePoints + NumberOfSkippedPoints (all points when fewer than 3 are distinct
+//   and finite), exactly these when there are triangles; non-finite points have Status 4;
 // - NumberOfPoints = the input points, NumberOfUnusedPoints = the points with Used = 0;
 // - cell data Stage in {1, 6, 7}; LocalUniformity has one value per point.
 // A violated invariant aborts.
@@ -83,8 +84,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   if (pcsfuzz::Field(name, out, "NumberOfPoints") != n ||
     pcsfuzz::Field(name, out, "NumberOfUnusedPoints") != unused ||
     pcsfuzz::Field(name, out, "NumberOfDuplicatePoints") +
-        pcsfuzz::Field(name, out, "NumberOfSkippedPoints") !=
+        pcsfuzz::Field(name, out, "NumberOfSkippedPoints") >
       notTriangulated ||
+    (out->GetNumberOfPolys() > 0 &&
+      pcsfuzz::Field(name, out, "NumberOfDuplicatePoints") +
+          pcsfuzz::Field(name, out, "NumberOfSkippedPoints") !=
+        notTriangulated) ||
     pcsfuzz::Field(name, out, "NumberOfSkippedPoints") < nonFinite)
   {
     pcsfuzz::Fail(name, "point counts inconsistent");

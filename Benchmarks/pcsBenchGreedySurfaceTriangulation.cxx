@@ -48,6 +48,7 @@
 #include <fstream>
 #include <iostream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -169,7 +170,24 @@ int main(int argc, char* argv[])
               << std::endl;
     return 2;
   }
-  const std::string method = argv[1], spec = argv[2];
+  // ours[:Name=value,...] sets numeric parameters of the filter (e.g. ours:MaximumBridgeLength=30).
+  std::string method = argv[1];
+  std::vector<std::pair<std::string, double>> settings;
+  if (method.rfind("ours:", 0) == 0)
+  {
+    std::istringstream list(method.substr(5));
+    std::string item;
+    while (std::getline(list, item, ','))
+    {
+      const size_t equal = item.find('=');
+      if (equal != std::string::npos)
+      {
+        settings.emplace_back(item.substr(0, equal), std::stod(item.substr(equal + 1)));
+      }
+    }
+    method = "ours";
+  }
+  const std::string spec = argv[2];
   std::string base = spec;
   bool noisy = false, damaged = false;
   if (base.rfind("noisy:", 0) == 0)
@@ -235,6 +253,28 @@ int main(int argc, char* argv[])
     vtkSmartPointer<vtkPolyData> cloud = MakeMesh(xyz, {});
     vtkNew<vtkGreedySurfaceTriangulation> greedy;
     greedy->SetInputData(cloud);
+    for (const auto& setting : settings)
+    {
+      const std::string& name = setting.first;
+      const double value = setting.second;
+      if (name == "MaximumBridgeLength")
+        greedy->SetMaximumBridgeLength(value);
+      else if (name == "MaximumNormalDeviation")
+        greedy->SetMaximumNormalDeviation(value);
+      else if (name == "NumberOfNeighbors")
+        greedy->SetNumberOfNeighbors(static_cast<int>(value));
+      else if (name == "CrossingTest")
+        greedy->SetCrossingTest(static_cast<int>(value));
+      else if (name == "MinimumIslandTriangles")
+        greedy->SetMinimumIslandTriangles(static_cast<int>(value));
+      else if (name == "BoundaryVectorRadius")
+        greedy->SetBoundaryVectorRadius(value);
+      else
+      {
+        std::cerr << "unknown parameter " << name << std::endl;
+        return 2;
+      }
+    }
     if (method == "ours-step2")
     {
       greedy->BridgeIslandsOff();

@@ -70,7 +70,7 @@ def main():
                 for m in args.methods:
                     r = results[m]
                     verdict = ""
-                    if m == "ours" and variant != "clean" and "cgal" in results:
+                    if m.startswith("ours") and variant != "clean" and "cgal" in results:
                         c = results["cgal"]
                         ok = (r["non_manifold_edges"] == 0
                               and r["boundary_edges"] <= 0.1 * c["boundary_edges"]

@@ -41,27 +41,29 @@
  *   pairwise, and the chain projected onto the plane normal to their mean winds once around the
  *   point (each projected triangle positively oriented, decided exactly). Points failing the
  *   test are lost; their triangles are removed and their neighbours tested again until every
- *   remaining point passes. The remaining triangles are oriented consistently (pcs::SurfaceMesh,
- *   the topology shared with the other growing filters) and their boundary loops extracted. The
- *   boundary vector of a boundary point is the sum of the unit inward perpendiculars of its two
- *   boundary edges, each in the plane of its triangle: a direction from the boundary into the
- *   triangulated region. (The paper averages the vectors to the neighbours within a distance b;
- *   for holes not much wider than b that mean mixes both sides of the hole and points anywhere:
- *   on the 196 boundary loops of a clean 5,000-point sphere after step 2, all holes but two
- *   one-triangle islands, the status test below called 17 (b = 3 spacings) to 45 (the fan of
- *   triangles alone) of them islands and left 23 to 36 undecided; with the edge perpendiculars
- *   it classifies all 196 correctly.)
+ *   remaining point passes. Connected regions of fewer than MinimumIslandTriangles triangles
+ *   (but the largest) are dissolved: their points become lost points. The remaining triangles
+ *   are oriented consistently (pcs::SurfaceMesh, the topology shared with the other growing
+ *   filters) and their boundary loops extracted. The boundary vector of a boundary point points
+ *   from the boundary into the triangulated region: the sum of the unit inward perpendiculars of
+ *   the boundary edges (each in the plane of its triangle) of the loop points within
+ *   BoundaryVectorRadius along the loop (the paper's b, measured along the loop rather than in
+ *   space: the paper's mean of the vectors to all neighbours within b mixes both sides of a hole
+ *   not much wider than b -- on the 196 loops of a clean 5,000-point sphere after step 2 it
+ *   called 17 to 45 holes islands, the edge perpendiculars none). Step 5 uses the vectors of the
+ *   point's own two edges.
  * - Step 3 (Fig. 9): hole or island status of every loop. From a loop point P0, P1 is the loop
  *   point farthest from it among those at least a third of the loop away (so that P1 is never a
  *   neighbour of P0 on a thin loop); the dot products (P1 - P0) . I(P1) and (P0 - P1) . I(P0) are
  *   both positive for a hole, both negative for an island. P0 runs over up to 16 points spread
  *   along the loop and the test stops as soon as 3/4 or more of the dot products computed so far
- *   have the same sign (the paper's rule). Without such a majority, the orientation of the loop
- *   decides: it follows the boundary edges of consistently oriented triangles, so it turns
- *   clockwise around a hole and counter-clockwise around an island seen along their normals; a
- *   hole when the loop's vector area and the sum of the normals of the triangles on its edges
- *   are within 60 degrees of opposite, otherwise an island (left open: the choice that never
- *   closes an open surface by mistake).
+ *   have the same sign (the paper's rule); a product votes only when the angle between P0P1 and
+ *   the boundary vector is at least StatusNeutralAngle away from 90 degrees. Without such a
+ *   majority, the orientation of the loop decides: it follows the boundary edges of
+ *   consistently oriented triangles, so it turns clockwise around a hole and counter-clockwise
+ *   around an island seen along their normals; a hole when the loop's vector area and the sum of
+ *   the normals of the triangles on its edges are within 60 degrees of opposite, otherwise an
+ *   island (left open: the choice that never closes an open surface by mistake).
  * - Step 4 (Fig. 10, 11): bridges (when BridgeIslands is on). For every point of an island
  *   loop, the shortest candidate bridge to each other loop within MaximumBridgeLength (paper: l;
  *   spatial search with the locator) is made. Candidates are taken by increasing length and
@@ -116,7 +118,12 @@
  * points), give a warning and an output with the points and no triangles. Exact duplicates are
  * triangulated once (Status 4 for the others); non-finite points are skipped, with a warning.
  * Sharp edges (dihedral angles beyond MaximumNormalDeviation) fail the umbrella test and are
- * rebuilt by hole filling, flatter than the original.
+ * rebuilt by hole filling, flatter than the original. Holes are filled by planes: across a
+ * removed region of width w on a surface of curvature radius R the fill lies up to about
+ * w^2 / (8 R) from the original. A part cut off by a gap wider than MaximumBridgeLength (an ear
+ * behind a removed band) is not bridged: it stays a separate open piece and the hole beside it
+ * is closed without it. Lost points that project into no hole piece (thin features such as legs
+ * and ears) stay unused (Status 2, counted in NumberOfUnusedPoints).
  *
  * @sa
  * vtkIncrementalDelaunay3D vtkLocalOptimumGrowth vtkCDTAdvancingFront vtkReconstructionQuality

@@ -23,6 +23,7 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPThreadLocalObject.h"
 #include "vtkSMPTools.h"
 #include "vtkStaticPointLocator.h"
@@ -105,6 +106,31 @@ void GetVertexNeighbors(
       }
     }
   }
+}
+
+// The other end point of every edge at v, each edge once (replaces `ends`): the head of the
+// half-edge leaving v in each triangle at v (a half-edge has one triangle), plus the tail of each
+// front edge entering v (an edge whose only triangle does not leave v through it).
+void GetEdgeEnds(
+  const pcs::SurfaceMesh& mesh, Id v, std::vector<int64_t>& triangles, std::vector<Id>& ends)
+{
+  ends.clear();
+  int32_t entering[32];
+  const int count = mesh.GetBoundaryInVertices(v, entering, 32);
+  if (count > 32)
+  {
+    GetVertexNeighbors(mesh, v, triangles, ends);
+    return;
+  }
+  const int degree = mesh.GetVertexDegree(v);
+  triangles.resize(static_cast<size_t>(degree));
+  mesh.GetVertexTriangles(v, triangles.data(), degree);
+  for (int64_t t : triangles)
+  {
+    const int32_t* tri = mesh.GetTriangle(t);
+    ends.push_back(tri[0] == v ? tri[1] : tri[1] == v ? tri[2] : tri[0]);
+  }
+  ends.insert(ends.end(), entering, entering + count);
 }
 
 // The front (boundary) half-edges at v, leaving and entering it (appended).
@@ -218,11 +244,11 @@ vtkIdType RemovePinches(pcs::SurfaceMesh& mesh)
 // (a few points per bin over its volume): on a surface sample a bin is then about ten point
 // spacings wide, and every neighbourhood query of the front (a few spacings) visits many points
 // it does not return. The bins are resized to about twice the mean spacing, estimated on a
-// subset of at most 2000 points (at most 4 bins per point). This changes the cost of the queries,
-// never their answers.
-void ResizeBins(vtkStaticPointLocator* locator, const double* xyz, Id n)
+// subset of at most 500 points (at most 4 bins per point). This changes the cost of the queries,
+// never their answers. Returns the estimated spacing (0 if none).
+double ResizeBins(vtkStaticPointLocator* locator, const double* xyz, Id n)
 {
-  const Id step = std::max<Id>(1, n / 2000);
+  const Id step = std::max<Id>(1, n / 500);
   vtkNew<vtkIdList> closest;
   double sum = 0.0;
   int count = 0;
@@ -242,10 +268,11 @@ void ResizeBins(vtkStaticPointLocator* locator, const double* xyz, Id n)
   }
   double bounds[6];
   locator->GetDataSet()->GetBounds(bounds);
-  double size = count > 0 ? 2.0 * sum / count : 0.0;
+  const double estimate = count > 0 ? sum / count : 0.0;
+  double size = 2.0 * estimate;
   if (!(size > 0.0) || !std::isfinite(size))
   {
-    return;
+    return 0.0;
   }
   for (int attempt = 0; attempt < 64; ++attempt)
   {
@@ -262,10 +289,11 @@ void ResizeBins(vtkStaticPointLocator* locator, const double* xyz, Id n)
       locator->AutomaticOff();
       locator->SetDivisions(divisions);
       locator->ForceBuildLocator();
-      return;
+      return estimate;
     }
     size *= 1.26; // twice fewer bins
   }
+  return estimate;
 }
 
 //------------------------------------------------------------------------------------------------
@@ -338,16 +366,18 @@ public:
     this->Valid = filled == n;
   }
 
-  // The ids of the points within `radius` of x (in no particular order).
-  void FindPointsWithinRadius(double radius, const double* x, std::vector<Id>& result)
+  // The ids of the points within `radius` of x (in no particular order). `scratch` serves the
+  // locator's query when the bins were not copied (thread safe with one scratch per thread).
+  void FindPointsWithinRadius(
+    double radius, const double* x, std::vector<Id>& result, vtkIdList* scratch) const
   {
     result.clear();
     if (!this->Valid)
     {
-      this->Locator->FindPointsWithinRadius(radius, x, this->List);
-      for (vtkIdType k = 0; k < this->List->GetNumberOfIds(); ++k)
+      this->Locator->FindPointsWithinRadius(radius, x, scratch);
+      for (vtkIdType k = 0; k < scratch->GetNumberOfIds(); ++k)
       {
-        result.push_back(static_cast<Id>(this->List->GetId(k)));
+        result.push_back(static_cast<Id>(scratch->GetId(k)));
       }
       return;
     }
@@ -399,7 +429,6 @@ private:
   std::vector<int64_t> Offsets;
   std::vector<Id> Ids;
   std::vector<double> XYZ;
-  vtkNew<vtkIdList> List;
 };
 
 //------------------------------------------------------------------------------------------------
@@ -428,8 +457,10 @@ public:
     longest = std::max(longest, length);
   }
 
-  // The radius around x that holds every end point of an edge passing within `reach` of x;
-  // `longest` is the longest edge of the mesh (the bound when too many cells are in range).
+  // The radius around x that holds at least one end point of every edge passing within `reach`
+  // of x (the end point nearer to the edge's closest point to x: within reach plus half the
+  // edge's length); `longest` is the longest edge of the mesh (the bound when too many cells
+  // are in range).
   double Reach(const double* x, double reach, double longest) const
   {
     const double extent = reach + longest;
@@ -445,7 +476,7 @@ public:
     }
     if (cells > 343 || cells <= 0)
     {
-      return reach + longest;
+      return reach + 0.5 * longest;
     }
     double result = reach;
     for (int64_t i = low[0]; i <= high[0]; ++i)
@@ -455,7 +486,7 @@ public:
         for (int64_t k = low[2]; k <= high[2]; ++k)
         {
           const auto found = this->Cells.find(this->Key(i, j, k));
-          if (found == this->Cells.end() || reach + found->second <= result)
+          if (found == this->Cells.end() || reach + 0.5 * found->second <= result)
           {
             continue;
           }
@@ -468,7 +499,7 @@ public:
             const double gap = std::max(std::max(lo - x[c], x[c] - (lo + this->Size)), 0.0);
             d2 += gap * gap;
           }
-          const double bound = reach + found->second;
+          const double bound = reach + 0.5 * found->second;
           if (d2 <= bound * bound)
           {
             result = bound;
@@ -513,12 +544,14 @@ class Front
 {
 public:
   Front(vtkCDTAdvancingFront* self, const double* xyz, const double* normals,
-    const std::vector<uint8_t>& status, vtkStaticPointLocator* locator, pcs::SurfaceMesh& mesh)
+    const std::vector<uint8_t>& status, vtkStaticPointLocator* locator, const LocatorBins& bins,
+    pcs::SurfaceMesh& mesh)
     : Self(self)
     , XYZ(xyz)
     , Normals(normals)
     , Status(status)
     , Locator(locator)
+    , Bins(bins)
     , Mesh(mesh)
     , Stamp(status.size(), 0)
     , MaxIncident(status.size(), 0.0)
@@ -530,7 +563,6 @@ public:
           (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
           (bounds[5] - bounds[4]) * (bounds[5] - bounds[4])) +
       std::numeric_limits<double>::min();
-    this->Bins.Build(locator, xyz, static_cast<Id>(status.size()));
   }
 
   // Cell size of the edge-reach grid (a few neighbourhood radii).
@@ -576,7 +608,7 @@ private:
   // would overflow the locator's squared distances).
   void FindPoints(double radius, const double* x, std::vector<Id>& result)
   {
-    this->Bins.FindPointsWithinRadius(std::min(radius, this->Diagonal), x, result);
+    this->Bins.FindPointsWithinRadius(std::min(radius, this->Diagonal), x, result, this->Scratch);
   }
 
   bool CanAdd(Id a, Id b, Id c) const;
@@ -588,12 +620,13 @@ private:
   const double* Normals;
   const std::vector<uint8_t>& Status;
   vtkStaticPointLocator* Locator;
+  const LocatorBins& Bins;
   double Diagonal = 0.0; // of the bounding box of the points, slightly enlarged
   pcs::SurfaceMesh& Mesh;
   std::deque<std::pair<Id, Id>> Edges;
 
   // Scratch.
-  LocatorBins Bins;
+  vtkNew<vtkIdList> Scratch;
   std::vector<Id> Near;
   std::vector<Id> Ball;
   std::vector<std::pair<double, Id>> Candidates;
@@ -685,9 +718,10 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
   // blocks it only when its normal line meets the triangle within MaximumRay: the point is
   // within reach + MaximumRay of g. An edge u w crosses it only if a point of the projected
   // segment, (1 - s) u' + s w' with u' = u + t_u n_u, |t_u| <= MaximumRay (the same for w), is in
-  // the triangle: the segment u w passes within reach + MaximumRay of g, and u is within that
-  // plus |u w| of g (EdgeReachGrid bounds |u w| locally). These bounds only select what the exact
-  // tests then decide (1 % of margin against rounding).
+  // the triangle: the segment u w passes within reach + MaximumRay of g, and one of u and w is
+  // within that plus |u w| / 2 of g (EdgeReachGrid bounds |u w| locally): the edges are found
+  // from their end points in that ball. These bounds only select what the exact tests then
+  // decide (1 % of margin against rounding).
   const Id v[3] = { e0, e1, third };
   double centroid[3];
   for (int k = 0; k < 3; ++k)
@@ -764,8 +798,7 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
     {
       continue; // no edge of u reaches the triangle
     }
-    this->Neighbors.clear();
-    GetVertexNeighbors(this->Mesh, u, this->VertexTriangles, this->Neighbors);
+    GetEdgeEnds(this->Mesh, u, this->VertexTriangles, this->Neighbors);
     const bool uIsVertex = u == e0 || u == e1 || u == third;
     for (Id w : this->Neighbors)
     {
@@ -1219,7 +1252,9 @@ int vtkCDTAdvancingFront::RequestData(
   vtkNew<vtkStaticPointLocator> locator;
   locator->SetDataSet(cloud);
   locator->BuildLocator();
-  ResizeBins(locator, xyz.data(), local);
+  const double spacingEstimate = ResizeBins(locator, xyz.data(), local);
+  LocatorBins bins;
+  bins.Build(locator, xyz.data(), local);
   this->UpdateProgress(0.02);
   if (this->GetAbortExecute())
   {
@@ -1429,32 +1464,47 @@ int vtkCDTAdvancingFront::RequestData(
   }
   std::vector<double> nearest(local, -1.0);
   {
+    // The smallest non-zero distance among the points within a radius, the radius doubled from
+    // the estimated spacing until one is found or the ball holds the whole cloud.
+    double bounds[6];
+    cloud->GetBounds(bounds);
+    const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+      (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+      (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+    const double first = spacingEstimate > 0.0 ? 1.5 * spacingEstimate : diagonal;
     vtkSMPThreadLocalObject<vtkIdList> lists;
+    vtkSMPThreadLocal<std::vector<Id>> balls;
     vtkSMPTools::For(0, local,
       [&](vtkIdType begin, vtkIdType end)
       {
-        vtkIdList* closest = lists.Local();
+        vtkIdList* scratch = lists.Local();
+        std::vector<Id>& ball = balls.Local();
         for (vtkIdType k = begin; k < end; ++k)
         {
           if (status[k] != Usable)
           {
             continue;
           }
-          for (int n = 2; n <= 2 * local; n *= 2)
+          for (double radius = first;; radius *= 2.0)
           {
-            locator->FindClosestNPoints(n, &xyz[3 * k], closest);
-            for (vtkIdType j = 0; j < closest->GetNumberOfIds(); ++j)
+            bins.FindPointsWithinRadius(radius, &xyz[3 * k], ball, scratch);
+            double best = -1.0;
+            for (Id j : ball)
             {
-              const double d2 = Distance2(&xyz[3 * closest->GetId(j)], &xyz[3 * k]);
-              if (d2 > 0.0)
+              const double d2 = Distance2(&xyz[3 * static_cast<size_t>(j)], &xyz[3 * k]);
+              if (d2 > 0.0 && (best < 0.0 || d2 < best))
               {
-                nearest[k] = std::sqrt(d2);
-                break;
+                best = d2;
               }
             }
-            if (nearest[k] >= 0.0 || closest->GetNumberOfIds() < n)
+            if (best > 0.0)
             {
+              nearest[k] = std::sqrt(best);
               break;
+            }
+            if (!(radius > 0.0) || !(radius <= 2.0 * diagonal))
+            {
+              break; // no other distinct point
             }
           }
         }
@@ -1504,7 +1554,7 @@ int vtkCDTAdvancingFront::RequestData(
 
   // III.A and III.B: seeds in input order, each grown by the advancing front.
   pcs::SurfaceMesh mesh(local);
-  Front front(this, xyz.data(), normals.data(), status, locator, mesh);
+  Front front(this, xyz.data(), normals.data(), status, locator, bins, mesh);
   front.SetEdgeReachCellSize(2.0 * strict.Radius);
   for (Id p = 0; p < local && !front.Aborted; ++p)
   {

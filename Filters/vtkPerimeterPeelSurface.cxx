@@ -281,6 +281,7 @@ public:
     this->Stamp.assign(this->DT.GetNumberOfCells(), 0);
     this->Failed.assign(this->DT.GetNumberOfCells(), 0);
     this->Bad.assign(solid.Count.size(), 0);
+    this->Dirty.assign(solid.Count.size(), 0);
   }
 
   // Forget the failed groups (a new threshold).
@@ -295,9 +296,21 @@ public:
     this->BadCount = 0;
     std::priority_queue<std::pair<double, int64_t>> grow;
     bool ok = this->Add(c, threshold, grow);
-    while (ok && this->BadCount > 0)
+    while (ok)
     {
-      if (grow.empty() || static_cast<int64_t>(this->Group.size()) >= this->MaximumGroup)
+      // The link of a vertex on the rim of a large flat layer holds thousands of cells: the
+      // links are checked after each of the first 8 cells, then when the group doubles.
+      const int64_t size = static_cast<int64_t>(this->Group.size());
+      const bool last = grow.empty() || size >= this->MaximumGroup;
+      if (size <= 8 || (size & (size - 1)) == 0 || last)
+      {
+        this->CheckDirtyVertices();
+        if (this->BadCount == 0)
+        {
+          break;
+        }
+      }
+      if (last)
       {
         ok = false;
         break;
@@ -344,9 +357,11 @@ public:
         for (int k = 0; k < 4; ++k)
         {
           this->Bad[this->DT.Vertex(g, k)] = 0;
+          this->Dirty[this->DT.Vertex(g, k)] = 0;
         }
       }
       this->Group.clear();
+      this->DirtyVertices.clear();
     }
     return ok;
   }
@@ -480,6 +495,19 @@ private:
     return euler;
   }
 
+  // Check the links of the vertices whose cells changed since the last check.
+  void CheckDirtyVertices()
+  {
+    for (const auto& vc : this->DirtyVertices)
+    {
+      const bool bad = !this->ManifoldAt(vc.first, vc.second);
+      this->BadCount += (bad ? 1 : 0) - this->Bad[vc.first];
+      this->Bad[vc.first] = bad ? 1 : 0;
+      this->Dirty[vc.first] = 0;
+    }
+    this->DirtyVertices.clear();
+  }
+
   // Whether c shows the outside a facet whose measure is at most the threshold.
   bool ShowsSmallFacet(int64_t c, double threshold) const
   {
@@ -506,9 +534,11 @@ private:
       {
         return false;
       }
-      const bool bad = !this->ManifoldAt(v, c);
-      this->BadCount += (bad ? 1 : 0) - this->Bad[v];
-      this->Bad[v] = bad ? 1 : 0;
+      if (!this->Dirty[v])
+      {
+        this->Dirty[v] = 1;
+        this->DirtyVertices.emplace_back(v, c);
+      }
     }
     for (int k = 0; k < 4; ++k)
     {
@@ -637,7 +667,8 @@ private:
   std::vector<uint32_t> Stamp;
   uint32_t Generation = 0;
   std::vector<uint8_t> Failed;
-  std::vector<uint8_t> Bad;
+  std::vector<uint8_t> Bad, Dirty;
+  std::vector<std::pair<int32_t, int64_t>> DirtyVertices; // vertex, a cell of it
   int64_t BadCount = 0;
   std::vector<int64_t> Star, Fill;
   std::unordered_map<int64_t, int64_t> Label;

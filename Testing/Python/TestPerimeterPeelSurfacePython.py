@@ -1,0 +1,151 @@
+"""vtkPerimeterPeelSurface from Python, and its ParaView proxy.
+
+Usage: python3 TestPerimeterPeelSurfacePython.py           (the wrapped class)
+       pvpython TestPerimeterPeelSurfacePython.py <plugin> (the PerimeterPeelSurface proxy too)
+
+Expectations known by construction: 1000 points on a Fibonacci spiral of the unit sphere give a
+closed genus-0 surface of 2V - 4 = 1996 triangles over every point; 3000 points of a golden-ratio
+lattice on a torus give a closed genus-1 surface of 2V triangles (the hole opens by a group
+removal); the paper's peeling (ManifoldOutput off) keeps every point; the parameters have the
+documented defaults and clamp to their documented ranges; the proxy's defaults equal the class's.
+"""
+import math
+import sys
+
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+from pointcloudsurface import vtkPerimeterPeelSurface, vtkReconstructionQuality
+
+
+def check(condition, message):
+    if not condition:
+        print("FAILED:", message)
+        sys.exit(1)
+
+
+def cloud(coordinates):
+    points = vtkPoints()
+    for p in coordinates:
+        points.InsertNextPoint(p)
+    data = vtkPolyData()
+    data.SetPoints(points)
+    return data
+
+
+def fibonacci_sphere(n):
+    golden = math.pi * (1.0 + math.sqrt(5.0))
+    out = []
+    for i in range(n):
+        phi = math.acos(1.0 - 2.0 * (i + 0.5) / n)
+        theta = golden * (i + 0.5)
+        out.append((math.cos(theta) * math.sin(phi), math.sin(theta) * math.sin(phi),
+                    math.cos(phi)))
+    return cloud(out)
+
+
+def lattice_torus(n, ring=1.0, tube=0.35):
+    """Golden-ratio lattice, uniform by area: the tube angle b solves
+    (b + tube/ring sin b) / (2 pi) = u for evenly spaced u."""
+    golden = (math.sqrt(5.0) - 1.0) / 2.0
+    out = []
+    for i in range(n):
+        a = 2 * math.pi * ((i * golden) % 1.0)
+        u = 2 * math.pi * (i + 0.5) / n
+        b = u
+        for _ in range(50):
+            b -= (b + tube / ring * math.sin(b) - u) / (1.0 + tube / ring * math.cos(b))
+        r = ring + tube * math.cos(b)
+        out.append((r * math.cos(a), r * math.sin(a), tube * math.sin(b)))
+    return cloud(out)
+
+
+def quality(mesh):
+    q = vtkReconstructionQuality()
+    q.SetInputData(mesh)
+    q.ComputeDistancesOff()
+    q.Update()
+    fd = q.GetOutput().GetFieldData()
+    return {name: fd.GetArray(name).GetValue(0) for name in (
+        "Genus", "Coverage", "NumberOfBoundaryEdges", "NumberOfNonManifoldEdges",
+        "NumberOfNonManifoldVertices", "OrientationConsistency")}
+
+
+DEFAULTS = {"ThresholdFactor": 1.0, "ConvergenceTolerance": 0.01, "Threshold": 0.0,
+            "FacetMeasure": 0, "MaximumIterations": 100, "GroupFactor": 4.0,
+            "ManifoldOutput": True}
+RANGES = {"ThresholdFactor": (0.01, 1000.0), "ConvergenceTolerance": (0.0, 1.0),
+          "FacetMeasure": (0, 2), "MaximumIterations": (1, 100000), "GroupFactor": (1.0, 1000.0)}
+
+peel = vtkPerimeterPeelSurface()
+for name, value in DEFAULTS.items():
+    got = getattr(peel, "Get" + name)()
+    check(abs(got - value) < 1e-12, "default %s = %s (got %s)" % (name, value, got))
+for name, (low, high) in RANGES.items():
+    probe = vtkPerimeterPeelSurface()
+    getattr(probe, "Set" + name)(type(low)(-10**9))
+    check(getattr(probe, "Get" + name)() == low, "%s clamps to %s" % (name, low))
+    getattr(probe, "Set" + name)(type(high)(10**9))
+    check(getattr(probe, "Get" + name)() == high, "%s clamps to %s" % (name, high))
+check("GroupFactor" in str(peel), "PrintSelf prints the parameters")
+
+n = 1000
+peel.SetInputData(fibonacci_sphere(n))
+peel.Update()
+mesh = peel.GetOutput()
+check(mesh.GetNumberOfPoints() == n, "all points passed through")
+check(mesh.GetNumberOfPolys() == 2 * n - 4, "2V-4 triangles (got %d)" % mesh.GetNumberOfPolys())
+fd = mesh.GetFieldData()
+for name in ("NumberOfIterations", "FinalThreshold", "NumberOfTetrahedra",
+             "NumberOfRemovedTetrahedra", "NumberOfGroupRemovals", "NumberOfTriangles",
+             "NumberOfUsedPoints", "NumberOfUnusedPoints", "DelaunayTime", "PeelTime"):
+    check(fd.GetArray(name) is not None, "field data %s" % name)
+check(fd.GetArray("NumberOfTriangles").GetValue(0) == 2 * n - 4, "field data NumberOfTriangles")
+check(fd.GetArray("NumberOfUnusedPoints").GetValue(0) == 0, "no unused point")
+used = mesh.GetPointData().GetArray("Used")
+check(used is not None and all(used.GetValue(i) == 1 for i in range(n)), "point data Used")
+q = quality(mesh)
+check(q["Genus"] == 0 and q["NumberOfBoundaryEdges"] == 0, "closed genus 0 (%s)" % q)
+check(q["NumberOfNonManifoldVertices"] == 0 and q["OrientationConsistency"] == 1.0,
+      "manifold, consistently oriented (%s)" % q)
+
+torus = vtkPerimeterPeelSurface()
+torus.SetInputData(lattice_torus(3000))
+torus.Update()
+q = quality(torus.GetOutput())
+print("torus:", torus.GetOutput().GetNumberOfPolys(), "triangles", q)
+check(q["Genus"] == 1 and q["NumberOfBoundaryEdges"] == 0 and q["Coverage"] >= 0.99,
+      "torus: closed, genus 1, >= 99 %% of the points (%s)" % q)
+check(torus.GetOutput().GetFieldData().GetArray("NumberOfGroupRemovals").GetValue(0) >= 1,
+      "torus: the hole opened by a group removal")
+
+paper = vtkPerimeterPeelSurface()
+paper.SetInputData(lattice_torus(3000))
+paper.ManifoldOutputOff()
+paper.Update()
+check(paper.GetOutput().GetFieldData().GetArray("NumberOfUnusedPoints").GetValue(0) == 0,
+      "the paper's peeling orphans no point")
+
+if len(sys.argv) > 1:
+    from paraview import servermanager
+    from paraview.simple import LoadPlugin, TrivialProducer
+
+    LoadPlugin(sys.argv[1], ns=globals())
+    check("PerimeterPeelSurface" in globals(), "LoadPlugin defines PerimeterPeelSurface")
+    producer = TrivialProducer()
+    producer.GetClientSideObject().SetOutput(fibonacci_sphere(n))
+    proxy = PerimeterPeelSurface(Input=producer)  # noqa: F821 (defined by LoadPlugin)
+    for name, value in DEFAULTS.items():
+        if name == "FacetMeasure":  # an enumeration: its text
+            got = ["Perimeter", "Area", "Circumradius"].index(str(proxy.FacetMeasure).strip("'\""))
+        else:
+            got = proxy.GetPropertyValue(name)
+        check(abs(got - value) < 1e-9, "proxy default %s = %s (got %s)" % (name, value, got))
+    proxy.UpdatePipeline()
+    out = servermanager.Fetch(proxy)
+    check(out.GetNumberOfPolys() == 2 * n - 4, "proxy output 2V-4 (got %d)" % out.GetNumberOfPolys())
+    proxy.ThresholdFactor = 1000.0  # keeps the whole hull: still the same closed sphere
+    proxy.UpdatePipeline()
+    out = servermanager.Fetch(proxy)
+    check(out.GetNumberOfPolys() == 2 * n - 4, "proxy with ThresholdFactor 1000: the hull")
+print("ok")

@@ -196,7 +196,6 @@ private:
   bool WedgesOk(Id x, Id y, Id z);
   bool CrossesFront(Id x, Id y, Id z);
   bool FacesFrame(Id s, Id e) const;
-  bool FacesAway(Id q);
   bool Blocked(Id x, Id y, Id z);
   bool ProjectedValid(Id x, Id y, Id z)
   {
@@ -529,27 +528,8 @@ bool Grower::FacesFrame(Id s, Id e) const
   return o >= 0 && UnitNormal(this->P3(s), this->P3(e), this->P3(o), n) && Dot(n, this->W) > 0.0;
 }
 
-// Every triangle at the meshed vertex q faces away from the frame (its normal makes an obtuse
-// or right angle with W): q belongs to another sheet, e.g. the far side of a thin feature.
-bool Grower::FacesAway(Id q)
-{
-  int64_t around[64];
-  const int count = std::min(this->Mesh.GetVertexTriangles(q, around, 64), 64);
-  for (int i = 0; i < count; ++i)
-  {
-    const int32_t* t = this->Mesh.GetTriangle(around[i]);
-    double n[3];
-    if (!UnitNormal(this->P3(t[0]), this->P3(t[1]), this->P3(t[2]), n) || Dot(n, this->W) > 0.0)
-    {
-      return false;
-    }
-  }
-  return count > 0;
-}
-
 // A blocking point lies in the closed projected triangle (x, y, z) (counter-clockwise). Points
-// of another sheet do not block: farther from the triangle's mean height than its longest edge,
-// or meshed with every triangle facing away (FacesAway).
+// of another sheet (farther from the triangle's mean height than its longest edge) do not block.
 bool Grower::Blocked(Id x, Id y, Id z)
 {
   const double* a = this->P2(x);
@@ -571,10 +551,6 @@ bool Grower::Blocked(Id x, Id y, Id z)
     const double* p = this->P2(q);
     if (p[0] < xmin || p[0] > xmax || p[1] < ymin || p[1] > ymax ||
       std::fabs(this->Height(q) - level) > reach)
-    {
-      continue;
-    }
-    if (!this->Mesh.IsFree(q) && this->FacesAway(q))
     {
       continue;
     }

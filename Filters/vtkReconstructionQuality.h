@@ -88,8 +88,8 @@
  * Polygons with more or fewer than 3 points and triangle strips are ignored (not triangulated),
  * with a warning; vertex and line cells are ignored silently. Triangles with out-of-range point
  * ids are ignored with a warning. An input without points or without triangles gives a warning
- * and a valid output with zero counts. The measures are computed on the data each process holds:
- * under MPI every rank analyses its own piece.
+ * and a valid output with zero counts. Under MPI the mesh and the reference are gathered on
+ * process 0, which measures them whole (the serial result); the other processes' outputs are empty.
  *
  * @sa
  * vtkIncrementalDelaunay3D vtkMeshQuality vtkFeatureEdges vtkDistancePolyDataFilter

@@ -12,8 +12,9 @@ the ones counted here.
 
 The XML against the classes (the Python package's wrapped classes): every proxy has long and
 short help and the menu category "Point Cloud Surface", every property has documentation; each
-one-number property's default is the class's default (doubles to 1e-9 relative: the XML writes
-decimals), its range domain is the class's clamp range (no max = VTK_DOUBLE_MAX), a clamped
+one-number property's default is the class's default, exactly (a double written with enough
+digits to read back as the same double, e.g. 0.3333333333333333 for 1/3), in the XML and in the
+proxy ParaView makes from it, so ParaView sends the class's own defaults; its range domain is the class's clamp range (no max = VTK_DOUBLE_MAX), a clamped
 parameter has a range, boolean or enumeration domain, an enumeration lists exactly the clamp
 range; and every parameter of the class (its own Set/Get pairs, as the command line finds them)
 has a property.
@@ -159,8 +160,6 @@ import pointcloudsurface  # noqa: E402
 from pointcloudsurface.methods import discover_parameters  # noqa: E402
 
 
-def close(a, b):
-    return a == b or abs(a - b) <= 1e-9 * (abs(a) + abs(b))
 
 
 for element in ElementTree.parse(xml_path).iter("SourceProxy"):
@@ -169,6 +168,8 @@ for element in ElementTree.parse(xml_path).iter("SourceProxy"):
     if not check(cls is not None, "%s: class %s in the package" % (name, class_name)):
         continue
     instance = cls()
+    live_proxy = servermanager.ProxyManager().NewProxy("filters", name)
+    check(live_proxy is not None, "%s: ParaView makes the proxy" % name)
     doc = element.find("Documentation")
     check(doc is not None and doc.get("long_help") and doc.get("short_help"),
           "%s: long_help and short_help" % name)
@@ -190,8 +191,11 @@ for element in ElementTree.parse(xml_path).iter("SourceProxy"):
         exposed.add(parameter)
         default = float(prop.get("default_values"))
         actual = getattr(instance, "Get" + parameter)()
-        check(close(float(actual), default), "%s: XML default %r = class default %r"
+        check(float(actual) == default, "%s: XML default %r = class default %r"
               % (label, default, actual))
+        live = live_proxy.GetProperty(prop.get("name")).GetElement(0)
+        check(float(live) == float(actual), "%s: the proxy's default %r = class default %r"
+              % (label, live, actual))
         clamped = hasattr(instance, "Get%sMinValue" % parameter)
         low = getattr(instance, "Get%sMinValue" % parameter)() if clamped else None
         high = getattr(instance, "Get%sMaxValue" % parameter)() if clamped else None

@@ -8,7 +8,8 @@ vtkPolyData with every input point (1,010), the point data passed, triangles onl
 ids in range and no triangle with a repeated id; its Used array (when it has one) must be the
 triangles' vertex set, with used points > 0 and never both copies of a duplicate used. The
 ReconstructionQuality proxy then measures each mesh: its triangle and used-point counts must be
-the ones counted here.
+the ones counted here. Progress: every filter reports intermediate progress and ParaView's
+progress handler (what feeds the GUI's progress bar) relays events of its class.
 
 The XML against the classes (the Python package's wrapped classes): every proxy has long and
 short help and the menu category "Point Cloud Surface", every property has documentation; each
@@ -79,6 +80,8 @@ from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 xml_path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Plugin",
                         "PointCloudSurface.xml")
 proxies = [element.get("name") for element in ElementTree.parse(xml_path).iter("SourceProxy")]
+classes = {element.get("name"): element.get("class")
+           for element in ElementTree.parse(xml_path).iter("SourceProxy")}
 print("proxies in the XML:", ", ".join(proxies))
 check("IncrementalDelaunay3D" in proxies and "ReconstructionQuality" in proxies
       and len(proxies) >= 5, "the XML lists the filters")
@@ -106,13 +109,51 @@ out.GetPointData().AddArray(label)
 cloud.UpdatePipeline()
 total = POINTS + DUPLICATES
 
+# ParaView's progress bar is fed by the session's progress handler, which relays the
+# ProgressEvents of the algorithms registered with it (text: the class name; value: percent;
+# at most one per ProgressInterval, 0.01 s at least, so a fast run may show only its start).
+# Deterministic checks: the handler relays events of the filter's class (ParaView observes it),
+# and the filter itself reports intermediate progress (0 < p < 1, besides the pipeline's 0 and
+# 1), observed on the server-side object (built-in session).
+from vtkmodules.vtkCommonCore import vtkCommand  # noqa: E402
+
+# Imported before any server-side object reaches Python: an object of a class Python does not
+# know yet would register the class name with its base's wrapper (vtkPolyDataAlgorithm), and the
+# package's classes could not be used after it.
+import pointcloudsurface  # noqa: E402,F401
+
+progress_handler = servermanager.ActiveConnection.Session.GetProgressHandler()
+progress_handler.SetProgressInterval(0.01)
+relayed = []
+progress_handler.AddObserver(vtkCommand.ProgressEvent,
+                             lambda handler, event: relayed.append(handler.GetLastProgressText()))
+own_progress = []
+
+
+def watch_progress(proxy):
+    del relayed[:], own_progress[:]
+    proxy.GetClientSideObject().AddObserver(
+        vtkCommand.ProgressEvent, lambda algorithm, event: own_progress.append(
+            algorithm.GetProgress()))
+
+
+def check_progress(name):
+    check(classes[name] in relayed, "%s: ParaView's progress handler relays %s's progress "
+          "(relayed: %s)" % (name, classes[name], sorted(set(relayed))))
+    middle = [p for p in own_progress if 0.0 < p < 1.0]
+    check(len(middle) > 0, "%s: intermediate progress reported (got %s)" % (name, own_progress))
+    return len(middle)
+
+
 ran = []
 for name in proxies:
     if name == "ReconstructionQuality":
         continue
     check(name in globals(), "LoadPlugin defines %s" % name)
     proxy = globals()[name](Input=cloud)
+    watch_progress(proxy)
     proxy.UpdatePipeline()
+    steps = check_progress(name)
     mesh = servermanager.Fetch(proxy, None, None, 0)
     check(mesh is not None and mesh.IsA("vtkPolyData"), "%s: output 0 is a vtkPolyData" % name)
     check(mesh.GetNumberOfPoints() == total, "%s: all %d points pass through (got %d)"
@@ -142,15 +183,19 @@ for name in proxies:
         check(np.array_equal(vtk_to_numpy(used_array) != 0, used),
               "%s: point data Used is the triangles' vertex set" % name)
     quality = ReconstructionQuality(Input=proxy)  # noqa: F821 (defined by LoadPlugin)
+    watch_progress(quality)
     quality.UpdatePipeline()
+    quality_steps = check_progress("ReconstructionQuality")
     fd = servermanager.Fetch(quality).GetFieldData()
     check(fd.GetArray("NumberOfTriangles").GetTuple1(0) == triangles,
           "%s: ReconstructionQuality counts the triangles" % name)
     check(fd.GetArray("NumberOfUsedPoints").GetTuple1(0) == used.sum(),
           "%s: ReconstructionQuality counts the used points" % name)
-    print("%s: %d points, %d triangles, %d used, %d boundary edges, %d non-manifold edges" % (
-        name, total, triangles, used.sum(), fd.GetArray("NumberOfBoundaryEdges").GetTuple1(0),
-        fd.GetArray("NumberOfNonManifoldEdges").GetTuple1(0)))
+    print("%s: %d points, %d triangles, %d used, %d boundary edges, %d non-manifold edges; "
+          "progress steps %d (quality %d), relayed to ParaView's progress handler" % (
+              name, total, triangles, used.sum(),
+              fd.GetArray("NumberOfBoundaryEdges").GetTuple1(0),
+              fd.GetArray("NumberOfNonManifoldEdges").GetTuple1(0), steps, quality_steps))
     ran.append(name)
 check(len(ran) == len(proxies) - 1, "every reconstruction proxy ran")
 

@@ -303,6 +303,13 @@ def discover_parameters(cls):
                 choices[other[len(prefix):]] = getattr(probe, "Get" + name)()
         parameters.append(Parameter(name, kind, default, minimum, maximum, choices,
                                     _doc_text(getattr(cls, setter))))
+    # The wrapper gives a group's comment (///@{ ... ///@}) to its first method only: a
+    # parameter documented together with another takes the comment that names it.
+    for parameter in parameters:
+        if not parameter.doc:
+            pattern = re.compile(r"\b%s\b" % parameter.name)
+            parameter.doc = next((other.doc for other in parameters
+                                  if other.doc and pattern.search(other.doc)), "")
     return parameters
 
 

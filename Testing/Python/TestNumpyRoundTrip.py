@@ -136,6 +136,24 @@ check(parameters["GenerateVoronoi"].kind == "bool", "GenerateVoronoi is a boolea
 check("Default 0" in parameters["Tolerance"].doc, "help text from the class documentation")
 check("NumberOfInputPoints" not in parameters, "read-only counts are not parameters")
 
+# Docstrings from the class documentation: every class's docstring is its @class/@brief block
+# and more, every parameter has help text giving its default (a parameter documented in a group
+# with another takes the group's comment).
+from pointcloudsurface.methods import discover_parameters  # noqa: E402
+
+classes = [n for n in dir(pointcloudsurface) if n.startswith("vtk")
+           and isinstance(getattr(pointcloudsurface, n), type)
+           and hasattr(getattr(pointcloudsurface, n), "SetInputConnection")]
+check(len(classes) >= 2, "filter classes in the package (got %s)" % classes)
+for name in classes:
+    cls = getattr(pointcloudsurface, name)
+    doc = cls.__doc__ or ""
+    check(doc.startswith(name + " - ") and len(doc) > 1000,
+          "%s: the docstring is the class documentation (got %r)" % (name, doc[:80]))
+    for parameter in discover_parameters(cls):
+        check("default" in parameter.doc.lower(), "%s.%s: help text with its default (got %r)"
+              % (name, parameter.name, parameter.doc[:80]))
+
 for bad, text in (({"Dimension": 4}, "out of range"), ({"Tolerance": -1.0}, "out of range"),
                   ({"Dimension": "two"}, "not an integer"),
                   ({"GenerateVoronoi": "maybe"}, "not a boolean"),

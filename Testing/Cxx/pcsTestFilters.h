@@ -68,8 +68,9 @@ inline std::vector<FilterInfo> AllFilters()
     { "vtkCDTAdvancingFront", NewFilter<vtkCDTAdvancingFront>, false, true, true });
 #endif
 #ifdef PCS_HAVE_GREEDY
+  // An oriented 2-manifold with boundary (its class documentation).
   filters.push_back({ "vtkGreedySurfaceTriangulation",
-    NewFilter<vtkGreedySurfaceTriangulation>, false, false, true });
+    NewFilter<vtkGreedySurfaceTriangulation>, false, true, true });
 #endif
   return filters;
 }

@@ -4,6 +4,7 @@
 #include "pcsGatherInput.h"
 #include "pcsHoleFilling.h"
 #include "pcsNearestNeighbors.h"
+#include "pcsPointInsertion.h"
 #include "pcsPredicates.h"
 #include "pcsProjectedTests.h"
 #include "pcsSurfaceMesh.h"
@@ -158,7 +159,7 @@ public:
 
   // Counts.
   vtkIdType LostPoints = 0, Islands = 0, Holes = 0, Bridges = 0, Chords = 0, HolesFilled = 0,
-            HolesLeftOpen = 0, Swaps = 0;
+            HolesLeftOpen = 0, Swaps = 0, Inserted = 0;
   bool Aborted = false;
 
   const double* P(int32_t i) const { return &this->X[3 * static_cast<size_t>(i)]; }
@@ -178,6 +179,8 @@ public:
   void Step3Status();
   void Step4Bridges();
   void Step6FillHoles(double begin, double end);
+  void InsertLostPoints(double begin, double end);
+  void CloseSharpEars(int32_t start);
   void Step7Swaps();
   void OrientOutwards();
 
@@ -1535,6 +1538,134 @@ void Reconstruction::Step6FillHoles(double begin, double end)
 }
 
 //------------------------------------------------------------------------------------------------
+// After step 6: the lost points still unused are connected to the nearest triangle within reach
+// (pcsPointInsertion.h), in passes until no more can be (a point far from the mesh becomes
+// reachable once its neighbours are inserted). The edges of the replaced triangles join the
+// step 7 swap candidates.
+void Reconstruction::InsertLostPoints(double begin, double end)
+{
+  if (!this->Self->GetInsertLostPoints() || !this->Self->GetFillHoles())
+  {
+    return;
+  }
+  std::vector<int32_t> pending;
+  for (int32_t v = 0; v < this->N; ++v)
+  {
+    if (this->Status[v] == vtkGreedySurfaceTriangulation::LOST && this->Mesh.IsFree(v))
+    {
+      pending.push_back(v);
+    }
+  }
+  const size_t initial = pending.size();
+  pcs::PointInsertionResult result;
+  bool progress = true;
+  while (progress && !pending.empty())
+  {
+    if (!this->Progress(begin + (end - begin) * (1.0 - pending.size() / static_cast<double>(initial))))
+    {
+      return;
+    }
+    progress = false;
+    size_t kept = 0;
+    for (int32_t q : pending)
+    {
+      const bool inserted = pcs::InsertFreePoint(this->Mesh, this->X.data(), q,
+        &this->Neighbors[static_cast<size_t>(q) * this->K], this->K, true, result);
+      const size_t ids = static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds());
+      this->Stage.resize(ids, 8);
+      for (const auto& moved : result.Restored)
+      {
+        this->Stage[moved.second] = this->Stage[moved.first];
+      }
+      if (!inserted)
+      {
+        pending[kept++] = q;
+        continue;
+      }
+      this->Status[q] = vtkGreedySurfaceTriangulation::LOST_USED_BY_HOLE_FILLING;
+      this->Links.insert(this->Links.end(), result.OldEdges.begin(), result.OldEdges.end());
+      ++this->Inserted;
+      progress = true;
+      if (result.Added.size() == 1)
+      {
+        this->CloseSharpEars(q); // attached across a boundary edge
+      }
+    }
+    pending.resize(kept);
+  }
+}
+
+// A point attached across a boundary edge a -> b leaves the boundary a -> q -> b: the ears at a,
+// q and b whose angle is below 90 degrees are closed (triangle (v, p, n) over the front
+// p -> v -> n), and then those at the ends of each new front edge, so that the attachments of a
+// row of lost points do not leave a zig-zag boundary. An ear is closed only when it keeps the
+// manifold, is not degenerate and does not fold against its two neighbouring triangles.
+void Reconstruction::CloseSharpEars(int32_t start)
+{
+  std::vector<int32_t> work;
+  auto push = [&](int32_t v) {
+    if (this->Mesh.GetVertexState(v) == pcs::SurfaceMesh::VertexState::Boundary &&
+      this->Mesh.GetNumberOfFans(v) == 1)
+    {
+      work.push_back(v);
+    }
+  };
+  push(start);
+  int32_t ends[2];
+  if (this->Mesh.GetBoundaryOutVertices(start, ends, 1) == 1)
+  {
+    push(ends[0]);
+  }
+  if (this->Mesh.GetBoundaryInVertices(start, ends, 1) == 1)
+  {
+    push(ends[0]);
+  }
+  auto normal = [this](int32_t a, int32_t b, int32_t c, double n[3]) {
+    double u[3], v[3];
+    vtkMath::Subtract(this->P(b), this->P(a), u);
+    vtkMath::Subtract(this->P(c), this->P(a), v);
+    vtkMath::Cross(u, v, n);
+  };
+  for (size_t i = 0; i < work.size() && i < 64; ++i)
+  {
+    const int32_t v = work[i];
+    int32_t n = -1, p = -1;
+    if (this->Mesh.GetNumberOfFans(v) != 1 || this->Mesh.GetBoundaryOutVertices(v, &n, 1) != 1 ||
+      this->Mesh.GetBoundaryInVertices(v, &p, 1) != 1 || n == p)
+    {
+      continue;
+    }
+    double u[3], w[3];
+    vtkMath::Subtract(this->P(p), this->P(v), u);
+    vtkMath::Subtract(this->P(n), this->P(v), w);
+    if (!(vtkMath::Dot(u, w) > 0)) // 90 degrees or more
+    {
+      continue;
+    }
+    // The triangles owning p -> v and v -> n.
+    const int32_t c1 = this->Mesh.OppositeVertex(p, v), c2 = this->Mesh.OppositeVertex(v, n);
+    if (c1 < 0 || c2 < 0 ||
+      this->Mesh.CanAddTriangle(v, p, n) != pcs::SurfaceMesh::Check::Ok ||
+      pcs::projected::Collinear(this->P(v), this->P(p), this->P(n)))
+    {
+      continue;
+    }
+    double ear[3], n1[3], n2[3];
+    normal(v, p, n, ear);
+    normal(p, v, c1, n1);
+    normal(v, n, c2, n2);
+    if (!(vtkMath::Dot(ear, n1) > 0 && vtkMath::Dot(ear, n2) > 0))
+    {
+      continue;
+    }
+    this->Mesh.AddTriangle(v, p, n);
+    this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 8);
+    push(p);
+    push(n);
+  }
+}
+
+//------------------------------------------------------------------------------------------------
 // Step 7: bridge and chord edges replaced by the shorter diagonal of their two triangles.
 void Reconstruction::Step7Swaps()
 {
@@ -1594,9 +1725,14 @@ void Reconstruction::Step7Swaps()
       {
         this->Mesh.RemoveTriangle(u1);
       }
-      this->Mesh.AddTriangle(a, b, c);
-      this->Mesh.AddTriangle(b, a, d);
+      const int64_t r1 = this->Mesh.AddTriangle(a, b, c);
+      const int64_t r2 = this->Mesh.AddTriangle(b, a, d);
       this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 6);
+      if (r1 >= 0 && r2 >= 0)
+      {
+        this->Stage[r1] = this->Stage[t1];
+        this->Stage[r2] = this->Stage[t2];
+      }
       continue;
     }
     this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 7);
@@ -1749,6 +1885,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
     pcs::AddFieldCount(fd, "NumberOfHolesFilled", r.HolesFilled);
     pcs::AddFieldCount(fd, "NumberOfHolesLeftOpen", r.HolesLeftOpen);
     pcs::AddFieldCount(fd, "NumberOfSwaps", r.Swaps);
+    pcs::AddFieldCount(fd, "NumberOfInsertedPoints", r.Inserted);
     pcs::AddFieldCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
     pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", duplicates);
     pcs::AddFieldCount(fd, "NumberOfSkippedPoints", skipped);
@@ -1979,10 +2116,19 @@ int vtkGreedySurfaceTriangulation::RequestData(
   {
     steps += ", 6";
   }
+  r.InsertLostPoints(0.97, 0.98);
+  if (r.Aborted)
+  {
+    return finish();
+  }
   r.Step7Swaps();
   if (r.Bridges + r.Chords > 0)
   {
     steps += ", 7";
+  }
+  if (r.Inserted > 0)
+  {
+    steps += ", 8";
   }
   r.OrientOutwards();
 
@@ -2055,6 +2201,7 @@ void vtkGreedySurfaceTriangulation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AuxiliaryPointDistance: " << this->AuxiliaryPointDistance << "\n";
   os << indent << "MaximumHolePoints: " << this->MaximumHolePoints << "\n";
   os << indent << "SwapBridgeEdges: " << this->SwapBridgeEdges << "\n";
+  os << indent << "InsertLostPoints: " << this->InsertLostPoints << "\n";
   os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";
   os << indent << "NumberOfLostPoints: " << this->NumberOfLostPoints << "\n";
   os << indent << "NumberOfIslands: " << this->NumberOfIslands << "\n";

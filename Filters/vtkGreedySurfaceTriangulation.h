@@ -91,19 +91,31 @@
  *   points throughout) and, when SwapBridgeEdges is on, every bridge or chord edge AB whose two
  *   triangles ABC, BAD have |CD| < |AB| is replaced by CD, unless CD is an edge already or the
  *   swap would fold the surface (a new triangle facing against the old ones).
+ * - Lost point insertion (ours, when InsertLostPoints and FillHoles are on; "step 8" in
+ *   StepsUsed, run before step 7): the paper connects lost points only through the holes that
+ *   contain them; on thin features (legs, ears) and beside the parts cut off by a removed band
+ *   many lost points project into no hole piece. Each lost point still unused is connected to
+ *   the nearest triangle at its nearest neighbours (pcsPointInsertion.h): the triangle is split
+ *   into three when the point projects inside it (exact test), the edge it lies nearest to is
+ *   split (its two triangles into four) otherwise, and beyond a boundary edge a triangle is
+ *   attached across that edge; a triangle farther than its longest edge is out of reach. The
+ *   passes repeat until no point can be inserted, so a point far from the mesh is reached
+ *   through its neighbours. After an attachment, the boundary ears at the new point and its two
+ *   boundary neighbours sharper than 90 degrees are closed (no zig-zag boundary). The edges of
+ *   the split triangles join the step 7 swap candidates.
  * Finally every closed component is oriented outwards (positive volume).
  *
  * Output (vtkPolyData): all input points and their point data, the triangles (consistently
  * oriented, an oriented 2-manifold with boundary), point data `Used` (1 for triangle vertices),
  * `Status` (0: correct after step 2, 1: boundary of a correct region, 2: lost and left unused,
- * 3: lost and used by hole filling, 4: not triangulated -- an exact duplicate of another point
+ * 3: lost and used by hole filling or lost point insertion, 4: not triangulated -- an exact duplicate of another point
  * or non-finite; every point when the cloud has fewer than 3 distinct finite points),
  * `LocalUniformity` (m); cell data `Stage` (1: step 1 triangle kept by step 2,
- * 6: hole filling, 7: made by a step 7 swap); field data `NumberOfTriangles`,
- * `NumberOfLostPoints` (after step 2), `NumberOfIslands`, `NumberOfHoles` (after step 4),
- * `NumberOfBridges`, `NumberOfChords`, `NumberOfHolesFilled`, `NumberOfHolesLeftOpen`,
- * `NumberOfSwaps`, `NumberOfUnusedPoints`, `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`,
- * `MeanSpacing`, and the columns of the paper's Table 1: `NumberOfPoints`,
+ * 6: hole filling, 7: made by a step 7 swap, 8: lost point insertion and its ears); field
+ * data `NumberOfTriangles`, `NumberOfLostPoints` (after step 2), `NumberOfIslands`,
+ * `NumberOfHoles` (after step 4), `NumberOfBridges`, `NumberOfChords`, `NumberOfHolesFilled`,
+ * `NumberOfHolesLeftOpen`, `NumberOfSwaps`, `NumberOfInsertedPoints`, `NumberOfUnusedPoints`,
+ * `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`, `MeanSpacing`, and the columns of the paper's Table 1: `NumberOfPoints`,
  * `AverageUniformityInSSR` (mean m over the points of the well-sampled regions, i.e. correct or
  * boundary after step 2), `SSRAreaPercent` (area of the step 1 triangles kept / output area),
  * `SSRPointsPercent`, `StepsUsed` (a string such as "1, 2, 6"), `Seconds`, `PointsPerSecond`.
@@ -336,6 +348,17 @@ public:
 
   ///@{
   /**
+   * After step 6 (only when FillHoles is on): connect every lost point that no hole contained
+   * to the nearest triangle within reach (split it, or attach a triangle across a boundary
+   * edge; see the class documentation). Default on.
+   */
+  vtkSetMacro(InsertLostPoints, bool);
+  vtkGetMacro(InsertLostPoints, bool);
+  vtkBooleanMacro(InsertLostPoints, bool);
+  ///@}
+
+  ///@{
+  /**
    * Counts from the last execution (also in the output's field data).
    */
   vtkGetMacro(NumberOfTriangles, vtkIdType);
@@ -371,6 +394,7 @@ protected:
   double AuxiliaryPointDistance = 0.5;
   int MaximumHolePoints = 256;
   bool SwapBridgeEdges = true;
+  bool InsertLostPoints = true;
 
   vtkIdType NumberOfTriangles = 0;
   vtkIdType NumberOfLostPoints = 0;

@@ -231,14 +231,21 @@ bool CheckArrays(vtkGreedySurfaceTriangulation* filter, const std::string& what)
       ++ssrFinite;
     }
   }
-  // Stage: 1 (step 1, kept by step 2), 6 (hole filling) or 7 (swap); every triangle around a
-  // correct point comes from step 1 and a step 1 triangle has only correct or boundary vertices.
+  // Stage: 1 (step 1, kept by step 2), 6 (hole filling), 7 (swap) or 8 (lost point insertion);
+  // every triangle around a correct point comes from step 1 unless lost points were inserted
+  // (an insertion splits triangles at correct points; then never a hole filling triangle), and a
+  // step 1 triangle has only correct or boundary vertices.
+  const vtkIdType inserted = pcstest::FieldCount(mesh, "NumberOfInsertedPoints");
+  PCS_CHECK(inserted >= 0 && inserted <= count[3] &&
+              (inserted == 0 || filter->GetInsertLostPoints()),
+            what << ": NumberOfInsertedPoints " << inserted);
   double ssrArea = 0.0, totalArea = 0.0;
   for (vtkIdType c = 0; c < static_cast<vtkIdType>(triangles.size()); ++c)
   {
     const auto& t = triangles[c];
     const int s = static_cast<int>(stage->GetTuple1(c));
-    PCS_CHECK(s == 1 || s == 6 || s == 7, what << ": Stage " << s << " of triangle " << c);
+    PCS_CHECK(s == 1 || s == 6 || s == 7 || s == 8,
+              what << ": Stage " << s << " of triangle " << c);
     bool correctVertex = false, lostVertex = false;
     for (vtkIdType v : t)
     {
@@ -246,7 +253,7 @@ bool CheckArrays(vtkGreedySurfaceTriangulation* filter, const std::string& what)
         correctVertex || status->GetTuple1(v) == vtkGreedySurfaceTriangulation::CORRECT;
       lostVertex = lostVertex || status->GetTuple1(v) > vtkGreedySurfaceTriangulation::BOUNDARY;
     }
-    PCS_CHECK(!correctVertex || s == 1,
+    PCS_CHECK(!correctVertex || s == 1 || (inserted > 0 && s != 6),
               what << ": triangle " << c << " at a correct point, stage " << s);
     PCS_CHECK(!lostVertex || s != 1, what << ": step 1 triangle " << c << " at a lost point");
     double a[3], b[3], d[3], u[3], v[3], cross[3];
@@ -300,8 +307,10 @@ bool CheckArrays(vtkGreedySurfaceTriangulation* filter, const std::string& what)
   const bool filled = pcstest::FieldCount(mesh, "NumberOfHolesFilled") > 0;
   PCS_CHECK(filled == (steps->GetValue(0).find('6') != std::string::npos),
             what << ": StepsUsed '" << steps->GetValue(0) << "' and holes filled");
-  PCS_CHECK(filled == (count[3] > 0 || ssrArea < totalArea),
-            what << ": hole filling triangles and holes filled");
+  PCS_CHECK((filled || inserted > 0) == (count[3] > 0 || ssrArea < totalArea),
+            what << ": hole filling or insertion triangles, and holes filled or points inserted");
+  PCS_CHECK((inserted > 0) == (steps->GetValue(0).find('8') != std::string::npos),
+            what << ": StepsUsed '" << steps->GetValue(0) << "' and points inserted");
   return true;
 }
 

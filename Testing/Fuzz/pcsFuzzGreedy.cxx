@@ -6,7 +6,7 @@
 //   NumberOfDuplicatePoints + NumberOfSkippedPoints (all points when fewer than 3 are distinct
 //   and finite), exactly these when there are triangles; non-finite points have Status 4;
 // - NumberOfPoints = the input points, NumberOfUnusedPoints = the points with Used = 0;
-// - cell data Stage in {1, 6, 7}; LocalUniformity has one value per point.
+// - cell data Stage in {1, 6, 7, 8}; LocalUniformity has one value per point.
 // A violated invariant aborts.
 #include "pcsFuzzSurface.h"
 #include "vtkGreedySurfaceTriangulation.h"
@@ -50,6 +50,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     greedy->SetMinimumBridgeSeparation(0.0);
     greedy->SetMaximumHoleDiameter(1.0 + (p[3] >> 2));
   }
+  greedy->SetInsertLostPoints(((p[0] ^ p[2]) & 0x01) == 0);
   greedy->SetStatusNeutralAngle((p[3] >> 2) * 90.0 / 63.0);
   greedy->SetUniformityAngle((p[3] >> 2) * 95.0 / 63.0);
   greedy->Update();
@@ -98,9 +99,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   for (vtkIdType t = 0; t < out->GetNumberOfPolys(); ++t)
   {
     const double s = stage->GetTuple1(t);
-    if (s != 1 && s != 6 && s != 7)
+    if (s != 1 && s != 6 && s != 7 && s != 8)
     {
-      pcsfuzz::Fail(name, "cell data Stage outside {1, 6, 7}");
+      pcsfuzz::Fail(name, "cell data Stage outside {1, 6, 7, 8}");
     }
   }
   return 0;

@@ -1,0 +1,62 @@
+// Insertion of a free point into the nearest triangle of a surface mesh (private kernel, plain
+// C++, not wrapped), used by vtkGreedySurfaceTriangulation to connect the lost points that no
+// hole contains (thin features: legs, ears, fins).
+//
+// A free point q (a vertex of the mesh without triangles) that lies near the mesh is connected
+// to it by local topological operations that keep an oriented 2-manifold (pcs::SurfaceMesh):
+// - the nearest triangle among those at the given neighbours of q: its plane's distance to q when
+//   q projects inside it (decided exactly: the line through q along the triangle's normal crosses
+//   the open triangle, pcs::projected::LineCrossesTriangle), otherwise the distance from q to
+//   the triangle's nearest edge. A triangle farther than its longest edge is not a candidate:
+//   the point is not on that part of the surface (it may become reachable once its own
+//   neighbours are inserted);
+// - inside, the triangle (a, b, c) is split into (a, b, q), (b, c, q), (c, a, q), unless the
+//   angle at q over one edge exceeds 150 degrees (q almost on that edge: the split would leave
+//   a needle), in which case that edge is split as below;
+// - beyond (or almost on) the edge a -> b of the triangle (a, b, c): when the edge has a second
+//   triangle (b, a, d), both are replaced by the four triangles around q; when a -> b is a
+//   boundary edge, the triangle (b, a, q) is attached across it when q is beyond the edge, or
+//   the triangle is split into (q, b, c), (a, q, c) when q is almost on it (the boundary then
+//   runs a -> q -> b).
+// No new triangle may be exactly degenerate (pcs::projected::Collinear). Each operation is
+// checked with SurfaceMesh::CanAddTriangle and undone when it would break the manifold.
+//
+// The decisions of "inside" and of degeneracy are exact predicates; the distances that choose
+// the nearest triangle and the reach (longest edge) are metric thresholds in floating point.
+#ifndef pcsPointInsertion_h
+#define pcsPointInsertion_h
+
+#include "pcsSurfaceMesh.h"
+
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace pcs
+{
+
+/// What InsertFreePoint did.
+struct PointInsertionResult
+{
+  /// Ids of the triangles added (the replaced ones are removed from the mesh).
+  std::vector<int64_t> Added;
+  /// The edges of the replaced (or attached-to) triangles that remain in the mesh: the caller
+  /// may swap them for the shorter diagonal of their two triangles.
+  std::vector<std::array<int32_t, 2>> OldEdges;
+  /// When an operation had to be undone: (old id, new id) of each triangle put back (the mesh
+  /// never reuses ids), so that the caller can carry its per-triangle data over.
+  std::vector<std::pair<int64_t, int64_t>> Restored;
+};
+
+/// Connect the free vertex q of `mesh` (coordinates `xyz`, 3 per vertex) to the nearest
+/// triangle at its `count` neighbours (`neighbors`, point ids; negative ids are ignored), as
+/// described above. `attachToBoundary`: whether a triangle may be attached across a boundary
+/// edge. Returns false, and leaves the mesh unchanged, when no triangle is within reach or the
+/// operation would break the manifold.
+bool InsertFreePoint(SurfaceMesh& mesh, const double* xyz, int32_t q, const int32_t* neighbors,
+  int count, bool attachToBoundary, PointInsertionResult& result);
+
+} // namespace pcs
+
+#endif

@@ -8,17 +8,19 @@ vtkPolyData with every input point (1,010), the point data passed, triangles onl
 ids in range and no triangle with a repeated id; its Used array (when it has one) must be the
 triangles' vertex set, with used points > 0 and never both copies of a duplicate used. The
 ReconstructionQuality proxy then measures each mesh: its triangle and used-point counts must be
-the ones counted here. Progress: every filter reports intermediate progress and ParaView's
-progress handler (what feeds the GUI's progress bar) relays events of its class.
+the ones counted here. Progress: every filter reports intermediate progress and is observed by
+ParaView's progress handler (what feeds the GUI's progress bar).
 
 The XML against the classes (the Python package's wrapped classes): every proxy has long and
 short help and the menu category "Point Cloud Surface", every property has documentation; each
 one-number property's default is the class's default, exactly (a double written with enough
 digits to read back as the same double, e.g. 0.3333333333333333 for 1/3), in the XML and in the
-proxy ParaView makes from it, so ParaView sends the class's own defaults; its range domain is the class's clamp range (no max = VTK_DOUBLE_MAX), a clamped
-parameter has a range, boolean or enumeration domain, an enumeration lists exactly the clamp
-range; and every parameter of the class (its own Set/Get pairs, as the command line finds them)
-has a property.
+proxy ParaView makes from it, so ParaView sends the class's own defaults; its range domain is
+the class's clamp range (no max = VTK_DOUBLE_MAX), a clamped parameter has a range, boolean or
+enumeration domain, an enumeration lists exactly the clamp range; the "Default ...; range [...]"
+its documentation states are the class's (read by TestReadmeParameters.check_statements); and
+every parameter of the class (its own Set/Get pairs, as the command line finds them) has a
+property.
 
 Usage: pvpython TestPluginLoad.py <path to PointCloudSurface.so>
 """
@@ -109,10 +111,11 @@ out.GetPointData().AddArray(label)
 cloud.UpdatePipeline()
 total = POINTS + DUPLICATES
 
-# ParaView's progress bar is fed by the session's progress handler, which relays the
-# ProgressEvents of the algorithms registered with it (text: the class name; value: percent;
-# at most one per ProgressInterval, 0.01 s at least, so a fast run may show only its start).
-# Deterministic checks: the handler relays events of the filter's class (ParaView observes it),
+# ParaView's progress bar is fed by the session's progress handler: ParaView registers every
+# algorithm it creates with it (an observer of the algorithm's ProgressEvent), and the handler
+# relays the events (text: the class name; value: percent) at most once per ProgressInterval
+# (0.01 s at least; which events pass depends on timing, so they are counted, not required).
+# Deterministic checks: the server-side object has ParaView's observer before ours is added,
 # and the filter itself reports intermediate progress (0 < p < 1, besides the pipeline's 0 and
 # 1), observed on the server-side object (built-in session).
 from vtkmodules.vtkCommonCore import vtkCommand  # noqa: E402
@@ -130,16 +133,18 @@ progress_handler.AddObserver(vtkCommand.ProgressEvent,
 own_progress = []
 
 
-def watch_progress(proxy):
-    del relayed[:], own_progress[:]
-    proxy.GetClientSideObject().AddObserver(
-        vtkCommand.ProgressEvent, lambda algorithm, event: own_progress.append(
-            algorithm.GetProgress()))
+def watch_progress(name, proxy):
+    del own_progress[:]
+    algorithm = proxy.GetClientSideObject()
+    check(algorithm.IsA(classes[name]), "%s: the server-side object is a %s"
+          % (name, classes[name]))
+    check(algorithm.HasObserver(vtkCommand.ProgressEvent),
+          "%s: ParaView's progress handler observes the filter's progress" % name)
+    algorithm.AddObserver(vtkCommand.ProgressEvent,
+                          lambda caller, event: own_progress.append(caller.GetProgress()))
 
 
 def check_progress(name):
-    check(classes[name] in relayed, "%s: ParaView's progress handler relays %s's progress "
-          "(relayed: %s)" % (name, classes[name], sorted(set(relayed))))
     middle = [p for p in own_progress if 0.0 < p < 1.0]
     check(len(middle) > 0, "%s: intermediate progress reported (got %s)" % (name, own_progress))
     return len(middle)
@@ -151,7 +156,7 @@ for name in proxies:
         continue
     check(name in globals(), "LoadPlugin defines %s" % name)
     proxy = globals()[name](Input=cloud)
-    watch_progress(proxy)
+    watch_progress(name, proxy)
     proxy.UpdatePipeline()
     steps = check_progress(name)
     mesh = servermanager.Fetch(proxy, None, None, 0)
@@ -183,7 +188,7 @@ for name in proxies:
         check(np.array_equal(vtk_to_numpy(used_array) != 0, used),
               "%s: point data Used is the triangles' vertex set" % name)
     quality = ReconstructionQuality(Input=proxy)  # noqa: F821 (defined by LoadPlugin)
-    watch_progress(quality)
+    watch_progress("ReconstructionQuality", quality)
     quality.UpdatePipeline()
     quality_steps = check_progress("ReconstructionQuality")
     fd = servermanager.Fetch(quality).GetFieldData()
@@ -192,17 +197,24 @@ for name in proxies:
     check(fd.GetArray("NumberOfUsedPoints").GetTuple1(0) == used.sum(),
           "%s: ReconstructionQuality counts the used points" % name)
     print("%s: %d points, %d triangles, %d used, %d boundary edges, %d non-manifold edges; "
-          "progress steps %d (quality %d), relayed to ParaView's progress handler" % (
+          "progress steps %d (quality %d)" % (
               name, total, triangles, used.sum(),
               fd.GetArray("NumberOfBoundaryEdges").GetTuple1(0),
               fd.GetArray("NumberOfNonManifoldEdges").GetTuple1(0), steps, quality_steps))
     ran.append(name)
 check(len(ran) == len(proxies) - 1, "every reconstruction proxy ran")
+print("progress events relayed by ParaView's progress handler: %s"
+      % ", ".join("%s %d" % (c, relayed.count(c)) for c in sorted(set(relayed))))
 
 # ------------------------------------------------------------------------------------------
 # The XML against the classes.
 import pointcloudsurface  # noqa: E402
 from pointcloudsurface.methods import discover_parameters  # noqa: E402
+
+# The "Default ...; range [...]" the property documentation states, read as in the README test.
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import TestReadmeParameters as readme_test  # noqa: E402
+stated = 0
 
 
 
@@ -213,6 +225,7 @@ for element in ElementTree.parse(xml_path).iter("SourceProxy"):
     if not check(cls is not None, "%s: class %s in the package" % (name, class_name)):
         continue
     instance = cls()
+    class_parameters = {p.name: p for p in discover_parameters(cls)}
     live_proxy = servermanager.ProxyManager().NewProxy("filters", name)
     check(live_proxy is not None, "%s: ParaView makes the proxy" % name)
     doc = element.find("Documentation")
@@ -238,6 +251,9 @@ for element in ElementTree.parse(xml_path).iter("SourceProxy"):
         actual = getattr(instance, "Get" + parameter)()
         check(float(actual) == default, "%s: XML default %r = class default %r"
               % (label, default, actual))
+        if parameter in class_parameters:
+            stated += readme_test.check_statements(
+                label + " XML documentation", text.text, class_parameters[parameter], actual)
         live = live_proxy.GetProperty(prop.get("name")).GetElement(0)
         check(float(live) == float(actual), "%s: the proxy's default %r = class default %r"
               % (label, live, actual))
@@ -265,4 +281,6 @@ for element in ElementTree.parse(xml_path).iter("SourceProxy"):
         check(parameter.name in exposed, "%s: class parameter %s has a property"
               % (name, parameter.name))
     print("%s: %d properties match %s" % (name, len(exposed), class_name))
+check(not readme_test.failures, "the XML documentation states the class's defaults and ranges")
+print("XML documentation: %d stated defaults and ranges = the class's" % stated)
 print("ok")

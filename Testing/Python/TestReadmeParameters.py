@@ -225,6 +225,44 @@ def check_row(cls, instance, parameters, row):
         fail(str(error))
 
 
+STATED_DEFAULT = re.compile(r"\bDefault\s+(on|off|VTK_DOUBLE_MAX|VTK_INT_MAX|"
+                            r"-?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?(?:/\d+)?)(?![\w/])")
+STATED_RANGE = re.compile(r"\brange\s+\[([^,\]]+),\s*([^\]]+)\]")
+
+
+def check_statements(where, text, parameter, actual_default):
+    """The default and range a documentation text states in the project's usual words
+    ("Default 0.5; range [0, 1]"), when it states them for this parameter alone, against the
+    class. Texts of several parameters ("Defaults 1/3 and 3", "ranges ...") and named defaults
+    are skipped. Returns the number of statements checked (used by TestPluginLoad for the XML)."""
+    checked_here = 0
+    text = " ".join(text.split())
+    defaults = STATED_DEFAULT.findall(text)
+    if len(defaults) == 1 and not re.search(r"\bDefaults\b", text):
+        try:
+            value = number_of(defaults[0], parameter, where + " stated default")
+            if not same(value, actual_default):
+                fail("%s: the documentation says 'Default %s', the class default is %r"
+                     % (where, defaults[0], actual_default))
+            checked_here += 1
+        except Unparsed as error:
+            fail(str(error))
+    ranges = STATED_RANGE.findall(text)
+    if len(ranges) == 1 and not re.search(r"\branges\b", text) \
+            and parameter.minimum is not None:
+        try:
+            low = number_of(ranges[0][0].strip(), parameter, where + " stated minimum")
+            high = number_of(ranges[0][1].strip(), parameter, where + " stated maximum")
+            if not same(low, parameter.minimum) or not same(high, parameter.maximum):
+                fail("%s: the documentation says 'range [%s, %s]', the clamp is [%r, %r]"
+                     % (where, ranges[0][0], ranges[0][1], parameter.minimum,
+                        parameter.maximum))
+            checked_here += 1
+        except Unparsed as error:
+            fail(str(error))
+    return checked_here
+
+
 def main():
     readme = sys.argv[1]
     tables = read_tables(readme)
@@ -232,6 +270,7 @@ def main():
                      if n.startswith("vtk") and isinstance(getattr(pointcloudsurface, n), type))
     if not classes:
         fail("no class in the pointcloudsurface package")
+    stated = [0]
     for class_name in classes:
         cls = getattr(pointcloudsurface, class_name)
         parameters = discover_parameters(cls)
@@ -251,6 +290,10 @@ def main():
             if parameter.name not in names:
                 fail("README.md %s: no row for the parameter %s (default %r)"
                      % (class_name, parameter.name, parameter.default))
+        # The class documentation (the setters' docstrings) states the same default and range.
+        for parameter in parameters:
+            stated[0] += check_statements("%s.%s documentation" % (class_name, parameter.name),
+                                          parameter.doc, parameter, parameter.default)
         print("%s: %d rows, %d parameters of the class" % (class_name, len(rows), len(parameters)))
     for class_name in sorted(set(tables) - set(classes)):
         print("note: section %s has a parameter table but the class is not in this build"
@@ -258,7 +301,8 @@ def main():
     if failures:
         print("FAILED: %d disagreement(s) between README.md and the classes" % len(failures))
         return 1
-    print("README parameter tables agree with the classes: %d rows checked" % checked)
+    print("README parameter tables agree with the classes: %d rows checked; the class "
+          "documentation states the same: %d defaults and ranges checked" % (checked, stated[0]))
     return 0
 
 

@@ -6,6 +6,9 @@ row, a parameter name, a default and a range. Each row must name a parameter of 
 default must equal ``Get<Name>()`` of a new instance and its range the clamp range
 (``Get<Name>MinValue()`` / ``Get<Name>MaxValue()``), on/off rows a boolean, enumerations the
 class's named values; every numeric, boolean or string parameter of the class must have a row.
+The class documentation (each setter's docstring) must state the same "Default X; range [a, b]"
+where it states them for that parameter alone (check_statements, also used by TestPluginLoad on
+the XML's property documentation).
 The ParaView XML is compared with the same classes by PointCloudSurface-PluginLoad, so README,
 class and proxy cannot drift apart. No rendering.
 

@@ -2,8 +2,9 @@
 
 Installs the build into a fresh prefix, then, with nothing of the build tree on PYTHONPATH or in
 the plugin variables:
-- the interpreter running this test (/usr/bin/python3) imports `pointcloudsurface` from the prefix (the extension and the module
-  library loaded are the installed ones, found through the extension's RUNPATH) and
+- the interpreter running this test (/usr/bin/python3) imports `pointcloudsurface` from the
+  prefix (the extension and the module library loaded are the installed ones, found through the
+  extension's RUNPATH) and
   reconstruct() meshes an n x m grid in 2.5D with 2 (n - 1) (m - 1) triangles;
 - <prefix>/bin/pointcloud-surface meshes the same grid written as .xyz into a .ply and prints
   the quality line with that triangle count;

@@ -208,7 +208,6 @@ print("progress events relayed by ParaView's progress handler: %s"
 
 # ------------------------------------------------------------------------------------------
 # The XML against the classes.
-import pointcloudsurface  # noqa: E402
 from pointcloudsurface.methods import discover_parameters  # noqa: E402
 
 # The "Default ...; range [...]" the property documentation states, read as in the README test.

@@ -150,7 +150,8 @@ def number_of(text, parameter, where):
 
 def same(written, actual):
     if written is UNBOUNDED:
-        return actual >= 0.99e38 or actual == VTK_INT_MAX  # VTK_DOUBLE_MAX, VTK_FLOAT_MAX, VTK_INT_MAX
+        # VTK_DOUBLE_MAX, VTK_FLOAT_MAX or VTK_INT_MAX
+        return actual >= 0.99e38 or actual == VTK_INT_MAX
     if isinstance(actual, bool):
         actual = int(actual)
     if written == actual:

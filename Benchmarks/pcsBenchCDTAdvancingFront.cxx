@@ -5,7 +5,9 @@
 // normals (the mesh's vertex normals, the exact normals of the sphere and torus, see
 // pcsBenchInput.h); cgal: CGAL::advancing_front_surface_reconstruction with its defaults (it
 // takes no normals). Inputs: see pcsBenchInput.h (sphere:N, torus:N, sample:mesh.off:N, mesh.off,
-// cloud.xyz).
+// cloud.xyz), and noise:F:<input>: that input with Gaussian noise of standard deviation F mean
+// spacings added to every coordinate (fixed seed; the normals and the reference surface stay the
+// noise-free ones, as in run_reconstruction_benchmark.py's noisy variants).
 // Prints one JSON line: method, input, points, seconds (the reconstruction alone), triangles,
 // peak_mb and baseline_mb (VmHWM after the reconstruction, and VmRSS before it, from
 // /proc/self/status), unused points and boundary edges; then, measured after the peak by
@@ -23,19 +25,23 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkStaticPointLocator.h"
 
 #include <CGAL/Advancing_front_surface_reconstruction.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -65,6 +71,50 @@ vtkSmartPointer<vtkPolyData> MakeMesh(
   return mesh;
 }
 
+// Gaussian noise of `fraction` mean spacings (mean distance to the nearest other point).
+void AddNoise(std::vector<double>& xyz, double fraction)
+{
+  const long n = static_cast<long>(xyz.size() / 3);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n);
+  for (long i = 0; i < n; ++i)
+  {
+    points->SetPoint(i, &xyz[3 * i]);
+  }
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(points);
+  vtkNew<vtkStaticPointLocator> locator;
+  locator->SetDataSet(cloud);
+  locator->BuildLocator();
+  vtkNew<vtkIdList> closest;
+  double sum = 0.0;
+  long count = 0;
+  for (long i = 0; i < n; ++i)
+  {
+    locator->FindClosestNPoints(2, &xyz[3 * i], closest);
+    for (vtkIdType k = 0; k < closest->GetNumberOfIds(); ++k)
+    {
+      const vtkIdType j = closest->GetId(k);
+      if (j != i)
+      {
+        const double d[3] = { xyz[3 * j] - xyz[3 * i], xyz[3 * j + 1] - xyz[3 * i + 1],
+          xyz[3 * j + 2] - xyz[3 * i + 2] };
+        sum += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        ++count;
+        break;
+      }
+    }
+  }
+  const double spacing = count > 0 ? sum / static_cast<double>(count) : 0.0;
+  std::mt19937_64 rng(8);
+  std::normal_distribution<double> g(0.0, fraction * spacing);
+  for (double& c : xyz)
+  {
+    c += g(rng);
+  }
+}
+
 double FieldValue(vtkPolyData* data, const char* name)
 {
   vtkDataArray* array = data->GetFieldData()->GetArray(name);
@@ -82,7 +132,19 @@ int main(int argc, char* argv[])
     return 2;
   }
   const std::string method = argv[1], spec = argv[2];
-  const pcsbench::Input input = pcsbench::LoadInput(spec);
+  double noise = 0.0;
+  std::string source = spec;
+  if (spec.rfind("noise:", 0) == 0 && spec.find(':', 6) != std::string::npos)
+  {
+    const size_t colon = spec.find(':', 6);
+    noise = std::stod(spec.substr(6, colon - 6));
+    source = spec.substr(colon + 1);
+  }
+  pcsbench::Input input = pcsbench::LoadInput(source);
+  if (noise > 0.0)
+  {
+    AddNoise(input.XYZ, noise);
+  }
   const std::vector<double>& xyz = input.XYZ;
   const long n = input.Size();
   std::vector<std::array<long, 3>> triangles;

@@ -38,6 +38,7 @@
 #include <limits>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -592,6 +593,9 @@ public:
   // Accept triangles that pinch a front vertex (see CanAdd).
   bool AllowPinches = true;
 
+  // To call when triangles were removed: triangles found blocked may no longer be.
+  void ForgetBlocked() { this->Blocked.clear(); }
+
 private:
   const double* P(Id i) const { return this->XYZ + 3 * static_cast<size_t>(i); }
   const double* N(Id i) const { return this->Normals + 3 * static_cast<size_t>(i); }
@@ -599,6 +603,11 @@ private:
   // Is the oriented triangle (e0, e1, third) valid? (e0, e1) is the edge it is built on,
   // `opposite` the third vertex of the triangle already on that edge (None for a seed).
   bool IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& parameters);
+
+  // The projection tests of section II.D on the triangle (e0, e1, third) with the plane `plane`:
+  // true when no neighbouring point or mesh edge blocks it.
+  bool PassesProjectionTests(
+    Id e0, Id e1, Id third, const pcs::projected::TrianglePlane& plane, const Parameters& parameters);
 
   // Best valid third point for the oriented edge (e0, e1) (new triangle e0, e1, x), None if none.
   Id BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters, bool relaxed);
@@ -638,6 +647,24 @@ private:
   double LongestEdge = 0;          // of the mesh: bounds the reach of an edge crossing a triangle
   std::vector<double> MaxIncident; // per point: its longest edge
   EdgeReachGrid EdgeReach;
+
+  // The triangles (vertex sets, sorted) found blocked by the projection tests (II.D). While the
+  // mesh only gains triangles a blocked triangle stays blocked (the points, their normals and
+  // MaximumRay do not change; every mesh edge that blocked it is still there, and the decision
+  // does not depend on the orientation or on the edge it is built on), so a front edge tried
+  // again, or a seed from another point, does not repeat the tests. Cleared when triangles are
+  // removed (ForgetBlocked).
+  struct TripleHash
+  {
+    size_t operator()(const std::array<Id, 3>& t) const
+    {
+      const uint64_t h = (static_cast<uint64_t>(static_cast<uint32_t>(t[0])) * 0x9E3779B97F4A7C15u) ^
+        (static_cast<uint64_t>(static_cast<uint32_t>(t[1])) * 0xC2B2AE3D27D4EB4Fu) ^
+        (static_cast<uint64_t>(static_cast<uint32_t>(t[2])) * 0x165667B19E3779F9u);
+      return static_cast<size_t>(h ^ (h >> 29));
+    }
+  };
+  std::unordered_set<std::array<Id, 3>, TripleHash> Blocked;
   vtkIdType Steps = 0;
   int ProjectionTests = 0; // of the current edge
 };
@@ -713,7 +740,27 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
     return false;
   }
   ++this->ProjectionTests;
+  std::array<Id, 3> key = { e0, e1, third };
+  std::sort(key.begin(), key.end());
+  if (this->Blocked.count(key) != 0)
+  {
+    return false;
+  }
+  if (!this->PassesProjectionTests(e0, e1, third, plane, parameters))
+  {
+    this->Blocked.insert(key);
+    return false;
+  }
+  return true;
+}
 
+bool Front::PassesProjectionTests(
+  Id e0, Id e1, Id third, const pcs::projected::TrianglePlane& plane, const Parameters& parameters)
+{
+  const double *n0 = this->N(e0), *n1 = this->N(e1), *n2 = this->N(third);
+  const double* normal = plane.GetNormal();
+  const double length = std::sqrt(Dot(normal, normal));
+  const double sum[3] = { n0[0] + n1[0] + n2[0], n0[1] + n1[1] + n2[1], n0[2] + n1[2] + n2[2] };
   // II.D: the neighbourhood of the triangle (centroid g, vertices within `reach` of g). A point
   // blocks it only when its normal line meets the triangle within MaximumRay: the point is
   // within reach + MaximumRay of g. An edge u w crosses it only if a point of the projected
@@ -903,6 +950,10 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
     {
       return candidate.second;
     }
+    if (this->ProjectionTests >= parameters.MaximumCandidates)
+    {
+      break; // the budget is spent: no further candidate can be accepted
+    }
   }
   return None;
 }
@@ -1004,8 +1055,14 @@ bool Front::Seed(Id p, const Parameters& parameters)
     }
   }
   std::sort(firsts.begin(), firsts.end());
+  // One budget of projection tests for the seed point (over all its first edges).
+  this->ProjectionTests = 0;
   for (const auto& first : firsts)
   {
+    if (this->ProjectionTests >= parameters.MaximumCandidates)
+    {
+      break;
+    }
     const Id q = first.second;
     // Orientation from the normals: try (p, q, x); IsValid rejects the reversed orientation, so
     // the other one is tried with the same third point.
@@ -1022,9 +1079,12 @@ bool Front::Seed(Id p, const Parameters& parameters)
       }
     }
     std::sort(this->Candidates.begin(), this->Candidates.end());
-    this->ProjectionTests = 0;
     for (const auto& candidate : this->Candidates)
     {
+      if (this->ProjectionTests >= parameters.MaximumCandidates)
+      {
+        break;
+      }
       const Id x = candidate.second;
       if (this->IsValid(p, q, x, None, parameters))
       {
@@ -1596,6 +1656,7 @@ int vtkCDTAdvancingFront::RequestData(
     this->NumberOfRemovedTriangles = RemovePinches(mesh);
     if (this->NumberOfRemovedTriangles > 0 && this->HoleFilling)
     {
+      front.ForgetBlocked();
       front.AllowPinches = false;
       fillHoles();
     }

@@ -49,7 +49,8 @@
  *
  * Steps (section III):
  * - III.A seeds: in input order, every point not yet meshed starts a seed triangle: its nearest
- *   point (then the next nearest ones, if no triangle is valid) gives the first edge, and the
+ *   point (then the next nearest ones, if no triangle is valid, within the budget of
+ *   MaximumNumberOfCandidates projection tests for the seed point) gives the first edge, and the
  *   third point is the valid one closest to that edge's midpoint. A point that starts no seed
  *   and is never reached by a front stays unused. Seeds continue until every point is meshed or
  *   rejected.
@@ -181,13 +182,18 @@ public:
 
   ///@{
   /**
-   * Cost bound: per front edge (and per seed edge), at most this many candidate third points,
-   * the closest to the edge's midpoint among those that pass the cheap rules (II.C, II.E, the
-   * manifold rule), are submitted to the projection tests of section II.D; if none passes, the
-   * edge stays on the front. Default 20; range [1, 100000]. With reasonable parameters the first
-   * or second candidate submitted is almost always accepted, so the bound only matters for
-   * extreme settings (a huge NeighborhoodRadius or MaximumRayDistance), which would otherwise
-   * cost O(N) tests per candidate for O(N) candidates.
+   * Cost bound: each time a front edge is expanded, and for each seed point (over all the first
+   * edges it tries), at most this many candidate triangles, the closest to the edge's midpoint
+   * among those that pass the cheap rules (II.C, II.E, the manifold rule), are submitted to the
+   * projection tests of section II.D; if none passes, the edge stays on the front (the seed
+   * point waits for a front to reach it). Default 20; range [1, 100000]. On clean samples the
+   * first candidate submitted is accepted for more than 99 % of the front triangles, so the
+   * bound matters on noisy clouds (where many edges and seed points find no valid triangle) and
+   * for extreme settings (a huge NeighborhoodRadius or MaximumRayDistance, which would otherwise
+   * cost O(N) tests per candidate for O(N) candidates). A triangle found blocked by the
+   * projection tests is remembered and not tested again (it stays blocked while the mesh only
+   * gains triangles; forgotten when the pinch repair removes some), but still counts here, so
+   * the result does not depend on that memory.
    */
   vtkSetClampMacro(MaximumNumberOfCandidates, int, 1, 100000);
   vtkGetMacro(MaximumNumberOfCandidates, int);

@@ -8,14 +8,23 @@ ratio (the issue asks for PeelTime <= 0.5 x DelaunayTime at 10^6 points) and the
 result (vtkReconstructionQuality: genus, coverage, non-manifold vertices). Timings on a shared
 machine: report the `uptime` load with them (printed first).
 
+With --meshes, it runs instead on the vertex sets of real meshes of Debian's libcgal-demo data
+(--data: the unpacked data.tar.gz, see run_reconstruction_benchmark.py) and measures the result
+against the mesh itself (vtkReconstructionQuality: coverage, non-manifold edges and vertices,
+boundary edges, genus of the result and of the mesh, Hausdorff distance in mean spacings).
+
 Usage (a build with the Python package, e.g. build-peel):
   PYTHONPATH=build-peel/lib/python3/dist-packages \\
       /usr/bin/python3 Benchmarks/run_peel_benchmark.py [--points 1000000] [--json out.json]
+  PYTHONPATH=build-peel/lib/python3/dist-packages \\
+      /usr/bin/python3 Benchmarks/run_peel_benchmark.py --data /tmp/cgal/data \\
+      --meshes bunny00,armadillo,camel,elephant,refined_elephant,fandisk_large,knot1
 """
 import argparse
 import json
 import math
 import os
+import sys
 import time
 
 import numpy as np
@@ -55,15 +64,73 @@ def field(data, name):
     return array.GetTuple1(0) if array else float("nan")
 
 
+def quality(mesh, reference=None):
+    q = vtkReconstructionQuality()
+    q.SetInputData(0, mesh)
+    if reference is None:
+        q.ComputeDistancesOff()
+    else:
+        q.SetInputData(1, reference)
+    q.Update()
+    return q.GetOutput()
+
+
+def mesh_rows(args):
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    from run_reconstruction_benchmark import mesh_from_arrays, read_off
+
+    rows = []
+    for name in args.meshes.split(","):
+        p, t = read_off(os.path.join(args.data, "meshes", name + ".off"))
+        reference = mesh_from_arrays(p, t)
+        peel = vtkPerimeterPeelSurface()
+        peel.SetInputData(cloud(p))
+        peel.Update()
+        out = peel.GetOutput()
+        q = quality(out, reference)
+        r = quality(reference)
+        row = {
+            "mesh": name, "points": len(p), "delaunay_s": field(out, "DelaunayTime"),
+            "peel_s": field(out, "PeelTime"), "groups": field(out, "NumberOfGroupRemovals"),
+            "coverage": field(q, "Coverage"),
+            "non_manifold_edges": field(q, "NumberOfNonManifoldEdges"),
+            "non_manifold_vertices": field(q, "NumberOfNonManifoldVertices"),
+            "boundary_edges": field(q, "NumberOfBoundaryEdges"),
+            "genus": field(q, "Genus"), "reference_genus": field(r, "Genus"),
+            "hausdorff_spacings": field(q, "HausdorffOverSpacing"),
+        }
+        row["ok"] = (row["non_manifold_edges"] == 0 and row["non_manifold_vertices"] == 0 and
+                     row["coverage"] >= 0.97 and row["hausdorff_spacings"] <= 4.0)
+        rows.append(row)
+        print("| %s | %d | %.4f | %d / %d | %d | %d (%d) | %.2f | %.2f / %.2f | %s |"
+              % (name, len(p), row["coverage"], row["non_manifold_edges"],
+                 row["non_manifold_vertices"], row["boundary_edges"], row["genus"],
+                 row["reference_genus"], row["hausdorff_spacings"], row["peel_s"],
+                 row["delaunay_s"], "yes" if row["ok"] else "no"), flush=True)
+    return rows
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--points", type=int, default=1000000)
     parser.add_argument("--shapes", default="sphere,torus")
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--json", help="also write the results to this file")
+    parser.add_argument("--meshes", help="comma-separated libcgal-demo meshes (meshes/NAME.off)")
+    parser.add_argument("--data", default="/tmp/cgal/data",
+                        help="the unpacked libcgal-demo data.tar.gz (holds meshes/)")
     args = parser.parse_args()
     load = os.getloadavg()
     print("load average %.2f %.2f %.2f, %d cores" % (load + (os.cpu_count(),)))
+    if args.meshes:
+        print("| mesh vertices | points | coverage | non-manifold edges / vertices | boundary edges "
+              "| genus (mesh) | Hausdorff / spacing | peel / Delaunay s | criteria met |")
+        print("|---|---:|---:|---:|---:|---:|---:|---:|---|")
+        rows = mesh_rows(args)
+        if args.json:
+            with open(args.json, "w") as f:
+                json.dump({"load": load, "results": rows}, f, indent=1)
+        return
     results = []
     for shape in args.shapes.split(","):
         xyz = {"sphere": sphere, "torus": torus}[shape](args.points,

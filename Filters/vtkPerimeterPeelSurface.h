@@ -23,6 +23,15 @@
  * much more than their perimeter, so a torus's hole may stay closed or small handles open).
  *
  * Beyond the paper:
+ * - Relative measures (LocalSpacingNeighbors > 0, default 6): each facet's measure is divided by
+ *   the local spacing at its three vertices, so that one threshold fits dense and sparse regions
+ *   (the paper's caveat below). A point's local spacing is the mean length of its
+ *   LocalSpacingNeighbors shortest Delaunay edges (its nearest neighbours: the nearest-neighbour
+ *   graph is a subgraph of the Delaunay graph, so no neighbour search is needed), averaged twice
+ *   over the same neighbours; on a uniform sample it is nearly constant (the paper's rule up to a
+ *   factor). FinalThreshold is then in units of the local spacing. On the vertices of CGAL's
+ *   demo meshes (graded) it raised the coverage from 0.76-0.97 to 0.96-0.998 and removed the
+ *   caves dug under sparse regions (see the README).
  * - No point is lost by peeling: a tetrahedron is kept when removing it would leave one of its
  *   vertices in no tetrahedron (the paper's "loss of vertices"). Points that the surface still
  *   does not use (inside the solid, or duplicates) have point data `Used` = 0 and are counted.
@@ -59,14 +68,17 @@
  * - The triangles are oriented consistently, outward from the solid.
  *
  * Cost: O(n log n) after the tetrahedralization (each tetrahedron is queued a bounded number of
- * times per threshold, and the thresholds are few).
+ * times per threshold, and the thresholds are few); the local spacing is one pass over the
+ * tetrahedra's edges.
  *
  * Caveat (paper section 3): the threshold is global; on clouds whose density varies a lot, the
  * sparse regions open (holes) or the dense ones keep spurious tetrahedra. ThresholdFactor
- * between 1 and 2 helps, as the paper suggests.
+ * between 1 and 2 helps, as the paper suggests; the relative measures (LocalSpacingNeighbors)
+ * address it for smoothly graded densities.
  *
  * Output: a vtkPolyData with ALL input points and their point data, point data `Used`
- * (unsigned char) and field data NumberOfIterations, FinalThreshold (input units),
+ * (unsigned char) and field data NumberOfIterations, FinalThreshold (input units; local spacings
+ * with relative measures),
  * NumberOfTetrahedra, NumberOfRemovedTetrahedra (groups included), NumberOfGroupRemovals,
  * NumberOfTriangles, NumberOfUsedPoints, NumberOfUnusedPoints, DelaunayTime and PeelTime
  * (seconds: the tetrahedralization, and everything after it).
@@ -75,7 +87,15 @@
  * processes' outputs are empty.
  *
  * @warning A group removal needs a gap at least GroupFactor times the threshold: handles or
- * tunnels narrower than that (relative to the sampling) stay closed.
+ * tunnels narrower than that (relative to the sampling) stay closed. Opening a handle is fragile:
+ * measured (2026-11-23) on 6,000 random torus points, genus 1 on 4 of 6 seeds (2 of 6 with the
+ * absolute measure), on 5,000 points of a torus graded 25:1 4 of 6 (1 of 6); the knots among CGAL's meshes
+ * (knot1, knot2) come out genus 0.
+ * @warning Thin webs: a fan of flat tetrahedra whose vertices are all on the surface (between a
+ * bunny's ear and its head, between a goblet's stem and foot) cannot be removed one at a time
+ * without pinching the surface, and the group removals do not reach it; it stays as large flat
+ * triangles across the concavity. On CGAL's mesh vertices the Hausdorff distance is then 6-36
+ * mean spacings (issue 4 asks for 4; knot1 3.1).
  *
  * @sa vtkIncrementalDelaunay3D vtkReconstructionQuality
  */
@@ -146,6 +166,16 @@ public:
   ///@}
 
   ///@{
+  /// Measure each facet relative to the local spacing of the cloud: divided by the mean, over the
+  /// facet's three vertices, of the mean length of each vertex's LocalSpacingNeighbors shortest
+  /// Delaunay edges (its nearest neighbours; squared for the AREA measure), so that one
+  /// ThresholdFactor fits sparse and dense regions alike. Default 6; range [0, 64]; 0: the
+  /// paper's absolute measure (also used whenever Threshold > 0).
+  vtkSetClampMacro(LocalSpacingNeighbors, int, 0, 64);
+  vtkGetMacro(LocalSpacingNeighbors, int);
+  ///@}
+
+  ///@{
   /// Peel with the sculpting rules and group removals, so that the surface is a closed
   /// 2-manifold (no non-manifold edge or vertex) at every step. Default on; off: the paper's
   /// peeling, which may leave non-manifold edges and vertices.
@@ -168,6 +198,7 @@ protected:
   int MaximumIterations = 100;
   double GroupFactor = 4.0;
   bool ManifoldOutput = true;
+  int LocalSpacingNeighbors = 6;
 
 private:
   vtkPerimeterPeelSurface(const vtkPerimeterPeelSurface&) = delete;

@@ -8,6 +8,8 @@
 //   triangle centroid within 3 (random) / 0.5 (lattice) mean spacings of the torus; with the area
 //   and circumradius measures closed, manifold and outward;
 // - a genus-2 surface (a thickened lemniscate of Gerono, blue-noise sample): genus 2, >= 99 %;
+// - a torus sampled 25 times more densely on one side (5,000 points, 6 seeds): with the default
+//   relative measure (LocalSpacingNeighbors 6) closed, manifold, >= 99 %, genus 1 on >= 4 seeds;
 // - a goblet (paper Fig. 1; 8,000 random points, uniform by area): closed, manifold, genus 0,
 //   >= 99 %, and its cup stays hollow (points on the axis inside the cup are outside the solid);
 // - ManifoldOutput off (the paper's peeling): no point left in no tetrahedron;
@@ -110,11 +112,13 @@ bool CheckClosedSurface(const std::string& label, vtkPolyData* mesh, int genus)
   return CheckConsistentFields(label.c_str(), mesh);
 }
 
-vtkSmartPointer<vtkPolyData> Peel(const std::vector<double>& xyz, int measure = 0)
+vtkSmartPointer<vtkPolyData> Peel(
+  const std::vector<double>& xyz, int measure = 0, int spacingNeighbors = 6)
 {
   vtkNew<vtkPerimeterPeelSurface> peel;
   peel->SetInputData(pcstest::MakeCloud(xyz));
   peel->SetFacetMeasure(measure);
+  peel->SetLocalSpacingNeighbors(spacingNeighbors);
   peel->Update();
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->ShallowCopy(peel->GetOutput());
@@ -238,6 +242,42 @@ bool CheckGenus2()
 {
   return CheckClosedSurface("genus-2 surface", Peel(Genus2Points(12000, 3)), 2);
 }
+
+// A torus sampled 25 times more densely on one side than on the other (6 seeds): with the
+// relative measure (LocalSpacingNeighbors, default 6) one threshold fits both sides: every surface
+// is closed, manifold, over >= 99 % of the points, and the hole opens (genus 1) on at least 4 of
+// the 6 seeds and on more seeds than with the absolute measure (0: the paper's global threshold,
+// its caveat on non-uniform density). Measured: 4 of 6 relative, 1 of 6 absolute. Opening a
+// handle stays fragile (a known limit, see the class docs).
+bool CheckGradedTorus()
+{
+  bool ok = true;
+  int handles = 0, absoluteHandles = 0;
+  for (unsigned seed = 1; seed <= 6; ++seed)
+  {
+    const std::vector<double> xyz = GradedTorusPoints(5000, seed, 1.2);
+    const std::string label = "graded torus (seed " + std::to_string(seed) + ")";
+    auto mesh = Peel(xyz);
+    auto q = Measure(mesh);
+    PCS_CHECK(FieldValue(q, "NumberOfBoundaryEdges") == 0 &&
+        FieldValue(q, "NumberOfNonManifoldEdges") == 0 &&
+        FieldValue(q, "NumberOfNonManifoldVertices") == 0 && FieldValue(q, "Coverage") >= 0.99,
+      label << ": closed, manifold, coverage " << FieldValue(q, "Coverage"));
+    handles += FieldValue(q, "Genus") == 1 ? 1 : 0;
+    auto absolute = Measure(Peel(xyz, 0, 0));
+    absoluteHandles += FieldValue(absolute, "Genus") == 1 ? 1 : 0;
+    std::cout << label << ": genus " << FieldValue(q, "Genus") << ", coverage "
+              << FieldValue(q, "Coverage") << "; absolute measure: genus "
+              << FieldValue(absolute, "Genus") << ", coverage " << FieldValue(absolute, "Coverage")
+              << std::endl;
+  }
+  PCS_CHECK(handles >= 4 && handles > absoluteHandles,
+    "graded torus: genus 1 on " << handles << " of 6 seeds (absolute measure " << absoluteHandles
+                                << ")");
+  std::cout << "graded torus: genus 1 on " << handles << " of 6 seeds (absolute measure: "
+            << absoluteHandles << ")" << std::endl;
+  return ok;
+}
 } // namespace
 
 int TestPerimeterPeelSurface(int, char*[])
@@ -245,6 +285,7 @@ int TestPerimeterPeelSurface(int, char*[])
   bool ok = CheckSphere();
   ok = CheckTorus() && ok;
   ok = CheckGenus2() && ok;
+  ok = CheckGradedTorus() && ok;
   ok = CheckGoblet() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

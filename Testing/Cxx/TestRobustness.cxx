@@ -192,6 +192,10 @@ std::vector<std::pair<std::string, std::function<void(vtkPolyDataAlgorithm*)>>> 
       { "GroupFactor = 1000", [peel](vtkPolyDataAlgorithm* a)
         { peel(a)->SetGroupFactor(VTK_DOUBLE_MAX); } },
       { "ManifoldOutput off", [peel](vtkPolyDataAlgorithm* a) { peel(a)->ManifoldOutputOff(); } },
+      { "LocalSpacingNeighbors = 0", [peel](vtkPolyDataAlgorithm* a)
+        { peel(a)->SetLocalSpacingNeighbors(-1); } },
+      { "LocalSpacingNeighbors = 64", [peel](vtkPolyDataAlgorithm* a)
+        { peel(a)->SetLocalSpacingNeighbors(VTK_INT_MAX); } },
     };
   }
 #endif

@@ -73,9 +73,10 @@ def quality(mesh):
 
 DEFAULTS = {"ThresholdFactor": 1.0, "ConvergenceTolerance": 0.01, "Threshold": 0.0,
             "FacetMeasure": 0, "MaximumIterations": 100, "GroupFactor": 4.0,
-            "ManifoldOutput": True}
+            "ManifoldOutput": True, "LocalSpacingNeighbors": 6}
 RANGES = {"ThresholdFactor": (0.01, 1000.0), "ConvergenceTolerance": (0.0, 1.0),
-          "FacetMeasure": (0, 2), "MaximumIterations": (1, 100000), "GroupFactor": (1.0, 1000.0)}
+          "FacetMeasure": (0, 2), "MaximumIterations": (1, 100000), "GroupFactor": (1.0, 1000.0),
+          "LocalSpacingNeighbors": (0, 64)}
 
 peel = vtkPerimeterPeelSurface()
 for name, value in DEFAULTS.items():

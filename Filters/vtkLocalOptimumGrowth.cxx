@@ -173,6 +173,7 @@ private:
   }
 
   bool Expand(Id a, Id b, int level, bool mayReverse = true);
+  bool OnFrontLoop(Id a, Id b, Id c) const;
   bool PlantSeed();
   bool TrySeed(Id p1, bool relaxed);
   void ProcessQueue();
@@ -742,9 +743,14 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
     {
       continue;
     }
+    // Constraint 3. At the last relaxation level an ear may exceed it: its angle at the shared
+    // end is the front's own angle there, which a thin sliver of unmeshed surface (two fronts
+    // meeting almost along a line) has close to 180 degrees at every vertex. Such an ear must
+    // then meet constraint 1 strictly towards both triangles it closes between.
     const double dotA = Dot(ab, ac), dotB = -Dot(ab, bc);
-    if (dotA < this->Par.CosBase * dab * std::sqrt(la2) ||
-      dotB < this->Par.CosBase * dab * std::sqrt(lb2))
+    const bool wideBase = dotA < this->Par.CosBase * dab * std::sqrt(la2) ||
+      dotB < this->Par.CosBase * dab * std::sqrt(lb2);
+    if (wideBase && (!ear || level < 2))
     {
       continue;
     }
@@ -754,7 +760,19 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
     {
       continue;
     }
-    if (Dot(nt, ne) < this->Par.CosNormal)
+    if (wideBase)
+    {
+      // The other triangle: across the front edge b->n (c == n) or p->a (c == p).
+      const Id s = c == n ? b : p, e = c == n ? n : a;
+      const Id o = this->Mesh.OppositeVertex(s, e);
+      double no[3];
+      if (Dot(nt, ne) < this->Par.CosNormal || o < 0 ||
+        !UnitNormal(this->P3(s), this->P3(e), this->P3(o), no) || Dot(nt, no) < this->Par.CosNormal)
+      {
+        continue;
+      }
+    }
+    else if (Dot(nt, ne) < this->Par.CosNormal)
     {
       // Constraint 1 measures how far (b, a, c) bends about the edge: |height| / distance to the
       // edge's line. At the last level the distance is taken at least d / 2, so that a point
@@ -856,6 +874,16 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
     {
       continue;
     }
+    // A bridge between two different front loops of one part adds a handle. That is how the
+    // front closes around a torus's tube, but with relaxed constraints it is refused: there it
+    // came only from near-contacts of the front with itself, folding the mesh over (a handle on
+    // random sphere samples).
+    if (level > 0 && !this->OnFrontLoop(a, b, c) &&
+      this->TriangleLabel(this->Mesh.FindTriangle(c, nc)) ==
+        this->TriangleLabel(this->Mesh.FindTriangle(a, b)))
+    {
+      continue;
+    }
     const int64_t t1 = this->Mesh.AddTriangle(b, a, c);
     if (t1 < 0)
     {
@@ -881,6 +909,29 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
       this->Commit(c, pc, b);
     }
     return true;
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------------------------
+// c is a vertex of the front loop through the front edge a->b (walked once around).
+bool Grower::OnFrontLoop(Id a, Id b, Id c) const
+{
+  Id s = a, e = b;
+  const int64_t limit = 3 * this->Mesh.GetNumberOfTriangleIds() + 3;
+  for (int64_t steps = 0; steps <= limit; ++steps)
+  {
+    if (e == c || s == c)
+    {
+      return true;
+    }
+    const Id next = this->Mesh.NextBoundaryVertex(s, e);
+    s = e;
+    e = next;
+    if (e < 0 || (s == a && e == b))
+    {
+      return false;
+    }
   }
   return false;
 }

@@ -80,8 +80,18 @@
  *    around the poles of a latitude-longitude sphere need it --, then without the lower bound,
  *    where constraint 1 measures the candidate's height against a distance to the edge of at
  *    least d / 2 (a point very close to the edge, whose needle triangle has a normal dominated
- *    by the curvature, is admitted by its height). Constraints 3, 4 and the overlap tests are
- *    never relaxed.
+ *    by the curvature, is admitted by its height). At that last level an ear (the candidate is
+ *    the front neighbour of a or b) may also exceed constraint 3 -- its angle at the shared end
+ *    is the front's own angle there, close to 180 degrees at every vertex of a thin sliver of
+ *    unmeshed surface left where two fronts meet almost along a line -- if its normal is within
+ *    MaximumNormalAngle of both triangles it closes between. A bridge made with relaxed
+ *    constraints may not join two different front loops of one part (that would add a handle:
+ *    with relaxed constraints it came only from near-contacts of the front with itself, which
+ *    folded the mesh over). Constraint 4 and the overlap tests are never relaxed. Measured on
+ *    random (Poisson) sphere samples of 2,000 to 20,000 points, 100 seeds each: 35 of 600 were
+ *    left open (a sliver hole of 9 to 19 edges), with an unused point or with a handle before
+ *    these two rules, 5 of 600 after (3 with one unused point, 2 with a hole of 9 or 10 edges);
+ *    random tori of 2,000 to 20,000 points, 25 seeds each: 20 of 100 before, 7 of 100 after.
  * 5. Orphans (added): a free point that the growth left under a triangle (within the projection
  *    of a triangle of its neighbourhood, or near one of its edges, and closer to its plane than
  *    its longest edge) is inserted by splitting that triangle into three, or the two triangles

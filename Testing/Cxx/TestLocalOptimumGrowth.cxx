@@ -10,6 +10,8 @@
 //   characteristic 1, every finite distinct point used, the NaN point skipped and reported;
 // - a planar 20 x 20 grid (cocircular and collinear points everywhere): 722 triangles, one loop;
 // - two disjoint spheres: two closed components (the front dies, a second seed is planted);
+// - random sphere and torus samples that once kept a sliver hole or gained a handle: closed,
+//   genus 0 / 1, every point used;
 // - degenerate inputs (no point, 2 points, collinear points): a warning and no triangle.
 #include "vtkLocalOptimumGrowth.h"
 #include "vtkReconstructionQuality.h"
@@ -305,6 +307,60 @@ bool TestTwoSpheres()
   return true;
 }
 
+// Random samples whose growth, before the level-2 ear rule and the handle rule of relaxed
+// bridges (see the class documentation), left a sliver hole of 9 to 19 edges (spheres of 3000
+// points, seeds 4, 16 and 84; 5000 points, seed 65; tori of 2000 points, seeds 1, 4 and 12) or a
+// handle (sphere of 12000 points, seed 84: closed with genus 1; torus of 5000 points, seed 19:
+// genus 3). Each must be closed, manifold, oriented, of the right genus, with every point used.
+bool TestRandomSamples()
+{
+  const double center[3] = { 0, 0, 0 };
+  const std::pair<int, unsigned> spheres[] = { { 3000, 4 }, { 3000, 16 }, { 3000, 84 },
+    { 5000, 65 }, { 12000, 84 } };
+  for (const auto& sample : spheres)
+  {
+    vtkNew<vtkLocalOptimumGrowth> growth;
+    growth->SetInputData(
+      pcstest::MakeCloud(RandomSphere(sample.first, sample.second, center, 1.0)));
+    growth->Update();
+    const std::string what =
+      "sphere " + std::to_string(sample.first) + "/" + std::to_string(sample.second);
+    const Quality q = Measure(growth->GetOutput());
+    PCS_CHECK(CheckClosed(q, 0, what), "");
+    PCS_CHECK(q.Triangles == 2 * sample.first - 4, what << ": " << q.Triangles << " triangles");
+    PCS_CHECK(growth->GetNumberOfUnusedPoints() == 0 && q.UsedPoints == sample.first,
+      what << ": every point used");
+  }
+  const std::pair<int, unsigned> tori[] = { { 2000, 1 }, { 2000, 4 }, { 2000, 12 }, { 5000, 19 } };
+  for (const auto& sample : tori)
+  {
+    // Uniform by area on the torus of radii 1 and 0.35 (rejection on the tube angle).
+    std::mt19937_64 rng(sample.second);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<double> xyz;
+    while (xyz.size() < 3 * static_cast<size_t>(sample.first))
+    {
+      const double a = 2.0 * vtkMath::Pi() * u(rng), b = 2.0 * vtkMath::Pi() * u(rng);
+      if (u(rng) * 1.35 <= 1.0 + 0.35 * std::cos(b))
+      {
+        const double r = 1.0 + 0.35 * std::cos(b);
+        xyz.insert(xyz.end(), { r * std::cos(a), r * std::sin(a), 0.35 * std::sin(b) });
+      }
+    }
+    vtkNew<vtkLocalOptimumGrowth> growth;
+    growth->SetInputData(pcstest::MakeCloud(xyz));
+    growth->Update();
+    const std::string what =
+      "torus " + std::to_string(sample.first) + "/" + std::to_string(sample.second);
+    const Quality q = Measure(growth->GetOutput());
+    PCS_CHECK(CheckClosed(q, 1, what), "");
+    PCS_CHECK(q.Triangles == 2 * sample.first, what << ": " << q.Triangles << " triangles");
+    PCS_CHECK(growth->GetNumberOfUnusedPoints() == 0 && q.UsedPoints == sample.first,
+      what << ": every point used");
+  }
+  return true;
+}
+
 bool TestDegenerate()
 {
   const std::vector<std::vector<double>> inputs = {
@@ -337,6 +393,7 @@ int TestLocalOptimumGrowth(int, char*[])
   ok = TestOpenPatch() && ok;
   ok = TestPlanarGrid() && ok;
   ok = TestTwoSpheres() && ok;
+  ok = TestRandomSamples() && ok;
   ok = TestDegenerate() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

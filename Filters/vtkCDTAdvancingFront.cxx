@@ -1302,6 +1302,10 @@ int vtkCDTAdvancingFront::RequestData(
       "Fewer than 3 points with finite coordinates (" << local << "): no triangle is made.");
     return finish();
   }
+  if (this->GetAbortExecute())
+  {
+    return finish();
+  }
   vtkNew<vtkDoubleArray> localCoordinates;
   localCoordinates->SetNumberOfComponents(3);
   localCoordinates->SetArray(xyz.data(), 3 * static_cast<vtkIdType>(local), 1);
@@ -1313,6 +1317,10 @@ int vtkCDTAdvancingFront::RequestData(
   locator->SetDataSet(cloud);
   locator->BuildLocator();
   const double spacingEstimate = ResizeBins(locator, xyz.data(), local);
+  if (this->GetAbortExecute())
+  {
+    return finish();
+  }
   LocatorBins bins;
   bins.Build(locator, xyz.data(), local);
   this->UpdateProgress(0.02);

@@ -27,12 +27,16 @@
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkLongLongArray.h"
 #include "vtkPointData.h"
 #include "vtkShortArray.h"
+#include "vtkSignedCharArray.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkUnsignedIntArray.h"
+#include "vtkUnsignedShortArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <cmath>
@@ -464,8 +468,10 @@ void AddPointArrays(vtkPolyData* cloud)
 {
   const vtkIdType n = cloud->GetNumberOfPoints();
   std::vector<vtkSmartPointer<vtkDataArray>> arrays = { vtkSmartPointer<vtkCharArray>::New(),
-    vtkSmartPointer<vtkUnsignedCharArray>::New(), vtkSmartPointer<vtkShortArray>::New(),
-    vtkSmartPointer<vtkIntArray>::New(), vtkSmartPointer<vtkLongLongArray>::New(),
+    vtkSmartPointer<vtkSignedCharArray>::New(), vtkSmartPointer<vtkUnsignedCharArray>::New(),
+    vtkSmartPointer<vtkShortArray>::New(), vtkSmartPointer<vtkUnsignedShortArray>::New(),
+    vtkSmartPointer<vtkIntArray>::New(), vtkSmartPointer<vtkUnsignedIntArray>::New(),
+    vtkSmartPointer<vtkLongLongArray>::New(), vtkSmartPointer<vtkIdTypeArray>::New(),
     vtkSmartPointer<vtkFloatArray>::New(), vtkSmartPointer<vtkDoubleArray>::New() };
   for (auto& array : arrays)
   {

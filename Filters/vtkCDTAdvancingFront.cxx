@@ -73,7 +73,7 @@ inline double Distance2(const double* a, const double* b)
 }
 
 // Squared distance from x to the segment a b.
-double SegmentDistance2(const double* a, const double* b, const double* x)
+inline double SegmentDistance2(const double* a, const double* b, const double* x)
 {
   const double ab[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
   const double ax[3] = { x[0] - a[0], x[1] - a[1], x[2] - a[2] };
@@ -305,7 +305,10 @@ double ResizeBins(vtkStaticPointLocator* locator, const double* xyz, Id n)
 // two such queries per candidate triangle, which made FindPointsWithinRadius more than 40 % of
 // the filter's time. Bucket b holds the points of bin (i, j, k) with b = i + j nx + k nx ny (the
 // locator's numbering); Build checks that every point lies in the bin its coordinates give, up
-// to one bin of rounding, and otherwise leaves the queries to the locator.
+// to one bin of rounding, and otherwise leaves the queries to the locator. When every point lies
+// exactly in the bin given by Index (the locator's own formula, clamped), the bins a query
+// visits are exactly those its box overlaps (Index is monotone); otherwise one more bin on each
+// side is visited.
 class LocatorBins
 {
 public:
@@ -313,6 +316,7 @@ public:
   {
     this->Locator = locator;
     this->Valid = false;
+    this->Margin = 0;
     locator->GetDivisions(this->Divisions);
     const double* bounds = locator->GetBounds();
     const double* spacing = locator->GetSpacing();
@@ -353,9 +357,14 @@ public:
         const double* p = xyz + 3 * id;
         for (int c = 0; c < 3; ++c)
         {
-          if (std::abs(this->Index(p[c], c) - bin[c]) > 1)
+          const int index = this->Index(p[c], c);
+          if (std::abs(index - bin[c]) > 1)
           {
             return; // not the numbering assumed: the locator answers
+          }
+          if (std::max(0, std::min(this->Divisions[c] - 1, index)) != bin[c])
+          {
+            this->Margin = 1;
           }
         }
         this->Ids[filled] = static_cast<Id>(id);
@@ -385,8 +394,8 @@ public:
     int low[3], high[3];
     for (int c = 0; c < 3; ++c)
     {
-      low[c] = std::max(0, this->Index(x[c] - radius, c) - 1);
-      high[c] = std::min(this->Divisions[c] - 1, this->Index(x[c] + radius, c) + 1);
+      low[c] = std::max(0, this->Index(x[c] - radius, c) - this->Margin);
+      high[c] = std::min(this->Divisions[c] - 1, this->Index(x[c] + radius, c) + this->Margin);
       if (low[c] > high[c])
       {
         return;
@@ -424,6 +433,7 @@ private:
 
   vtkStaticPointLocator* Locator = nullptr;
   bool Valid = false;
+  int Margin = 1; // bins visited beyond a query's box on each side
   int Divisions[3] = { 1, 1, 1 };
   double Origin[3] = { 0, 0, 0 };
   double Inverse[3] = { 0, 0, 0 };
@@ -555,6 +565,8 @@ public:
     , Bins(bins)
     , Mesh(mesh)
     , Stamp(status.size(), 0)
+    , ProjectedStamp(status.size(), 0)
+    , Projected(3 * status.size(), 0.0)
     , MaxIncident(status.size(), 0.0)
   {
     double bounds[6];
@@ -620,6 +632,38 @@ private:
     this->Bins.FindPointsWithinRadius(std::min(radius, this->Diagonal), x, result, this->Scratch);
   }
 
+  // Point x projected along its normal onto the plane through `origin` with normal `normal`
+  // (II.D.2), or x itself for a vertex of the triangle; null when the ray parameter exceeds
+  // `maximumRay` or the line is parallel to the plane. Cached for the current triangle
+  // (CurrentStamp).
+  const double* Project(
+    Id x, bool isVertex, const double* normal, const double* origin, double maximumRay)
+  {
+    if (isVertex)
+    {
+      return this->P(x);
+    }
+    double* out = &this->Projected[3 * static_cast<size_t>(x)];
+    if (this->ProjectedStamp[x] != this->CurrentStamp)
+    {
+      this->ProjectedStamp[x] = this->CurrentStamp;
+      double t;
+      const double *px = this->P(x), *nx = this->N(x);
+      if (!pcs::projected::RayParameter(px, nx, origin, normal, t) || std::fabs(t) > maximumRay)
+      {
+        out[0] = std::numeric_limits<double>::quiet_NaN();
+      }
+      else
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          out[c] = px[c] + t * nx[c];
+        }
+      }
+    }
+    return std::isnan(out[0]) ? nullptr : out;
+  }
+
   bool CanAdd(Id a, Id b, Id c) const;
   int64_t Add(Id a, Id b, Id c, uint8_t origin);
   void Progress();
@@ -644,6 +688,8 @@ private:
   std::vector<std::pair<Id, Id>> HalfEdges;
   std::vector<unsigned> Stamp;
   unsigned CurrentStamp = 0;
+  std::vector<unsigned> ProjectedStamp; // Project's cache: its triangle's stamp, per point
+  std::vector<double> Projected;        // and the projected point (NaN: none)
   double LongestEdge = 0;          // of the mesh: bounds the reach of an edge crossing a triangle
   std::vector<double> MaxIncident; // per point: its longest edge
   EdgeReachGrid EdgeReach;
@@ -832,7 +878,12 @@ bool Front::PassesProjectionTests(
 
   // II.D.2: projected neighbouring edges (Fig. 4), each edge once (from its end point in the
   // ball of smaller id, or the one end point in the ball).
-  ++this->CurrentStamp;
+  if (++this->CurrentStamp == 0) // wrapped around: no stale stamp may match
+  {
+    std::fill(this->Stamp.begin(), this->Stamp.end(), 0u);
+    std::fill(this->ProjectedStamp.begin(), this->ProjectedStamp.end(), 0u);
+    this->CurrentStamp = 1;
+  }
   for (vtkIdType k = 0; k < count; ++k)
   {
     this->Stamp[this->Ball[k]] = this->CurrentStamp;
@@ -868,35 +919,13 @@ bool Front::PassesProjectionTests(
       {
         continue; // Fig. 4b
       }
-      // Projected end points; a vertex of the triangle projects onto itself.
-      double pu[3], pw[3];
-      bool projected = true;
-      for (int end = 0; end < 2 && projected; ++end)
-      {
-        const Id x = end == 0 ? u : w;
-        const bool isVertex = end == 0 ? uIsVertex : wIsVertex;
-        double* out = end == 0 ? pu : pw;
-        const double* px = this->P(x);
-        if (isVertex)
-        {
-          std::copy(px, px + 3, out);
-          continue;
-        }
-        double t;
-        const double* nx = this->N(x);
-        if (!pcs::projected::RayParameter(px, nx, this->P(e0), normal, t) ||
-          std::fabs(t) > parameters.MaximumRay)
-        {
-          projected = false;
-          break;
-        }
-        for (int c = 0; c < 3; ++c)
-        {
-          out[c] = px[c] + t * nx[c];
-        }
-      }
+      // Projected end points (each computed once per triangle tested, most points end several
+      // edges); a vertex of the triangle projects onto itself.
+      const double* pu = this->Project(u, uIsVertex, normal, this->P(e0), parameters.MaximumRay);
+      const double* pw = pu ? this->Project(w, wIsVertex, normal, this->P(e0), parameters.MaximumRay)
+                            : nullptr;
       // A projected segment that stays out of the triangle's ball (1 % of margin) cannot cross.
-      if (projected && SegmentDistance2(pu, pw, centroid) <= triangleReach2 &&
+      if (pw && SegmentDistance2(pu, pw, centroid) <= triangleReach2 &&
         plane.SegmentCrosses(pu, pw))
       {
         return false;

@@ -129,6 +129,7 @@ public:
   std::vector<double> Uniformity;
   double MedianUniformity = NaN;
   std::vector<double> Normals; // 3 per point (unoriented), for the projected crossing test
+  std::vector<char> CrossingPoints; // the points whose edges it tests (empty: every point)
   double Spacing = 0.0;
   vtkSmartPointer<vtkStaticPointLocator> Locator;
   vtkSmartPointer<vtkPolyData> Cloud;
@@ -173,7 +174,7 @@ public:
 
   void FindNeighbors(double begin, double end);
   void ComputeUniformity();
-  bool ComputeNormals();
+  bool ComputeNormals(bool local);
   void Step1GreedyEdges(double begin, double end);
   void Step2Umbrella(double begin, double end);
   void Step3Status();
@@ -212,6 +213,11 @@ void Reconstruction::FindNeighbors(double begin, double end)
   this->Cloud = vtkSmartPointer<vtkPolyData>::New();
   this->Cloud->SetPoints(points);
   this->Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+  // A surface sample fills a thin layer of the bins of its box: about 4 bins per point keep
+  // the neighbour queries (ours, vtkPCANormalEstimation's, the bridge and hole searches) short.
+  double bounds[6];
+  points->GetBounds(bounds);
+  pcs::SetSurfaceSampleDivisions(this->Locator, bounds, this->N);
   this->Locator->SetDataSet(this->Cloud);
   this->Locator->BuildLocator();
 
@@ -283,9 +289,30 @@ void Reconstruction::ComputeUniformity()
   });
 }
 
-// Unoriented normals of the points (vtkPCANormalEstimation over the same neighbours).
-bool Reconstruction::ComputeNormals()
+// Unoriented normals of the points (vtkPCANormalEstimation over the same neighbours), for the
+// crossing test. With `nearLost` (automatic mode, after the first pass with the paper's test),
+// the test will examine only the edges at the points that pass lost and at their nearest
+// neighbours (CrossingPoints): elsewhere the paper's test alone gave correct umbrellas.
+bool Reconstruction::ComputeNormals(bool nearLost)
 {
+  this->CrossingPoints.clear();
+  if (nearLost)
+  {
+    this->CrossingPoints.assign(this->N, 0);
+    for (int32_t v = 0; v < this->N; ++v)
+    {
+      if (this->Status[v] != vtkGreedySurfaceTriangulation::LOST)
+      {
+        continue;
+      }
+      this->CrossingPoints[v] = 1;
+      const int32_t* list = &this->Neighbors[static_cast<size_t>(v) * this->K];
+      for (int j = 0; j < this->K && list[j] >= 0; ++j)
+      {
+        this->CrossingPoints[list[j]] = 1;
+      }
+    }
+  }
   vtkNew<vtkPCANormalEstimation> pca;
   pca->SetInputData(this->Cloud);
   pca->SetLocator(this->Locator);
@@ -375,7 +402,12 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
   // must not cross an accepted edge at a neighbour of a or b (exact 2D tests on the projected
   // points). All accepted edges are shorter, so an edge crossing ab has an end point near a or b.
   const bool crossing = !this->Normals.empty();
+  // The points near a and b are marked with a stamp (no sort), their projections computed once.
   std::vector<int32_t> near;
+  std::vector<double> nearUV;
+  std::vector<uint32_t> mark(crossing ? this->N : 0, 0);
+  std::vector<int32_t> position(crossing ? this->N : 0, 0);
+  uint32_t stamp = 0;
   auto crosses = [&](int32_t a, int32_t b) {
     const double* na = &this->Normals[3 * static_cast<size_t>(a)];
     const double* nb = &this->Normals[3 * static_cast<size_t>(b)];
@@ -403,32 +435,59 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
     project(b, qb);
     const double lo[2] = { std::min(qa[0], qb[0]), std::min(qa[1], qb[1]) };
     const double hi[2] = { std::max(qa[0], qb[0]), std::max(qa[1], qb[1]) };
+    if (++stamp == 0)
+    {
+      std::fill(mark.begin(), mark.end(), 0);
+      stamp = 1;
+    }
     near.clear();
+    nearUV.clear();
+    auto add = [&](int32_t x) {
+      if (x >= 0 && x != a && x != b && mark[x] != stamp)
+      {
+        mark[x] = stamp;
+        position[x] = static_cast<int32_t>(near.size());
+        near.push_back(x);
+        double q[2];
+        project(x, q);
+        nearUV.push_back(q[0]);
+        nearUV.push_back(q[1]);
+      }
+    };
     for (int32_t x : { a, b })
     {
       const int32_t* list = &this->Neighbors[static_cast<size_t>(x) * k];
-      near.insert(near.end(), list, list + k);
-      near.insert(near.end(), adjacent.begin() + offsets[x], adjacent.begin() + offsets[x] + degree[x]);
-    }
-    std::sort(near.begin(), near.end());
-    near.erase(std::unique(near.begin(), near.end()), near.end());
-    for (int32_t c : near)
-    {
-      if (c < 0 || c == a || c == b)
+      for (int j = 0; j < k; ++j)
       {
-        continue;
+        add(list[j]);
       }
-      double qc[2];
-      project(c, qc);
+      for (int64_t s2 = offsets[x], e2 = offsets[x] + degree[x]; s2 < e2; ++s2)
+      {
+        add(adjacent[s2]);
+      }
+    }
+    for (size_t i = 0; i < near.size(); ++i)
+    {
+      const int32_t c = near[i];
+      const double* qc = &nearUV[2 * i];
       for (int64_t s2 = offsets[c], e2 = offsets[c] + degree[c]; s2 < e2; ++s2)
       {
         const int32_t d = adjacent[s2];
-        if (d == a || d == b || (d < c && std::binary_search(near.begin(), near.end(), d)))
+        const bool marked = mark[d] == stamp;
+        if (d == a || d == b || (marked && d < c))
         {
           continue; // shares an end point, or tested from d
         }
-        double qd[2];
-        project(d, qd);
+        double projected[2];
+        const double* qd = projected;
+        if (marked)
+        {
+          qd = &nearUV[2 * static_cast<size_t>(position[d])];
+        }
+        else
+        {
+          project(d, projected);
+        }
         if (std::max(qc[0], qd[0]) < lo[0] || std::min(qc[0], qd[0]) > hi[0] ||
           std::max(qc[1], qd[1]) < lo[1] || std::min(qc[1], qd[1]) > hi[1])
         {
@@ -499,7 +558,9 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
     {
       continue;
     }
-    if (crossing && crosses(a, b))
+    if (crossing &&
+      (this->CrossingPoints.empty() || this->CrossingPoints[a] || this->CrossingPoints[b]) &&
+      crosses(a, b))
     {
       continue;
     }
@@ -2050,7 +2111,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
   for (int pass = 0; pass < 2; ++pass)
   {
     const bool crossing = this->CrossingTest == CROSSING_TEST_ON || pass == 1;
-    if (crossing && !r.ComputeNormals())
+    if (crossing && !r.ComputeNormals(pass == 1))
     {
       vtkWarningMacro("No normals could be estimated: step 1 uses the topological test only.");
     }

@@ -186,8 +186,10 @@ public:
    * Step 1: besides the paper's topological test, refuse an edge that crosses an accepted edge
    * in the local tangent plane (see the class documentation). CROSSING_TEST_OFF (0): the paper's
    * purely topological test; CROSSING_TEST_ON (1); CROSSING_TEST_AUTOMATIC (2, default): steps 1
-   * and 2 run with the paper's test and run again with the crossing test when fewer than
-   * AutomaticCorrectFraction of the points are correct after step 2. Range [0, 2].
+   * and 2 run with the paper's test and run again when fewer than AutomaticCorrectFraction of
+   * the points are correct after step 2, with the crossing test on the edges at the points the
+   * first run lost and at their nearest neighbours (elsewhere the paper's test gave correct
+   * umbrellas). Range [0, 2].
    */
   vtkSetClampMacro(CrossingTest, int, CROSSING_TEST_OFF, CROSSING_TEST_AUTOMATIC);
   vtkGetMacro(CrossingTest, int);

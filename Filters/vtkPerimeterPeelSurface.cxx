@@ -1061,7 +1061,10 @@ int vtkPerimeterPeelSurface::RequestData(
   std::unique_ptr<GroupPeeler> groups;
   if (manifold)
   {
-    groups.reset(new GroupPeeler(solid, std::max<int64_t>(1000, cells / 4)));
+    // Successful groups are small (at most a few hundred cells on the test shapes and CGAL's
+    // mesh vertices); a failing one may burrow into the solid through its large inner facets
+    // until the bound, so the bound sets the cost of the failures.
+    groups.reset(new GroupPeeler(solid, std::max<int64_t>(8192, cells / 256)));
   }
   std::vector<Entry> candidates;
   while (!aborted)

@@ -4,8 +4,10 @@ The cloud is the goblet of the paper's Fig. 1 (a surface of revolution with a ca
 profile of Testing/Cxx/pcsPeelTestShapes.h: foot, stem, cup 0.1 thick), 8,000 random points
 uniform by area. The filter runs with ThresholdFactor 1.0, 1.5, 2.0 and 3.0 (other parameters at
 their defaults); each result is cut in half by the plane y = 0 so that the cavity shows, and the
-four are pictured in a row in docs/peel_threshold_factor.png. A table (triangles, coverage,
-genus, whether the cup's axis at mid-height is outside the solid) is printed for the README.
+four are pictured in a row in docs/peel_threshold_factor.png: the top row with the relative
+measure (LocalSpacingNeighbors 6, the default), the bottom row with the paper's absolute measure
+(LocalSpacingNeighbors 0). A table (triangles, coverage, genus, whether the cup's axis at
+mid-height is outside the solid) is printed for the README.
 
     PYTHONPATH=build-peel/lib/python3/dist-packages \\
         xvfb-run -a /usr/bin/python3 Examples/make_peel_threshold_figure.py [--output PATH]
@@ -78,14 +80,17 @@ def main():
 
     window = vtkRenderWindow()
     window.SetOffScreenRendering(1)
-    window.SetSize(300 * len(FACTORS), 330)
+    rows = (6, 0)  # LocalSpacingNeighbors: relative (default), absolute (the paper's)
+    window.SetSize(300 * len(FACTORS), 330 * len(rows))
     window.SetMultiSamples(0)
-    print("| ThresholdFactor | triangles | coverage | genus | cup hollow |")
-    print("|---|---|---|---|---|")
-    for i, factor in enumerate(FACTORS):
+    print("| LocalSpacingNeighbors | ThresholdFactor | triangles | coverage | genus | cup hollow |")
+    print("|---|---|---|---|---|---|")
+    for row, i, factor in [(r, i, f) for r in range(len(rows)) for i, f in enumerate(FACTORS)]:
+        neighbors = rows[row]
         peel = vtkPerimeterPeelSurface()
         peel.SetInputData(cloud)
         peel.SetThresholdFactor(factor)
+        peel.SetLocalSpacingNeighbors(neighbors)
         peel.Update()
         mesh = peel.GetOutput()
         quality = vtkReconstructionQuality()
@@ -96,7 +101,7 @@ def main():
         enclosed.Initialize(mesh)
         hollow = not enclosed.IsInsideSurface(0.0, 0.0, 1.2)
         q = quality.GetOutput()
-        print("| %.1f | %d | %.4f | %d | %s |" % (factor, mesh.GetNumberOfPolys(),
+        print("| %d | %.1f | %d | %.4f | %d | %s |" % (neighbors, factor, mesh.GetNumberOfPolys(),
                                                 field(q, "Coverage"), field(q, "Genus"),
                                                 "yes" if hollow else "no"))
         plane = vtkPlane()
@@ -115,11 +120,13 @@ def main():
         actor.SetMapper(mapper)
         actor.GetProperty().SetColor(0.85, 0.78, 0.62)
         renderer = vtkRenderer()
-        renderer.SetViewport(i / len(FACTORS), 0, (i + 1) / len(FACTORS), 1)
+        bottom = (len(rows) - 1 - row) / len(rows)
+        renderer.SetViewport(i / len(FACTORS), bottom, (i + 1) / len(FACTORS),
+                             bottom + 1 / len(rows))
         renderer.SetBackground(1, 1, 1)
         renderer.AddActor(actor)
         label = vtkTextActor()
-        label.SetInput("ThresholdFactor %.1f" % factor)
+        label.SetInput("ThresholdFactor %.1f, %s" % (factor, "relative" if neighbors else "absolute"))
         label.GetTextProperty().SetColor(0.1, 0.1, 0.1)
         label.GetTextProperty().SetFontSize(16)
         label.SetPosition(10, 305)

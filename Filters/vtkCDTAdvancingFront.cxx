@@ -939,49 +939,65 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
 {
   const double *a = this->P(e0), *b = this->P(e1);
   const double midpoint[3] = { 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]) };
-  this->FindPoints(parameters.Radius, midpoint, this->Near);
-  this->Candidates.clear();
-  for (vtkIdType k = 0; k < static_cast<vtkIdType>(this->Near.size()); ++k)
+  // The candidates in order of distance to the midpoint, in two rings: those within half the
+  // radius first, then the others (the first candidate is accepted for most front edges, and
+  // the inner ball holds a quarter of the points). The order, hence the result, is the one of a
+  // single sorted list: both rings are split by the same squared distance.
+  const double inner2 = 0.25 * parameters.Radius * parameters.Radius;
+  this->ProjectionTests = 0;
+  for (int ring = 0; ring < 2; ++ring)
   {
-    const Id x = static_cast<Id>(this->Near[k]);
-    if (x == e0 || x == e1 || x == opposite || this->Status[x] != Usable ||
-      this->Mesh.IsInterior(x))
+    this->FindPoints(ring == 0 ? 0.5 * parameters.Radius : parameters.Radius, midpoint, this->Near);
+    this->Candidates.clear();
+    auto consider = [&](Id x)
     {
-      continue;
-    }
-    this->Candidates.emplace_back(Distance2(this->P(x), midpoint), x);
-  }
-  if (relaxed)
-  {
-    // III.C: the triangles with the adjacent boundary edges at a common vertex (ears), whatever
-    // their distance.
-    this->HalfEdges.clear();
-    GetBoundaryHalfEdges(this->Mesh, e0, this->HalfEdges);
-    GetBoundaryHalfEdges(this->Mesh, e1, this->HalfEdges);
-    for (const auto& halfEdge : this->HalfEdges)
-    {
-      for (Id x : { halfEdge.first, halfEdge.second })
+      const double d2 = Distance2(this->P(x), midpoint);
+      if ((d2 <= inner2) == (ring == 0))
       {
-        if (x != e0 && x != e1 && x != opposite)
+        this->Candidates.emplace_back(d2, x);
+      }
+    };
+    for (vtkIdType k = 0; k < static_cast<vtkIdType>(this->Near.size()); ++k)
+    {
+      const Id x = static_cast<Id>(this->Near[k]);
+      if (x == e0 || x == e1 || x == opposite || this->Status[x] != Usable ||
+        this->Mesh.IsInterior(x))
+      {
+        continue;
+      }
+      consider(x);
+    }
+    if (relaxed)
+    {
+      // III.C: the triangles with the adjacent boundary edges at a common vertex (ears),
+      // whatever their distance.
+      this->HalfEdges.clear();
+      GetBoundaryHalfEdges(this->Mesh, e0, this->HalfEdges);
+      GetBoundaryHalfEdges(this->Mesh, e1, this->HalfEdges);
+      for (const auto& halfEdge : this->HalfEdges)
+      {
+        for (Id x : { halfEdge.first, halfEdge.second })
         {
-          this->Candidates.emplace_back(Distance2(this->P(x), midpoint), x);
+          if (x != e0 && x != e1 && x != opposite)
+          {
+            consider(x);
+          }
         }
       }
     }
-  }
-  std::sort(this->Candidates.begin(), this->Candidates.end());
-  this->Candidates.erase(
-    std::unique(this->Candidates.begin(), this->Candidates.end()), this->Candidates.end());
-  this->ProjectionTests = 0;
-  for (const auto& candidate : this->Candidates)
-  {
-    if (this->IsValid(e0, e1, candidate.second, opposite, parameters))
+    std::sort(this->Candidates.begin(), this->Candidates.end());
+    this->Candidates.erase(
+      std::unique(this->Candidates.begin(), this->Candidates.end()), this->Candidates.end());
+    for (const auto& candidate : this->Candidates)
     {
-      return candidate.second;
-    }
-    if (this->ProjectionTests >= parameters.MaximumCandidates)
-    {
-      break; // the budget is spent: no further candidate can be accepted
+      if (this->IsValid(e0, e1, candidate.second, opposite, parameters))
+      {
+        return candidate.second;
+      }
+      if (this->ProjectionTests >= parameters.MaximumCandidates)
+      {
+        return None; // the budget is spent: no further candidate can be accepted
+      }
     }
   }
   return None;

@@ -10,9 +10,12 @@ original mesh for mesh inputs). Methods: cgal, ours (normals estimated by the fi
 Usage (a build configured with -DPOINTCLOUDSURFACE_BUILD_BENCHMARKS=ON):
   /usr/bin/python3 Benchmarks/run_cdt_benchmark.py --bench build/bin/pcsBenchCDTAdvancingFront \
       --data DIR_WITH_CGAL_DATA [--repeat 3] [input ...]
-Default inputs: the vertices of bunny00, camel, armadillo and knot1 (libcgal-demo's
-data/meshes) and 10^5 points sampled on bunny00 and on the unit sphere. With --repeat the
-fastest of the runs is kept (the quality does not change between runs).
+Default inputs: the clean real surfaces of issue 6, i.e. the vertices of bunny00, armadillo,
+camel, elephant and refined_elephant (libcgal-demo's data/meshes) and 10^5 points sampled on each,
+then the noisy variants (noise:0.4:<mesh>: Gaussian noise of 0.4 mean spacings on the vertices).
+With --repeat the fastest of the runs is kept (the quality does not change between runs).
+The last column checks issue 6's criteria on the clean inputs: 0 non-manifold edges and vertices,
+coverage >= 99 %, Hausdorff <= 2 mean spacings, time <= CGAL's.
 """
 import argparse
 import datetime
@@ -25,11 +28,14 @@ import sys
 METHODS = ["cgal", "ours", "ours-normals"]
 
 
+SURFACES = ("bunny00", "armadillo", "camel", "elephant", "refined_elephant")
+
+
 def default_inputs(data):
-    meshes = os.path.join(data, "meshes")
-    inputs = [os.path.join(meshes, m + ".off") for m in ("bunny00", "camel", "armadillo", "knot1")]
-    inputs.append("sample:%s:100000" % os.path.join(meshes, "bunny00.off"))
-    inputs.append("sphere:100000")
+    meshes = [os.path.join(data, "meshes", m + ".off") for m in SURFACES]
+    inputs = list(meshes)
+    inputs += ["sample:%s:100000" % m for m in meshes]
+    inputs += ["noise:0.4:%s" % m for m in meshes]
     return inputs
 
 
@@ -45,10 +51,31 @@ def run(bench, method, spec, repeat):
 
 
 def label(spec):
+    if spec.startswith("noise:"):
+        fraction, rest = spec[6:].split(":", 1)
+        return "%s + noise %s spacing" % (label(rest), fraction)
     if spec.startswith("sample:"):
         path, n = spec[7:].rsplit(":", 1)
         return "%s points on %s" % (n, os.path.basename(path))
     return os.path.basename(spec)
+
+
+def criteria(spec, method, r, cgal_seconds):
+    """Issue 6 on clean inputs: which criteria fail (ok when none); noisy inputs: time only."""
+    if method == "cgal":
+        return ""
+    failed = []
+    if r["seconds"] > cgal_seconds:
+        failed.append("time")
+    if spec.startswith("noise:"):
+        return "slower than CGAL" if failed else "not slower than CGAL"
+    if r["non_manifold_edges"] or r["non_manifold_vertices"]:
+        failed.append("non-manifold")
+    if r["coverage"] < 0.99:
+        failed.append("coverage")
+    if r["hausdorff_over_spacing"] > 2.0:
+        failed.append("Hausdorff")
+    return "ok" if not failed else "FAILS " + ", ".join(failed)
 
 
 def main():
@@ -66,18 +93,20 @@ def main():
         os.cpu_count(), load))
     print()
     print("| input | points | method | time s | CGAL time / time | triangles | peak MB | unused | "
-          "boundary edges | non-manifold edges / vertices | coverage | genus | Hausdorff / spacing |")
-    print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+          "boundary edges | non-manifold edges / vertices | coverage | genus | Hausdorff / spacing | "
+          "criteria |")
+    print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
     for spec in inputs:
         results = {m: run(args.bench, m, spec, args.repeat) for m in METHODS}
         cgal = results["cgal"]["seconds"]
         for m in METHODS:
             r = results[m]
-            print("| %s | %d | %s | %.3f | %.2f | %d | %.0f | %d | %d | %d / %d | %.4f | %s | %.2f |" % (
+            print("| %s | %d | %s | %.3f | %.2f | %d | %.0f | %d | %d | %d / %d | %.4f | %s | %.2f | %s |" % (
                 label(spec), r["points"], m, r["seconds"], cgal / r["seconds"], r["triangles"],
                 r["peak_mb"], r["unused"], r["boundary_edges"], r["non_manifold_edges"],
                 r["non_manifold_vertices"], r["coverage"],
-                r["genus"] if r["genus"] >= 0 else "-", r["hausdorff_over_spacing"]), flush=True)
+                r["genus"] if r["genus"] >= 0 else "-", r["hausdorff_over_spacing"],
+                criteria(spec, m, r, cgal)), flush=True)
     print()
     print("Load average %.2f at the end." % os.getloadavg()[0])
 

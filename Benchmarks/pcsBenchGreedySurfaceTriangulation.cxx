@@ -269,6 +269,10 @@ int main(int argc, char* argv[])
         greedy->SetMinimumIslandTriangles(static_cast<int>(value));
       else if (name == "BoundaryVectorRadius")
         greedy->SetBoundaryVectorRadius(value);
+      else if (name == "MaximumHoleDiameter")
+        greedy->SetMaximumHoleDiameter(value);
+      else if (name == "InsertLostPoints")
+        greedy->SetInsertLostPoints(value != 0.0);
       else
       {
         std::cerr << "unknown parameter " << name << std::endl;

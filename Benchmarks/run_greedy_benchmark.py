@@ -26,8 +26,14 @@ import platform
 import subprocess
 
 
-def run(binary, method, spec):
-    out = subprocess.run([binary, method, spec], check=True, capture_output=True, text=True)
+def run(binary, method, spec, before=None):
+    env = None
+    if method == "before":
+        # The same executable built from an earlier commit (its library beside it in ../lib).
+        binary, method = before, "ours"
+        env = dict(os.environ, LD_LIBRARY_PATH=os.path.join(os.path.dirname(before), "..", "lib"))
+    out = subprocess.run([binary, method, spec], check=True, capture_output=True, text=True,
+                         env=env)
     line = [l for l in out.stdout.splitlines() if l.startswith("{")][-1]
     return json.loads(line)
 
@@ -40,6 +46,8 @@ def main():
     parser.add_argument("--markdown")
     parser.add_argument("--methods", nargs="+", default=["ours", "cgal"])
     parser.add_argument("--variants", nargs="+", default=["clean", "damaged", "noisy"])
+    parser.add_argument("--before-bin", help="pcsBenchGreedySurfaceTriangulation of an earlier "
+                        "build (its library in ../lib): method 'before' in --methods runs it")
     parser.add_argument("inputs", nargs="+")
     args = parser.parse_args()
     binary = os.path.join(args.bench_bin, "pcsBenchGreedySurfaceTriangulation")
@@ -66,11 +74,14 @@ def main():
                                                          if variant == "noisy-damaged" else "")
                     if variant == "noisy" and seed != seeds[0]:
                         continue
-                results = {m: run(binary, m, spec) for m in args.methods}
+                before = (os.path.join(args.before_bin, "pcsBenchGreedySurfaceTriangulation")
+                          if args.before_bin else None)
+                results = {m: run(binary, m, spec, before) for m in args.methods}
                 for m in args.methods:
                     r = results[m]
                     verdict = ""
-                    if m.startswith("ours") and variant != "clean" and "cgal" in results:
+                    if (m.startswith("ours") or m == "before") and variant != "clean" \
+                            and "cgal" in results:
                         c = results["cgal"]
                         ok = (r["non_manifold_edges"] == 0
                               and r["boundary_edges"] <= 0.1 * c["boundary_edges"]

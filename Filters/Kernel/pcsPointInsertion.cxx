@@ -157,8 +157,11 @@ bool InsertFreePoint(SurfaceMesh& mesh, const double* xyz, int32_t q, const int3
       }
     }
   }
-  double oldNormal[3];
+  // The normal each new triangle must agree with: that of the triangle it replaces (or is
+  // attached to); the last two of an edge split replace the second triangle.
+  double oldNormal[3], otherNormal[3];
   Normal(xyz, t3[0], t3[1], t3[2], oldNormal);
+  std::copy_n(oldNormal, 3, otherNormal);
 
   // The replacement: triangles removed and added.
   std::vector<int64_t> removed;
@@ -170,6 +173,7 @@ bool InsertFreePoint(SurfaceMesh& mesh, const double* xyz, int32_t q, const int3
     if (other >= 0)
     {
       const int32_t d = mesh.OppositeVertex(b, a);
+      Normal(xyz, b, a, d, otherNormal);
       removed = { best, other };
       added = { { { a, q, c } }, { { q, b, c } }, { { b, q, d } }, { { q, a, d } } };
       result.OldEdges = { { { b, c } }, { { c, a } }, { { a, d } }, { { d, b } } };
@@ -198,12 +202,13 @@ bool InsertFreePoint(SurfaceMesh& mesh, const double* xyz, int32_t q, const int3
     return false;
   }
   // Proper triangles that do not fold back over the ones they replace (or attach to).
-  for (const auto& t : added)
+  for (size_t i = 0; i < added.size(); ++i)
   {
+    const auto& t = added[i];
     double n[3];
     Normal(xyz, t[0], t[1], t[2], n);
     if (pcs::projected::Collinear(P(xyz, t[0]), P(xyz, t[1]), P(xyz, t[2])) ||
-      !(Dot(n, oldNormal) > 0))
+      !(Dot(n, i < 2 ? oldNormal : otherNormal) > 0))
     {
       result.OldEdges.clear();
       return false;

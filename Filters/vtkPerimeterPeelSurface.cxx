@@ -406,10 +406,13 @@ public:
   bool HasFailed(int64_t c) const { return this->Failed[c] != 0; }
 
   // Try the group that starts at cell c; on success the cells are removed and listed in Group.
-  bool Try(int64_t c, double threshold)
+  // A group that opens a handle is accepted only when c's largest exterior facet exceeds
+  // handleThreshold.
+  bool Try(int64_t c, double threshold, double handleThreshold)
   {
     this->Group.clear();
     this->BadCount = 0;
+    const bool mayOpenHandle = this->Solid.LargestExteriorFacet(c) > handleThreshold;
     std::priority_queue<std::pair<double, int64_t>> grow;
     bool ok = this->Add(c, threshold, grow);
     while (ok)
@@ -452,7 +455,9 @@ public:
     {
       // The Euler characteristic of the boundary drops when a handle opens, stays when the
       // topology does, and grows when a handle closes (a bridge goes) or a component splits off:
-      // the last is refused (the solid must stay connected around the group).
+      // the last is refused (the solid must stay connected around the group), and so is a handle
+      // that the start facet does not clearly show (a small tunnel between two dents of a
+      // sphere sample starts at a facet 4-5 times the threshold, a torus's hole at 11-26 times).
       const int64_t after = this->BoundaryEuler();
       for (int64_t g : this->Group)
       {
@@ -463,7 +468,7 @@ public:
       {
         this->Solid.SetInside(g, false);
       }
-      ok = after <= before || this->StaysConnected();
+      ok = after < before ? mayOpenHandle : after == before || this->StaysConnected();
     }
     if (!ok)
     {
@@ -1007,6 +1012,8 @@ int vtkPerimeterPeelSurface::RequestData(
   // GroupFactor is a ratio of lengths: squared for the area measure.
   const double groupFactor =
     this->GroupFactor * (this->FacetMeasure == AREA ? this->GroupFactor : 1.0);
+  // A group that opens a handle needs a start facet twice as clear (rule 3 of the class docs).
+  const double handleFactor = groupFactor * (this->FacetMeasure == AREA ? 4.0 : 2.0);
   bool aborted = false;
   auto removed = [&]()
   {
@@ -1101,7 +1108,8 @@ int vtkPerimeterPeelSurface::RequestData(
         {
           const int64_t c = candidate.second;
           if (aborted || !solid.IsInside(c) || groups->HasFailed(c) ||
-            solid.LargestExteriorFacet(c) <= threshold || !groups->Try(c, threshold))
+            solid.LargestExteriorFacet(c) <= threshold ||
+            !groups->Try(c, threshold, threshold * handleFactor))
           {
             continue;
           }

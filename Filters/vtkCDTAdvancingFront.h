@@ -102,6 +102,22 @@
  * than 3 usable points give a warning and an output without triangles. Under MPI the input is
  * gathered on process 0, which computes the mesh; the other processes output nothing.
  *
+ * @warning
+ * Measured against CGAL's advancing front on the same clouds (Benchmarks/run_cdt_benchmark.py,
+ * 2026-11-23, loaded 2-core machine; the README gives the table). Time: with the meshes' vertex
+ * normals 1.00-1.49 times faster than CGAL on the vertex sets of bunny00, armadillo and
+ * refined_elephant and on 10^5-point samples, but 2.2 times slower on the small irregular vertex
+ * sets of the camel and the elephant; with estimated normals 1.25-4.5 times slower (the K
+ * nearest-point queries of vtkPCANormalEstimation, twice per point, the second pass sequential,
+ * take 40-56 % of the time). Quality: 0 non-manifold edges and vertices and coverage >= 99 % on
+ * every clean cloud, but the Hausdorff distance exceeds 2 mean spacings on samples of the
+ * armadillo (2.24) and the camel (5.04) with exact normals, and on thin features with estimated
+ * normals (up to 9.17 on the camel). Noisy clouds (Gaussian noise of 0.4 mean spacing): many
+ * front edges and points find no valid triangle (the noise puts neighbouring points inside the
+ * candidate triangles' projections); the work per front edge and per seed point is bounded by
+ * MaximumNumberOfCandidates, but the filter still takes 3.7-11 times CGAL's time, leaves holes
+ * (coverage 0.94-0.98) and unused points (2-6 %).
+ *
  * @sa
  * vtkPCANormalEstimation vtkStaticPointLocator vtkReconstructionQuality vtkIncrementalDelaunay3D
  */

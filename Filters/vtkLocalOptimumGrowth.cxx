@@ -1417,6 +1417,18 @@ bool Grower::InsertOrphan(Id q)
       }
     }
   }
+  if (added.empty() && !bestInside && bestEdge >= 0)
+  {
+    // q is beside an edge of the mesh's boundary (its projection falls just across it): the
+    // triangle that edge lacks is made with q.
+    const Id u = t3[bestEdge], w = t3[(bestEdge + 1) % 3];
+    if (this->Mesh.FindTriangle(w, u) < 0 &&
+      this->Mesh.CanAddTriangle(w, u, q) == pcs::SurfaceMesh::Check::Ok &&
+      !pcs::projected::Collinear(this->P3(w), this->P3(u), this->P3(q)))
+    {
+      return this->Commit(w, u, q) >= 0;
+    }
+  }
   if (added.empty())
   {
     if (!bestInside)

@@ -95,7 +95,8 @@
  * 5. Orphans (added): a free point that the growth left under a triangle (within the projection
  *    of a triangle of its neighbourhood, or near one of its edges, and closer to its plane than
  *    its longest edge) is inserted by splitting that triangle into three, or the two triangles
- *    of the nearest edge into four.
+ *    of the nearest edge into four; beside a boundary edge (its projection falls just across
+ *    it), by making the triangle that edge lacks.
  * 6. Holes (added): the boundary loops of at most MaximumHoleEdges edges are closed with the
  *    project's shared hole triangulation (paper 001 steps 5-6: projection on the loop's mean
  *    plane, chord splitting, 2D greedy triangulation, free points inside used), kept only when

@@ -3,6 +3,7 @@
 #include "pcsCoordinateScaling.h"
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
+#include "pcsNearestNeighbors.h"
 #include "pcsProjectedTests.h"
 #include "pcsSurfaceMesh.h"
 
@@ -16,9 +17,9 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPCANormalEstimation.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -1466,25 +1467,128 @@ int vtkCDTAdvancingFront::RequestData(
     const double length2 = Dot(n, n);
     return !std::isfinite(length2) || !(length2 > 0.0);
   };
-  // The estimated normals, for every point: vtkPCANormalEstimation with its graph traversal (the
-  // normals consistent with each other), then all flipped if needed so that the normal of the
-  // point farthest from the centroid (a point of the convex hull, where the outside is known)
-  // points away from the centroid: outwards on a closed surface.
+  // The estimated normals, for every point: the PCA normals of vtkPCANormalEstimation with its
+  // graph traversal (the normals consistent with each other), computed here from one table of
+  // nearest neighbours (see the class docs for why), then all flipped if needed so that the normal
+  // of the point farthest from the centroid (a point of the convex hull, where the outside is
+  // known) points away from the centroid: outwards on a closed surface.
   auto estimateNormals = [&](std::vector<double>& estimatedNormals)
   {
     estimatedNormals.assign(3 * static_cast<size_t>(local), 0.0);
-    vtkNew<vtkPCANormalEstimation> estimation;
-    estimation->SetInputData(cloud);
-    estimation->SetLocator(locator); // its resized bins (ResizeBins) serve the K nearest points
-    estimation->SetSampleSize(std::min<int>(this->NormalSampleSize, local));
-    estimation->SetNormalOrientationToGraphTraversal();
-    estimation->Update();
-    vtkDataArray* estimated = estimation->GetOutput()->GetPointData()->GetNormals();
-    if (estimated && estimated->GetNumberOfTuples() == local)
+    // The neighbourhood of a point: itself and its NormalSampleSize - 1 nearest other points (the
+    // NormalSampleSize nearest points of vtkPCANormalEstimation, which include the point).
+    const int others = std::min<int>(this->NormalSampleSize, local) - 1;
+    std::vector<int32_t> knn;
+    if (!pcs::FindNearestNeighbors(locator, xyz.data(), static_cast<int32_t>(local), others, knn,
+          [this](double fraction)
+          {
+            this->UpdateProgress(0.02 + 0.06 * fraction);
+            return !this->GetAbortExecute();
+          }))
     {
-      for (Id k = 0; k < local; ++k)
+      return;
+    }
+    auto neighbor = [&](Id i, int j) { return knn[static_cast<size_t>(i) * others + j]; };
+    // Normal of each point: the eigenvector of the smallest eigenvalue of the covariance matrix of
+    // its neighbourhood (Hoppe et al.'s tangent plane), in parallel.
+    vtkSMPTools::For(0, local,
+      [&](Id begin, Id end)
       {
-        estimated->GetTuple(k, &estimatedNormals[3 * static_cast<size_t>(k)]);
+        std::vector<Id> hood;
+        for (Id i = begin; i < end; ++i)
+        {
+          hood.assign(1, i);
+          for (int j = 0; j < others; ++j)
+          {
+            if (neighbor(i, j) >= 0)
+            {
+              hood.push_back(neighbor(i, j));
+            }
+          }
+          double mean[3] = { 0.0, 0.0, 0.0 };
+          for (Id h : hood)
+          {
+            for (int c = 0; c < 3; ++c)
+            {
+              mean[c] += xyz[3 * static_cast<size_t>(h) + c];
+            }
+          }
+          const double count = static_cast<double>(hood.size());
+          for (double& c : mean)
+          {
+            c /= count;
+          }
+          double row0[3] = { 0.0, 0.0, 0.0 }, row1[3] = { 0.0, 0.0, 0.0 },
+                 row2[3] = { 0.0, 0.0, 0.0 };
+          double* covariance[3] = { row0, row1, row2 };
+          for (Id h : hood)
+          {
+            const double d[3] = { xyz[3 * static_cast<size_t>(h)] - mean[0],
+              xyz[3 * static_cast<size_t>(h) + 1] - mean[1],
+              xyz[3 * static_cast<size_t>(h) + 2] - mean[2] };
+            for (int r = 0; r < 3; ++r)
+            {
+              for (int c = 0; c < 3; ++c)
+              {
+                covariance[r][c] += d[r] * d[c];
+              }
+            }
+          }
+          for (int r = 0; r < 3; ++r)
+          {
+            for (int c = 0; c < 3; ++c)
+            {
+              covariance[r][c] /= count;
+            }
+          }
+          double values[3], column0[3], column1[3], column2[3];
+          double* vectors[3] = { column0, column1, column2 };
+          vtkMath::Jacobi(covariance, values, vectors); // eigenvalues in decreasing order
+          double* n = &estimatedNormals[3 * static_cast<size_t>(i)];
+          n[0] = vectors[0][2];
+          n[1] = vectors[1][2];
+          n[2] = vectors[2][2];
+        }
+      });
+    if (this->GetAbortExecute())
+    {
+      return;
+    }
+    // Consistent orientation by the graph traversal of vtkPCANormalEstimation: breadth first from
+    // the lowest unvisited id, each newly reached neighbour flipped to agree with the point it
+    // is reached from.
+    std::vector<uint8_t> visited(static_cast<size_t>(local), 0);
+    std::vector<Id> queue;
+    queue.reserve(static_cast<size_t>(local));
+    for (Id seed = 0; seed < local; ++seed)
+    {
+      if (visited[seed])
+      {
+        continue;
+      }
+      visited[seed] = 1;
+      queue.assign(1, seed);
+      for (size_t head = 0; head < queue.size(); ++head)
+      {
+        const Id i = queue[head];
+        const double* n = &estimatedNormals[3 * static_cast<size_t>(i)];
+        for (int j = 0; j < others; ++j)
+        {
+          const Id w = neighbor(i, j);
+          if (w < 0 || visited[w])
+          {
+            continue;
+          }
+          visited[w] = 1;
+          double* nw = &estimatedNormals[3 * static_cast<size_t>(w)];
+          if (Dot(n, nw) < 0.0)
+          {
+            nw[0] = -nw[0];
+            nw[1] = -nw[1];
+            nw[2] = -nw[2];
+          }
+          queue.push_back(w);
+        }
       }
     }
     double centroid[3] = { 0.0, 0.0, 0.0 };

@@ -1447,11 +1447,52 @@ bool Grower::InsertOrphan(Id q)
 
 void Grower::InsertOrphans()
 {
+  // A lone triangle (no neighbour, each vertex in it alone) is a seed that could not grow: its
+  // points usually lie on a surface meshed around them. It is taken out, its points inserted
+  // like the other free points, and restored when none of them could be.
+  std::vector<std::array<Id, 3>> lone;
+  const int64_t count = this->Mesh.GetNumberOfTriangleIds();
+  for (int64_t t = 0; t < count; ++t)
+  {
+    if (this->Mesh.IsTriangleRemoved(t))
+    {
+      continue;
+    }
+    const int32_t* v = this->Mesh.GetTriangle(t);
+    bool alone = true;
+    for (int j = 0; j < 3 && alone; ++j)
+    {
+      alone = this->Mesh.GetVertexDegree(v[j]) == 1;
+    }
+    if (alone)
+    {
+      lone.push_back({ { v[0], v[1], v[2] } });
+      this->Mesh.RemoveTriangle(t);
+      this->UsedVertices -= 3;
+    }
+  }
   for (Id q = 0; q < this->N; ++q)
   {
     if (this->Mesh.IsFree(q) && this->InsertOrphan(q))
     {
       ++this->Inserted;
+    }
+  }
+  for (const auto& t : lone)
+  {
+    if (this->Mesh.IsFree(t[0]) && this->Mesh.IsFree(t[1]) && this->Mesh.IsFree(t[2]))
+    {
+      this->Commit(t[0], t[1], t[2]);
+    }
+    else
+    {
+      for (Id q : t)
+      {
+        if (this->Mesh.IsFree(q) && this->InsertOrphan(q))
+        {
+          ++this->Inserted;
+        }
+      }
     }
   }
 }

@@ -91,13 +91,15 @@
  *    Benchmarks/run_local_optimum_closure.py on random (Poisson) samples of 2,000, 5,000, 10,000
  *    and 20,000 points, 30 seeds each, counting the runs not closed over every point with the
  *    right genus: spheres 8 of 120 before these two rules and the orphan rule of step 5 (sliver
- *    holes of 9 to 11 edges, one unused point), 0 of 120 after; tori 21 of 120 before, 5 of 120
- *    after (two extra handles made at the strict level, three loops of 3 to 10 edges left).
+ *    holes of 9 to 11 edges, one unused point), 0 of 120 after; tori 21 of 120 before, 4 of 120
+ *    after (two extra handles made at the strict level, loops of 5 and 10 edges left).
  * 5. Orphans (added): a free point that the growth left under a triangle (within the projection
  *    of a triangle of its neighbourhood, or near one of its edges, and closer to its plane than
  *    its longest edge) is inserted by splitting that triangle into three, or the two triangles
  *    of the nearest edge into four; beside a boundary edge (its projection falls just across
- *    it), by making the triangle that edge lacks.
+ *    it), by making the triangle that edge lacks. A lone triangle (a seed that could not grow)
+ *    is taken out first and its points inserted the same way; it is restored when none of them
+ *    could be.
  * 6. Holes (added): the boundary loops of at most MaximumHoleEdges edges are closed with the
  *    project's shared hole triangulation (paper 001 steps 5-6: projection on the loop's mean
  *    plane, chord splitting, 2D greedy triangulation, free points inside used), kept only when

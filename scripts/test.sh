@@ -3,7 +3,7 @@
 # virtual X server (the rendering tests need one). Exits non-zero when a test fails.
 #   scripts/test.sh              ./build (the README's test command, what CI runs)
 #   scripts/test.sh --sanitize   ./build-asan: the same suite under AddressSanitizer and
-#                                UndefinedBehaviorSanitizer (Debug build; slower)
+#                                UndefinedBehaviorSanitizer (RelWithDebInfo build; slower)
 #   scripts/test.sh --valgrind   the C++ tests of ./build under valgrind memcheck (ctest -T
 #                                memcheck; any memcheck error fails the test; slow: about an
 #                                hour on 2 busy cores).

@@ -221,15 +221,29 @@ bool InsertFreePoint(SurfaceMesh& mesh, const double* xyz, int32_t q, const int3
     restore.push_back({ { tri[0], tri[1], tri[2] } });
     mesh.RemoveTriangle(t);
   }
+  // Added one by one, the triangles around q may pinch a vertex until the last one closes its
+  // fan (SurfaceMesh allows that deliberately): the manifold is checked once all are in.
   bool ok = true;
   for (const auto& t : added)
   {
-    if (mesh.CanAddTriangle(t[0], t[1], t[2]) != SurfaceMesh::Check::Ok)
+    const SurfaceMesh::Check check = mesh.CanAddTriangle(t[0], t[1], t[2]);
+    const int64_t id = check == SurfaceMesh::Check::Ok ||
+        check == SurfaceMesh::Check::NonManifoldVertex
+      ? mesh.AddTriangle(t[0], t[1], t[2])
+      : -1;
+    if (id < 0)
     {
       ok = false;
       break;
     }
-    result.Added.push_back(mesh.AddTriangle(t[0], t[1], t[2]));
+    result.Added.push_back(id);
+  }
+  for (size_t i = 0; i < added.size() && ok; ++i)
+  {
+    for (int j = 0; j < 3 && ok; ++j)
+    {
+      ok = mesh.GetNumberOfFans(added[i][j]) == 1;
+    }
   }
   if (!ok)
   {

@@ -18,8 +18,10 @@
 //   boundary edge, the triangle (b, a, q) is attached across it when q is beyond the edge, or
 //   the triangle is split into (q, b, c), (a, q, c) when q is almost on it (the boundary then
 //   runs a -> q -> b).
-// No new triangle may be exactly degenerate (pcs::projected::Collinear). Each operation is
-// checked with SurfaceMesh::CanAddTriangle and undone when it would break the manifold.
+// No new triangle may be exactly degenerate (pcs::projected::Collinear) or face against the
+// triangle it replaces. Each operation is applied (its triangles may pinch a vertex until the
+// last one is in) and undone when it breaks the manifold: a half-edge used twice, or a vertex
+// left with more than one fan.
 //
 // The decisions of "inside" and of degeneracy are exact predicates; the distances that choose
 // the nearest triangle and the reach (longest edge) are metric thresholds in floating point.

@@ -14,7 +14,10 @@
 // vtkReconstructionQuality for every method alike, non-manifold edges and vertices, coverage,
 // components, genus (-1 when not closed) and the Hausdorff distance in units of the mean spacing
 // (to the reference surface of mesh inputs, else to the cloud). With a third argument the mesh is
-// written as OFF over all input points. CGAL is used here only: the library never links it.
+// written as OFF over all input points. With PCS_BENCH_NO_QUALITY=1 in the environment only the
+// reconstruction runs (for profiling and for comparing outputs): the JSON line stops at the
+// triangle count and the third argument, if any, receives the triangles, one "i j k" per line.
+// CGAL is used here only: the library never links it.
 #include "pcsBenchInput.h"
 
 #include "vtkCDTAdvancingFront.h"
@@ -39,6 +42,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <random>
@@ -132,6 +136,8 @@ int main(int argc, char* argv[])
     return 2;
   }
   const std::string method = argv[1], spec = argv[2];
+  // PCS_BENCH_NO_QUALITY=1: the reconstruction alone, no quality measures.
+  const char* noQuality = std::getenv("PCS_BENCH_NO_QUALITY");
   double noise = 0.0;
   std::string source = spec;
   if (spec.rfind("noise:", 0) == 0 && spec.find(':', 6) != std::string::npos)
@@ -216,6 +222,21 @@ int main(int argc, char* argv[])
     return 2;
   }
   const double peak = pcsbench::StatusMegabytes("VmHWM");
+  if (noQuality && std::string(noQuality) == "1")
+  {
+    std::printf("{\"method\": \"%s\", \"input\": \"%s\", \"points\": %ld, \"seconds\": %.4f, "
+                "\"triangles\": %zu}\n",
+      method.c_str(), spec.c_str(), n, seconds, triangles.size());
+    if (argc > 3)
+    {
+      std::ofstream out(argv[3]);
+      for (const auto& t : triangles)
+      {
+        out << t[0] << " " << t[1] << " " << t[2] << "\n";
+      }
+    }
+    return 0;
+  }
 
   // The same quality measures for every method.
   vtkSmartPointer<vtkPolyData> mesh = MakeMesh(xyz, triangles);

@@ -8,7 +8,9 @@
 // cloud.xyz), and noise:F:<input>: that input with Gaussian noise of standard deviation F mean
 // spacings added to every coordinate (fixed seed; the normals and the reference surface stay the
 // noise-free ones, as in run_reconstruction_benchmark.py's noisy variants).
-// Prints one JSON line: method, input, points, seconds (the reconstruction alone), triangles,
+// Prints one JSON line: method, input, points, seconds (the reconstruction alone, wall clock),
+// cpu_seconds (the CPU time of the process, all threads, over the same span: steadier than the
+// wall clock on a loaded machine), triangles,
 // peak_mb and baseline_mb (VmHWM after the reconstruction, and VmRSS before it, from
 // /proc/self/status), unused points and boundary edges; then, measured after the peak by
 // vtkReconstructionQuality for every method alike, non-manifold edges and vertices, coverage,
@@ -43,6 +45,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <iostream>
 #include <random>
@@ -154,7 +157,13 @@ int main(int argc, char* argv[])
   const std::vector<double>& xyz = input.XYZ;
   const long n = input.Size();
   std::vector<std::array<long, 3>> triangles;
-  double seconds = 0.0, baseline = 0.0;
+  double seconds = 0.0, cpuSeconds = 0.0, baseline = 0.0;
+  auto cpuNow = []()
+  {
+    timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+  };
   using Clock = std::chrono::steady_clock;
   if (method == "cgal")
   {
@@ -167,10 +176,12 @@ int main(int argc, char* argv[])
     }
     std::vector<std::array<std::size_t, 3>> facets;
     baseline = pcsbench::StatusMegabytes("VmRSS");
+    const double cpuStart = cpuNow();
     const auto start = Clock::now();
     CGAL::advancing_front_surface_reconstruction(
       points.begin(), points.end(), std::back_inserter(facets));
     seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    cpuSeconds = cpuNow() - cpuStart;
     for (const auto& f : facets)
     {
       triangles.push_back(
@@ -203,9 +214,11 @@ int main(int argc, char* argv[])
     vtkNew<vtkCDTAdvancingFront> front;
     front->SetInputData(cloud);
     baseline = pcsbench::StatusMegabytes("VmRSS");
+    const double cpuStart = cpuNow();
     const auto start = Clock::now();
     front->Update();
     seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    cpuSeconds = cpuNow() - cpuStart;
     auto iter = vtk::TakeSmartPointer(front->GetOutput()->GetPolys()->NewIterator());
     for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
     {
@@ -225,8 +238,8 @@ int main(int argc, char* argv[])
   if (noQuality && std::string(noQuality) == "1")
   {
     std::printf("{\"method\": \"%s\", \"input\": \"%s\", \"points\": %ld, \"seconds\": %.4f, "
-                "\"triangles\": %zu}\n",
-      method.c_str(), spec.c_str(), n, seconds, triangles.size());
+                "\"cpu_seconds\": %.4f, \"triangles\": %zu}\n",
+      method.c_str(), spec.c_str(), n, seconds, cpuSeconds, triangles.size());
     if (argc > 3)
     {
       std::ofstream out(argv[3]);
@@ -264,11 +277,13 @@ int main(int argc, char* argv[])
   }
   const long used = static_cast<long>(FieldValue(measured, "NumberOfUsedPoints"));
   std::printf("{\"method\": \"%s\", \"input\": \"%s\", \"points\": %ld, \"seconds\": %.4f, "
-              "\"triangles\": %zu, \"peak_mb\": %.1f, \"baseline_mb\": %.1f, \"unused\": %ld, "
+              "\"cpu_seconds\": %.4f, \"triangles\": %zu, \"peak_mb\": %.1f, "
+              "\"baseline_mb\": %.1f, \"unused\": %ld, "
               "\"boundary_edges\": %ld, \"non_manifold_edges\": %ld, "
               "\"non_manifold_vertices\": %ld, \"coverage\": %.5f, \"components\": %ld, "
               "\"genus\": %ld, \"hausdorff_over_spacing\": %.3f, \"reference\": \"%s\"}\n",
-    method.c_str(), spec.c_str(), n, seconds, triangles.size(), peak, baseline, n - used,
+    method.c_str(), spec.c_str(), n, seconds, cpuSeconds, triangles.size(), peak, baseline,
+    n - used,
     static_cast<long>(FieldValue(measured, "NumberOfBoundaryEdges")),
     static_cast<long>(FieldValue(measured, "NumberOfNonManifoldEdges")),
     static_cast<long>(FieldValue(measured, "NumberOfNonManifoldVertices")),

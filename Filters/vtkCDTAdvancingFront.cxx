@@ -315,6 +315,7 @@ public:
   void Build(vtkStaticPointLocator* locator, const double* xyz, Id n)
   {
     this->Locator = locator;
+    this->Points = xyz;
     this->Valid = false;
     this->Margin = 0;
     locator->GetDivisions(this->Divisions);
@@ -376,18 +377,27 @@ public:
     this->Valid = filled == n;
   }
 
-  // The ids of the points within `radius` of x (in no particular order). `scratch` serves the
-  // locator's query when the bins were not copied (thread safe with one scratch per thread).
-  void FindPointsWithinRadius(
-    double radius, const double* x, std::vector<Id>& result, vtkIdList* scratch) const
+  // The ids of the points within `radius` of x (in no particular order) and, when `distances2`
+  // is given, their squared distances to x (the value Distance2(point, x) gives). `scratch` serves
+  // the locator's query when the bins were not copied (thread safe with one scratch per thread).
+  void FindPointsWithinRadius(double radius, const double* x, std::vector<Id>& result,
+    vtkIdList* scratch, std::vector<double>* distances2 = nullptr) const
   {
     result.clear();
+    if (distances2)
+    {
+      distances2->clear();
+    }
     if (!this->Valid)
     {
       this->Locator->FindPointsWithinRadius(radius, x, scratch);
       for (vtkIdType k = 0; k < scratch->GetNumberOfIds(); ++k)
       {
         result.push_back(static_cast<Id>(scratch->GetId(k)));
+        if (distances2)
+        {
+          distances2->push_back(Distance2(this->Points + 3 * scratch->GetId(k), x));
+        }
       }
       return;
     }
@@ -413,10 +423,14 @@ public:
         for (int64_t m = this->Offsets[row + low[0]]; m < end; ++m)
         {
           const double* p = &this->XYZ[3 * m];
-          const double d[3] = { p[0] - x[0], p[1] - x[1], p[2] - x[2] };
-          if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= r2)
+          const double d2 = Distance2(p, x);
+          if (d2 <= r2)
           {
             result.push_back(this->Ids[m]);
+            if (distances2)
+            {
+              distances2->push_back(d2);
+            }
           }
         }
       }
@@ -432,6 +446,7 @@ private:
   }
 
   vtkStaticPointLocator* Locator = nullptr;
+  const double* Points = nullptr; // the coordinates the locator was built on
   bool Valid = false;
   int Margin = 1; // bins visited beyond a query's box on each side
   int Divisions[3] = { 1, 1, 1 };
@@ -618,8 +633,8 @@ private:
 
   // The projection tests of section II.D on the triangle (e0, e1, third) with the plane `plane`:
   // true when no neighbouring point or mesh edge blocks it.
-  bool PassesProjectionTests(
-    Id e0, Id e1, Id third, const pcs::projected::TrianglePlane& plane, const Parameters& parameters);
+  bool PassesProjectionTests(Id e0, Id e1, Id third, const pcs::projected::TrianglePlane& plane,
+    const Parameters& parameters);
 
   // Best valid third point for the oriented edge (e0, e1) (new triangle e0, e1, x), None if none.
   Id BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters, bool relaxed);
@@ -627,9 +642,11 @@ private:
   // The points within `radius` of x. Every query centre lies in the bounding box of the points,
   // so a ball larger than its diagonal holds them all: the radius is capped there (a huge radius
   // would overflow the locator's squared distances).
-  void FindPoints(double radius, const double* x, std::vector<Id>& result)
+  void FindPoints(double radius, const double* x, std::vector<Id>& result,
+    std::vector<double>* distances2 = nullptr)
   {
-    this->Bins.FindPointsWithinRadius(std::min(radius, this->Diagonal), x, result, this->Scratch);
+    this->Bins.FindPointsWithinRadius(
+      std::min(radius, this->Diagonal), x, result, this->Scratch, distances2);
   }
 
   // Point x projected along its normal onto the plane through `origin` with normal `normal`
@@ -682,6 +699,7 @@ private:
   vtkNew<vtkIdList> Scratch;
   std::vector<Id> Near;
   std::vector<Id> Ball;
+  std::vector<double> BallDistance2; // of each Ball point to the centroid of the triangle tested
   std::vector<std::pair<double, Id>> Candidates;
   std::vector<Id> Neighbors;
   std::vector<int64_t> VertexTriangles;
@@ -714,7 +732,7 @@ private:
       }
       for (size_t i = this->Slot(key);; i = (i + 1) & this->Mask)
       {
-        if (this->Slots[i] == key)
+        if (Same(this->Slots[i], key))
         {
           return true;
         }
@@ -733,7 +751,7 @@ private:
       size_t i = this->Slot(key);
       for (; this->Slots[i][0] != None; i = (i + 1) & this->Mask)
       {
-        if (this->Slots[i] == key)
+        if (Same(this->Slots[i], key))
         {
           return;
         }
@@ -750,6 +768,11 @@ private:
     }
 
   private:
+    // (std::array's == compiles to a memcmp call here.)
+    static bool Same(const std::array<Id, 3>& a, const std::array<Id, 3>& b)
+    {
+      return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+    }
     size_t Slot(const std::array<Id, 3>& t) const
     {
       const uint64_t h = (static_cast<uint64_t>(static_cast<uint32_t>(t[0])) << 32 ^
@@ -904,7 +927,7 @@ bool Front::PassesProjectionTests(
   const double edgeReach =
     this->EdgeReach.Reach(centroid, 1.01 * pointReach, this->LongestEdge) * 1.000001;
   const double segmentReach2 = 1.0201 * pointReach * pointReach;
-  this->FindPoints(edgeReach, centroid, this->Ball);
+  this->FindPoints(edgeReach, centroid, this->Ball, &this->BallDistance2);
   const vtkIdType count = static_cast<vtkIdType>(this->Ball.size());
   const double pointReach2 = pointReach * pointReach;
   const double triangleReach2 = 1.0201 * reach * reach; // the triangle's ball, 1 % of margin
@@ -913,8 +936,8 @@ bool Front::PassesProjectionTests(
   for (vtkIdType k = 0; k < count; ++k)
   {
     const Id p = static_cast<Id>(this->Ball[k]);
-    if (p == e0 || p == e1 || p == third || this->Status[p] != Usable ||
-      Distance2(this->P(p), centroid) > pointReach2)
+    if (this->BallDistance2[k] > pointReach2 || p == e0 || p == e1 || p == third ||
+      this->Status[p] != Usable)
     {
       continue;
     }
@@ -966,7 +989,7 @@ bool Front::PassesProjectionTests(
   {
     const Id u = static_cast<Id>(this->Ball[k]);
     const double uReach = 1.01 * pointReach + this->MaxIncident[u];
-    if (this->Mesh.IsFree(u) || Distance2(this->P(u), centroid) > uReach * uReach)
+    if (this->BallDistance2[k] > uReach * uReach || this->Mesh.IsFree(u))
     {
       continue; // no edge of u reaches the triangle
     }
@@ -996,8 +1019,8 @@ bool Front::PassesProjectionTests(
       // Projected end points (each computed once per triangle tested, most points end several
       // edges); a vertex of the triangle projects onto itself.
       const double* pu = this->Project(u, uIsVertex, normal, this->P(e0), parameters.MaximumRay);
-      const double* pw = pu ? this->Project(w, wIsVertex, normal, this->P(e0), parameters.MaximumRay)
-                            : nullptr;
+      const double* pw =
+        pu ? this->Project(w, wIsVertex, normal, this->P(e0), parameters.MaximumRay) : nullptr;
       // A projected segment that stays out of the triangle's ball (1 % of margin) cannot cross.
       if (pw && SegmentDistance2(pu, pw, centroid) <= triangleReach2 &&
         plane.SegmentCrosses(pu, pw))

@@ -283,13 +283,13 @@ public:
                            : std::numeric_limits<double>::infinity();
   }
 
-  // The largest measure of the exterior facets of c (-1 when it has none).
-  double LargestExteriorFacet(int64_t c) const
+  // The largest measure of the facets of c in `facets` (bit j: facet j; -1 when it is empty).
+  double LargestFacet(int64_t c, int facets) const
   {
     double largest = -1.0;
     for (int j = 0; j < 4; ++j)
     {
-      if (this->IsExterior(c, j))
+      if (facets & (1 << j))
       {
         largest = std::max(largest, this->FacetMeasure(c, j));
       }
@@ -297,18 +297,10 @@ public:
     return largest;
   }
 
-  // The largest measure of the facets of c that are not exterior (-1 when it has none).
-  double LargestHiddenFacet(int64_t c) const
+  // The largest measure of the exterior facets of c (-1 when it has none).
+  double LargestExteriorFacet(int64_t c) const
   {
-    double largest = -1.0;
-    for (int j = 0; j < 4; ++j)
-    {
-      if (!this->IsExterior(c, j))
-      {
-        largest = std::max(largest, this->FacetMeasure(c, j));
-      }
-    }
-    return largest;
+    return this->LargestFacet(c, this->ExteriorMask(c));
   }
 
   // Whether removing c would leave one of its vertices in no inside tetrahedron.
@@ -324,13 +316,13 @@ public:
     return false;
   }
 
-  // Whether removing the exposed inside cell c keeps the boundary a 2-manifold, given that it is
-  // one now (the sculpting rules of Boissonnat 1984): with one exterior facet, the opposite vertex
+  // Whether removing the exposed inside cell c, whose exterior facets are `mask` (ExteriorMask),
+  // keeps the boundary a 2-manifold, given that it is one now (the sculpting rules of Boissonnat
+  // 1984): with one exterior facet, the opposite vertex
   // must not be on the boundary; with two, the edge joining their opposite vertices must not be on
   // it; with three or four, a vertex would be left in no tetrahedron.
-  bool KeepsManifold(int64_t c) const
+  bool KeepsManifold(int64_t c, int mask) const
   {
-    const int mask = this->ExteriorMask(c);
     int slots[4], k = 0;
     for (int j = 0; j < 4; ++j)
     {
@@ -694,87 +686,27 @@ private:
   // (v, w) the state changes at most twice (at most two boundary triangles on the edge).
   bool ManifoldAt(int32_t v, int64_t start)
   {
-    ++this->Generation;
-    this->Star.clear();
-    this->Star.push_back(start);
-    this->Stamp[start] = this->Generation;
-    for (size_t i = 0; i < this->Star.size(); ++i)
-    {
-      const int64_t c = this->Star[i];
-      for (int j = 0; j < 4; ++j)
-      {
-        if (this->DT.Vertex(c, j) == v)
-        {
-          continue;
-        }
-        const int64_t n = this->DT.Neighbor(c, j);
-        if (this->Stamp[n] != this->Generation)
-        {
-          this->Stamp[n] = this->Generation;
-          this->Star.push_back(n);
-        }
-      }
-    }
-    // Components of each state: flood fill through the facets that contain v.
-    int components[2] = { 0, 0 };
-    ++this->Generation;
-    for (int64_t seed : this->Star)
-    {
-      if (this->Stamp[seed] == this->Generation)
-      {
-        continue;
-      }
-      const bool inside = this->Solid.IsInside(seed);
-      if (++components[inside ? 1 : 0] > 1)
-      {
-        return false;
-      }
-      this->Fill.clear();
-      this->Fill.push_back(seed);
-      this->Stamp[seed] = this->Generation;
-      while (!this->Fill.empty())
-      {
-        const int64_t c = this->Fill.back();
-        this->Fill.pop_back();
-        for (int j = 0; j < 4; ++j)
-        {
-          const int64_t n = this->DT.Neighbor(c, j);
-          if (this->DT.Vertex(c, j) != v && this->Stamp[n] != this->Generation &&
-            this->Solid.IsInside(n) == inside)
-          {
-            this->Stamp[n] = this->Generation;
-            this->Fill.push_back(n);
-          }
-        }
-      }
-    }
-    if (components[0] == 0 || components[1] == 0)
+    const int32_t insideCells = this->Solid.Count[v];
+    const int32_t outsideCells = this->Solid.OutsideCount[v];
+    if (insideCells == 0 || outsideCells == 0)
     {
       return true; // v inside the solid (or in no cell: checked by the caller)
     }
-    // Boundary triangles per edge (v, w), each counted from its inside cell.
-    this->EdgeEnds.clear();
-    for (int64_t c : this->Star)
+    // The star of v is connected through the facets that contain v: each state forms one
+    // component when the flood fill from one of its cells reaches all of them (the counts).
+    ++this->Generation;
+    const bool startInside = this->Solid.IsInside(start);
+    int64_t other = -1; // a cell of the other state, next to the first fill
+    if (this->FillState(v, start, other) != (startInside ? insideCells : outsideCells) || other < 0)
     {
-      if (!this->Solid.IsInside(c))
-      {
-        continue;
-      }
-      for (int j = 0; j < 4; ++j)
-      {
-        if (this->DT.Vertex(c, j) != v && this->Solid.IsExterior(c, j))
-        {
-          for (int k = 0; k < 4; ++k)
-          {
-            const int32_t w = this->DT.Vertex(c, k);
-            if (k != j && w != v)
-            {
-              this->EdgeEnds.push_back(w);
-            }
-          }
-        }
-      }
+      return false;
     }
+    int64_t unused = -1;
+    if (this->FillState(v, other, unused) != (startInside ? outsideCells : insideCells))
+    {
+      return false;
+    }
+    // Boundary triangles per edge (v, w), listed by the fill of the inside cells.
     std::sort(this->EdgeEnds.begin(), this->EdgeEnds.end());
     for (size_t i = 0; i + 2 < this->EdgeEnds.size(); ++i)
     {
@@ -784,6 +716,58 @@ private:
       }
     }
     return true;
+  }
+
+  // Flood fill from `seed` through the facets that contain v, over the cells of seed's state;
+  // returns the number of cells reached. Sets `other` to a cell of the other state next to them;
+  // when the state is inside, lists in EdgeEnds the two other ends of each boundary triangle on v
+  // (the edges (v, w)).
+  int64_t FillState(int32_t v, int64_t seed, int64_t& other)
+  {
+    const bool inside = this->Solid.IsInside(seed);
+    if (inside)
+    {
+      this->EdgeEnds.clear();
+    }
+    int64_t reached = 1;
+    this->Stack.clear();
+    this->Stack.push_back(seed);
+    this->Stamp[seed] = this->Generation;
+    while (!this->Stack.empty())
+    {
+      const int64_t c = this->Stack.back();
+      this->Stack.pop_back();
+      for (int j = 0; j < 4; ++j)
+      {
+        if (this->DT.Vertex(c, j) == v)
+        {
+          continue;
+        }
+        const int64_t n = this->DT.Neighbor(c, j);
+        if (this->Solid.IsInside(n) != inside)
+        {
+          other = n;
+          if (inside)
+          {
+            for (int k = 0; k < 4; ++k)
+            {
+              const int32_t w = this->DT.Vertex(c, k);
+              if (k != j && w != v)
+              {
+                this->EdgeEnds.push_back(w);
+              }
+            }
+          }
+        }
+        else if (this->Stamp[n] != this->Generation)
+        {
+          this->Stamp[n] = this->Generation;
+          this->Stack.push_back(n);
+          ++reached;
+        }
+      }
+    }
+    return reached;
   }
 
   struct GroupEdge
@@ -804,7 +788,7 @@ private:
   std::vector<uint8_t> Bad, Dirty;
   std::vector<std::pair<int32_t, int64_t>> DirtyVertices; // vertex, a cell of it
   int64_t BadCount = 0;
-  std::vector<int64_t> Star, Fill;
+  std::vector<int64_t> Stack, Fill;
   std::unordered_map<int64_t, int64_t> Label;
   std::vector<int32_t> EdgeEnds;
 };
@@ -1006,23 +990,43 @@ int vtkPerimeterPeelSurface::RequestData(
   double mean = exteriorMean();
   double threshold = fixed ? std::ldexp(this->Threshold, exponent) : mean * this->ThresholdFactor;
 
-  // Cells with an exterior facet over the threshold, largest first (stale entries are skipped).
-  using Entry = std::pair<double, int64_t>; // largest exterior facet measure, cell
-  std::priority_queue<Entry> queue;
-  auto push = [&](int64_t c)
-  {
-    const double m = solid.LargestExteriorFacet(c);
-    if (m > threshold)
-    {
-      queue.emplace(m, c);
-    }
-  };
   const bool manifold = this->ManifoldOutput;
   // GroupFactor is a ratio of lengths: squared for the area measure.
   const double groupFactor =
     this->GroupFactor * (this->FacetMeasure == AREA ? this->GroupFactor : 1.0);
   // A group that opens a handle needs a start facet twice as clear (rule 3 of the class docs).
   const double handleFactor = groupFactor * (this->FacetMeasure == AREA ? 4.0 : 2.0);
+  // Whether the inside cell c, whose exterior facets are `mask` and the largest of them m, may
+  // not be removed now. With ManifoldOutput, a cell whose facet is not clearly too large for the
+  // surface (at most GroupFactor x threshold) is not removed when it would show a facet more than
+  // 1.5 times larger (a cave under a true surface triangle; neighbouring surface triangles of a
+  // uniform random sample differ by less).
+  // Each rule, once true, stays true while the other cells go and none of c's face neighbours
+  // does: the counts of inside cells only drop, a boundary vertex or edge stays on the boundary,
+  // and c's own facets change only with its neighbours (which queue c again when they go).
+  auto refused = [&](int64_t c, int mask, double m)
+  {
+    return solid.Orphans(c) ||
+      (manifold &&
+        (!solid.KeepsManifold(c, mask) ||
+          (m <= threshold * groupFactor && solid.LargestFacet(c, 15 & ~mask) > 1.5 * m)));
+  };
+  // Cells with an exterior facet over the threshold, largest first. A cell refused now is not
+  // queued (it would be refused when its turn came: see `refused`); it is offered again when a
+  // neighbour goes. The largest exterior facet of an inside cell only grows, so an entry whose
+  // measure is no longer the cell's is stale: the cell was queued again with its new measure,
+  // and that entry came first.
+  using Entry = std::pair<double, int64_t>; // largest exterior facet measure, cell
+  std::priority_queue<Entry> queue;
+  auto push = [&](int64_t c)
+  {
+    const int mask = solid.ExteriorMask(c);
+    const double m = solid.LargestFacet(c, mask);
+    if (m > threshold && !refused(c, mask, m))
+    {
+      queue.emplace(m, c);
+    }
+  };
   bool aborted = false;
   auto removed = [&]()
   {
@@ -1045,22 +1049,15 @@ int vtkPerimeterPeelSurface::RequestData(
       {
         continue;
       }
-      const double m = solid.LargestExteriorFacet(c);
+      const int mask = solid.ExteriorMask(c);
+      const double m = solid.LargestFacet(c, mask);
       if (m != top.first)
       {
-        push(c); // its exterior changed since it was queued
-        continue;
+        continue; // stale
       }
-      // With ManifoldOutput, a cell whose facet is not clearly too large for the surface (at most
-      // GroupFactor x threshold) is not removed when it would show a facet more than 1.5 times
-      // larger (a cave under a true surface triangle; neighbouring surface triangles of a uniform
-      // random sample differ by less).
-      if (solid.Orphans(c) ||
-        (manifold &&
-          (!solid.KeepsManifold(c) ||
-            (m <= threshold * groupFactor && solid.LargestHiddenFacet(c) > 1.5 * m))))
+      if (refused(c, mask, m))
       {
-        continue; // refused; queued again when a neighbour goes
+        continue; // refused; offered again when a neighbour goes
       }
       solid.SetInside(c, false);
       for (int k = 0; k < 4; ++k)

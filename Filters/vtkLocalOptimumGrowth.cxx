@@ -96,6 +96,7 @@ struct Parameters
   int K = 20;
   double CosNormal = 0.5;
   double TanNormal = 1.7320508075688772;
+  double CosHalfNormal = 0.8660254037844386; // preferred candidates bend by at most half
   double MinRatio = 1.0 / 3.0;
   double MaxRatio = 3.0;
   double CosBase = 0.0;
@@ -264,6 +265,7 @@ private:
   std::vector<std::pair<Id, Id>> FrontEdges;
   bool FrontEdgesReady = false; // FrontEdges is collected when first needed
   std::vector<Id> Admissible;
+  std::vector<uint8_t> AdmissibleTier; // 0: bends by at most half of constraint 1, else 1
 };
 
 //------------------------------------------------------------------------------------------------
@@ -719,6 +721,7 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
   const double* a2 = this->P2(a);
   const double* b2 = this->P2(b);
   this->Admissible.clear();
+  this->AdmissibleTier.clear();
   this->Blockers.clear();
   for (Id c : this->Near)
   {
@@ -784,14 +787,25 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
       }
     }
     this->Admissible.push_back(c);
+    this->AdmissibleTier.push_back(Dot(nt, ne) >= this->Par.CosHalfNormal ? 0 : 1);
   }
 
   while (!this->Admissible.empty())
   {
-    // The local optimum: no other admissible candidate inside the circle through b, a, c.
+    // The local optimum: no other admissible candidate inside the circle through b, a, c,
+    // among the candidates of the lowest tier left (tier 0: bending by at most half of
+    // constraint 1).
     size_t best = 0;
     for (size_t i = 1; i < this->Admissible.size(); ++i)
     {
+      if (this->AdmissibleTier[i] != this->AdmissibleTier[best])
+      {
+        if (this->AdmissibleTier[i] < this->AdmissibleTier[best])
+        {
+          best = i;
+        }
+        continue;
+      }
       const Id c = this->Admissible[best], q = this->Admissible[i];
       const int inside = P::InCircle(b2, a2, this->P2(c), this->P2(q));
       if (inside > 0)
@@ -813,6 +827,8 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
     const Id c = this->Admissible[best];
     this->Admissible[best] = this->Admissible.back();
     this->Admissible.pop_back();
+    this->AdmissibleTier[best] = this->AdmissibleTier.back();
+    this->AdmissibleTier.pop_back();
 
     if (pcs::projected::Collinear(this->P3(a), this->P3(b), this->P3(c)))
     {
@@ -1820,6 +1836,8 @@ int vtkLocalOptimumGrowth::RequestData(
   Parameters parameters;
   parameters.K = k;
   parameters.CosNormal = std::cos(vtkMath::RadiansFromDegrees(this->MaximumNormalAngle));
+  parameters.CosHalfNormal =
+    std::cos(vtkMath::RadiansFromDegrees(0.5 * this->MaximumNormalAngle));
   parameters.TanNormal = this->MaximumNormalAngle >= 90.0
     ? std::numeric_limits<double>::infinity()
     : std::tan(vtkMath::RadiansFromDegrees(this->MaximumNormalAngle));

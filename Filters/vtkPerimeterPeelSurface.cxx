@@ -968,20 +968,36 @@ int vtkPerimeterPeelSurface::RequestData(
     solid.SetLocalSpacing(this->LocalSpacingNeighbors);
   }
   const int64_t cells = dt.GetNumberOfCells();
-  // The mean measure of the exterior facets (paper steps 4 and 7).
+  // The mean measure of the exterior facets (paper steps 4 and 7). Lists the inside cells that
+  // have exterior facets, with the largest measure of them, in `exposed` (the next threshold's
+  // first candidates: the solid does not change in between).
+  using Entry = std::pair<double, int64_t>; // largest exterior facet measure, cell
+  std::vector<Entry> exposed;
   auto exteriorMean = [&]()
   {
     double sum = 0.0;
     int64_t exterior = 0;
+    exposed.clear();
     for (int64_t c = 0; c < cells; ++c)
     {
-      for (int j = 0; j < 4 && solid.IsInside(c); ++j)
+      if (!solid.IsInside(c))
+      {
+        continue;
+      }
+      double largest = -1.0;
+      for (int j = 0; j < 4; ++j)
       {
         if (solid.IsExterior(c, j))
         {
-          sum += solid.FacetMeasure(c, j);
+          const double m = solid.FacetMeasure(c, j);
+          sum += m;
           ++exterior;
+          largest = std::max(largest, m);
         }
+      }
+      if (largest >= 0.0)
+      {
+        exposed.emplace_back(largest, c);
       }
     }
     return exterior > 0 ? sum / exterior : 0.0;
@@ -1003,29 +1019,57 @@ int vtkPerimeterPeelSurface::RequestData(
   // uniform random sample differ by less).
   // Each rule, once true, stays true while the other cells go and none of c's face neighbours
   // does: the counts of inside cells only drop, a boundary vertex or edge stays on the boundary,
-  // and c's own facets change only with its neighbours (which queue c again when they go).
-  auto refused = [&](int64_t c, int mask, double m)
+  // and c's own facets change only with its neighbours (which offer c again when they go).
+  // `edgeRule` false leaves out the sculpting rule of two exterior facets (a walk around an edge,
+  // the costliest test; when a cell is offered it nearly always passes, so it is left to the
+  // cell's turn in the queue).
+  auto refused = [&](int64_t c, int mask, double m, bool edgeRule)
   {
-    return solid.Orphans(c) ||
-      (manifold &&
-        (!solid.KeepsManifold(c, mask) ||
-          (m <= threshold * groupFactor && solid.LargestFacet(c, 15 & ~mask) > 1.5 * m)));
+    if (solid.Orphans(c))
+    {
+      return true;
+    }
+    if (!manifold)
+    {
+      return false;
+    }
+    if (m <= threshold * groupFactor && solid.LargestFacet(c, 15 & ~mask) > 1.5 * m)
+    {
+      return true;
+    }
+    const bool twoFacets =
+      mask == 3 || mask == 5 || mask == 6 || mask == 9 || mask == 10 || mask == 12;
+    return (edgeRule || !twoFacets) && !solid.KeepsManifold(c, mask);
   };
   // Cells with an exterior facet over the threshold, largest first. A cell refused now is not
   // queued (it would be refused when its turn came: see `refused`); it is offered again when a
   // neighbour goes. The largest exterior facet of an inside cell only grows, so an entry whose
   // measure is no longer the cell's is stale: the cell was queued again with its new measure,
   // and that entry came first.
-  using Entry = std::pair<double, int64_t>; // largest exterior facet measure, cell
   std::priority_queue<Entry> queue;
+  // With ManifoldOutput, the cells refused with a facet over GroupFactor x threshold (group
+  // candidates; some may be listed twice or have gone since).
+  std::vector<int64_t> refusedLarge;
+  auto offer = [&](int64_t c, int mask, double m)
+  {
+    if (m <= threshold)
+    {
+      return;
+    }
+    if (refused(c, mask, m, false))
+    {
+      if (manifold && m > threshold * groupFactor)
+      {
+        refusedLarge.push_back(c);
+      }
+      return;
+    }
+    queue.emplace(m, c);
+  };
   auto push = [&](int64_t c)
   {
     const int mask = solid.ExteriorMask(c);
-    const double m = solid.LargestFacet(c, mask);
-    if (m > threshold && !refused(c, mask, m))
-    {
-      queue.emplace(m, c);
-    }
+    offer(c, mask, solid.LargestFacet(c, mask));
   };
   bool aborted = false;
   auto removed = [&]()
@@ -1055,8 +1099,12 @@ int vtkPerimeterPeelSurface::RequestData(
       {
         continue; // stale
       }
-      if (refused(c, mask, m))
+      if (refused(c, mask, m, true))
       {
+        if (manifold && m > threshold * groupFactor)
+        {
+          refusedLarge.push_back(c);
+        }
         continue; // refused; offered again when a neighbour goes
       }
       solid.SetInside(c, false);
@@ -1082,11 +1130,12 @@ int vtkPerimeterPeelSurface::RequestData(
   std::vector<Entry> candidates;
   while (!aborted)
   {
-    for (int64_t c = 0; c < cells; ++c)
+    refusedLarge.clear();
+    for (const Entry& e : exposed)
     {
-      if (solid.IsInside(c))
+      if (e.first > threshold)
       {
-        push(c);
+        offer(e.second, solid.ExteriorMask(e.second), e.first);
       }
     }
     peelQueue();
@@ -1095,9 +1144,11 @@ int vtkPerimeterPeelSurface::RequestData(
       groups->Reset();
       for (bool more = true; more && !aborted;)
       {
-        // The refused cells over the threshold, largest facet first.
+        // The cells with an exterior facet over GroupFactor x threshold, largest facet first.
+        // Every such cell was refused when last offered (its measure changes only when a
+        // neighbour goes, which offers it), so refusedLarge lists them all.
         candidates.clear();
-        for (int64_t c = 0; c < cells; ++c)
+        for (int64_t c : refusedLarge)
         {
           if (solid.IsInside(c))
           {
@@ -1109,6 +1160,12 @@ int vtkPerimeterPeelSurface::RequestData(
           }
         }
         std::sort(candidates.begin(), candidates.end(), std::greater<Entry>());
+        candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+        refusedLarge.clear();
+        for (const Entry& candidate : candidates)
+        {
+          refusedLarge.push_back(candidate.second);
+        }
         more = false;
         for (const Entry& candidate : candidates)
         {

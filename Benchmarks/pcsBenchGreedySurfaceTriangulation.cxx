@@ -226,6 +226,8 @@ int main(int argc, char* argv[])
   }
   const long n = static_cast<long>(xyz.size() / 3);
   std::vector<std::array<long, 3>> triangles;
+  // The mesh's points: the input points, then the points the method added (hole fairing).
+  std::vector<double> meshXYZ = xyz;
   double seconds = 0.0;
   using Clock = std::chrono::steady_clock;
   if (method == "cgal")
@@ -273,6 +275,8 @@ int main(int argc, char* argv[])
         greedy->SetMaximumHoleDiameter(value);
       else if (name == "InsertLostPoints")
         greedy->SetInsertLostPoints(value != 0.0);
+      else if (name == "FairHoleFills")
+        greedy->SetFairHoleFills(value != 0.0);
       else
       {
         std::cerr << "unknown parameter " << name << std::endl;
@@ -287,6 +291,13 @@ int main(int argc, char* argv[])
     const auto start = Clock::now();
     greedy->Update();
     seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    vtkPoints* outPoints = greedy->GetOutput()->GetPoints();
+    for (vtkIdType i = n; outPoints && i < outPoints->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      outPoints->GetPoint(i, p);
+      meshXYZ.insert(meshXYZ.end(), p, p + 3);
+    }
     auto iter = vtk::TakeSmartPointer(greedy->GetOutput()->GetPolys()->NewIterator());
     for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
     {
@@ -306,7 +317,8 @@ int main(int argc, char* argv[])
 
   // The same quality measures for every method: the mesh itself, then the reference's vertices
   // measured against it (their distance to the mesh's triangles).
-  vtkSmartPointer<vtkPolyData> mesh = MakeMesh(xyz, triangles);
+  vtkSmartPointer<vtkPolyData> mesh = MakeMesh(meshXYZ, triangles);
+  const long meshPoints = static_cast<long>(meshXYZ.size() / 3);
   vtkNew<vtkReconstructionQuality> quality;
   quality->SetInputData(mesh);
   quality->SetReferenceData(reference);
@@ -340,10 +352,10 @@ int main(int argc, char* argv[])
   {
     std::ofstream out(argv[3]);
     out.precision(17);
-    out << "OFF\n" << n << " " << triangles.size() << " 0\n";
-    for (long i = 0; i < n; ++i)
+    out << "OFF\n" << meshPoints << " " << triangles.size() << " 0\n";
+    for (long i = 0; i < meshPoints; ++i)
     {
-      out << xyz[3 * i] << " " << xyz[3 * i + 1] << " " << xyz[3 * i + 2] << "\n";
+      out << meshXYZ[3 * i] << " " << meshXYZ[3 * i + 1] << " " << meshXYZ[3 * i + 2] << "\n";
     }
     for (const auto& t : triangles)
     {
@@ -353,17 +365,17 @@ int main(int argc, char* argv[])
   const long used = static_cast<long>(FieldValue(measured, "NumberOfUsedPoints"));
   std::printf("{\"method\": \"%s\", \"input\": \"%s\", \"points\": %ld, \"seconds\": %.4f, "
               "\"points_per_second\": %.0f, \"triangles\": %zu, \"peak_mb\": %.1f, "
-              "\"unused\": %ld, \"boundary_edges\": %ld, \"boundary_loops\": %ld, "
+              "\"unused\": %ld, \"added\": %ld, \"boundary_edges\": %ld, \"boundary_loops\": %ld, "
               "\"non_manifold_edges\": %ld, \"non_manifold_vertices\": %ld, \"components\": %ld, "
               "\"genus\": %ld, \"hausdorff_over_spacing\": %.3f, \"completeness_2s\": %.5f}\n",
-              method.c_str(), spec.c_str(), n, seconds, seconds > 0 ? n / seconds : 0.0,
-              triangles.size(), peak, n - used,
-              static_cast<long>(FieldValue(measured, "NumberOfBoundaryEdges")),
-              static_cast<long>(FieldValue(measured, "NumberOfBoundaryLoops")),
-              static_cast<long>(FieldValue(measured, "NumberOfNonManifoldEdges")),
-              static_cast<long>(FieldValue(measured, "NumberOfNonManifoldVertices")),
-              static_cast<long>(FieldValue(measured, "NumberOfConnectedComponents")),
-              static_cast<long>(FieldValue(measured, "Genus")),
-              FieldValue(measured, "HausdorffOverSpacing"), completeness);
+    method.c_str(), spec.c_str(), n, seconds, seconds > 0 ? n / seconds : 0.0, triangles.size(),
+    peak, meshPoints - used, meshPoints - n,
+    static_cast<long>(FieldValue(measured, "NumberOfBoundaryEdges")),
+    static_cast<long>(FieldValue(measured, "NumberOfBoundaryLoops")),
+    static_cast<long>(FieldValue(measured, "NumberOfNonManifoldEdges")),
+    static_cast<long>(FieldValue(measured, "NumberOfNonManifoldVertices")),
+    static_cast<long>(FieldValue(measured, "NumberOfConnectedComponents")),
+    static_cast<long>(FieldValue(measured, "Genus")), FieldValue(measured, "HausdorffOverSpacing"),
+    completeness);
   return 0;
 }

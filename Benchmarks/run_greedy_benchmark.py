@@ -7,7 +7,8 @@ are the vertices of meshes of CGAL's demo data, clean, damaged (two regions remo
 thinned tenfold: the reconstruction benchmark's definition) and noisy (Gaussian noise of 1/4 of
 the mean spacing); the reference surface is the undamaged mesh.
 
-Printed per input and method: points, time, points/s, triangles, unused points, boundary edges /
+Printed per input and method: points, time, points/s, triangles, unused points (and the points
+the method added, FairHoleFills), boundary edges /
 loops, non-manifold edges / vertices, components, genus, Hausdorff / spacing, completeness (share
 of the reference vertices within 2 mean spacings of the mesh); and the criteria of issue 7 on
 the damaged and noisy inputs: 0 non-manifold edges, boundary edges <= 10 % of CGAL's,
@@ -88,10 +89,13 @@ def main():
                               and r["completeness_2s"] >= 0.99)
                         failures += 0 if ok else 1
                         verdict = "ok" if ok else "FAILS"
-                    row = ("| %s | %d | %s | %.3f | %.0f | %d | %d | %d / %d | %d / %d | %d | %s | "
+                    row = ("| %s | %d | %s | %.3f | %.0f | %d | %s | %d / %d | %d / %d | %d | %s | "
                            "%.2f | %.4f | %s |" % (
                                label, r["points"], m, r["seconds"], r["points_per_second"],
-                               r["triangles"], r["unused"], r["boundary_edges"],
+                               r["triangles"],
+                               "%d" % r["unused"] + (" (+%d added)" % r["added"]
+                                                     if r.get("added", 0) > 0 else ""),
+                               r["boundary_edges"],
                                r["boundary_loops"], r["non_manifold_edges"],
                                r["non_manifold_vertices"], r["components"],
                                r["genus"] if r["genus"] >= 0 else "-",

@@ -207,19 +207,28 @@ bool CheckArrays(vtkGreedySurfaceTriangulation* filter, const std::string& what)
       inTriangle[v] = 1;
     }
   }
-  vtkIdType count[5] = { 0, 0, 0, 0, 0 }, unused = 0, ssrFinite = 0;
+  // The points added by the hole fairing follow the input points, with Status 5.
+  const vtkIdType added = pcstest::FieldCount(mesh, "NumberOfAddedPoints");
+  PCS_CHECK(added >= 0 && added == filter->GetNumberOfAddedPoints() && added < n &&
+      (added == 0 || (filter->GetFairHoleFills() && filter->GetFillHoles())),
+    what << ": NumberOfAddedPoints " << added);
+  const vtkIdType inputPoints = n - added;
+  vtkIdType count[6] = { 0, 0, 0, 0, 0, 0 }, unused = 0, ssrFinite = 0;
   double ssrUniformity = 0.0;
   for (vtkIdType i = 0; i < n; ++i)
   {
     const int s = static_cast<int>(status->GetTuple1(i));
-    PCS_CHECK(s >= 0 && s <= 4, what << ": Status " << s << " of point " << i);
+    PCS_CHECK(s >= 0 && s <= 5, what << ": Status " << s << " of point " << i);
+    PCS_CHECK((s == vtkGreedySurfaceTriangulation::ADDED_BY_HOLE_FILLING) == (i >= inputPoints),
+      what << ": Status " << s << " of point " << i << " (" << inputPoints << " input points)");
     ++count[s];
     PCS_CHECK(used->GetTuple1(i) == inTriangle[i], what << ": Used of point " << i);
     unused += inTriangle[i] ? 0 : 1;
     // Correct, boundary and lost-but-used points are triangle vertices; the others are not.
     const bool expectUsed = s == vtkGreedySurfaceTriangulation::CORRECT ||
       s == vtkGreedySurfaceTriangulation::BOUNDARY ||
-      s == vtkGreedySurfaceTriangulation::LOST_USED_BY_HOLE_FILLING;
+      s == vtkGreedySurfaceTriangulation::LOST_USED_BY_HOLE_FILLING ||
+      s == vtkGreedySurfaceTriangulation::ADDED_BY_HOLE_FILLING;
     PCS_CHECK(inTriangle[i] == (expectUsed ? 1 : 0),
               what << ": point " << i << " of Status " << s
                    << (inTriangle[i] ? " used" : " unused"));
@@ -249,6 +258,8 @@ bool CheckArrays(vtkGreedySurfaceTriangulation* filter, const std::string& what)
     bool correctVertex = false, lostVertex = false;
     for (vtkIdType v : t)
     {
+      PCS_CHECK(v < inputPoints || s == 6 || s == 7,
+        what << ": triangle " << c << " of stage " << s << " at an added point");
       correctVertex =
         correctVertex || status->GetTuple1(v) == vtkGreedySurfaceTriangulation::CORRECT;
       lostVertex = lostVertex || status->GetTuple1(v) > vtkGreedySurfaceTriangulation::BOUNDARY;
@@ -283,8 +294,8 @@ bool CheckArrays(vtkGreedySurfaceTriangulation* filter, const std::string& what)
                 pcstest::FieldCount(mesh, "NumberOfSkippedPoints") ==
               count[4],
             what << ": Status 4 = duplicates + skipped");
-  PCS_CHECK(pcstest::FieldCount(mesh, "NumberOfPoints") == n, what << ": NumberOfPoints");
-  const double distinct = static_cast<double>(n - count[4]);
+  PCS_CHECK(pcstest::FieldCount(mesh, "NumberOfPoints") == inputPoints, what << ": NumberOfPoints");
+  const double distinct = static_cast<double>(inputPoints - count[4]);
   PCS_CHECK(std::abs(FieldValue(mesh, "SSRPointsPercent") -
                      100.0 * (count[0] + count[1]) / distinct) < 1e-9,
             what << ": SSRPointsPercent " << FieldValue(mesh, "SSRPointsPercent"));
@@ -298,8 +309,9 @@ bool CheckArrays(vtkGreedySurfaceTriangulation* filter, const std::string& what)
               FieldValue(mesh, "MeanSpacing") == filter->GetMeanSpacing(),
             what << ": MeanSpacing");
   const double seconds = FieldValue(mesh, "Seconds");
-  PCS_CHECK(seconds > 0.0 && std::abs(FieldValue(mesh, "PointsPerSecond") * seconds - n) < 1e-6 * n,
-            what << ": Seconds and PointsPerSecond");
+  PCS_CHECK(seconds > 0.0 &&
+      std::abs(FieldValue(mesh, "PointsPerSecond") * seconds - inputPoints) < 1e-6 * inputPoints,
+    what << ": Seconds and PointsPerSecond");
   vtkStringArray* steps =
     vtkStringArray::SafeDownCast(mesh->GetFieldData()->GetAbstractArray("StepsUsed"));
   PCS_CHECK(steps && steps->GetNumberOfValues() == 1 && steps->GetValue(0).rfind("1, 2", 0) == 0,
@@ -346,9 +358,11 @@ bool TestSphere()
   vtkPolyData* mesh = greedy->GetOutput();
   const Quality q = Measure(mesh);
   PCS_CHECK(CheckClosed(q, 0, "sphere"), "");
-  PCS_CHECK(q.Coverage == 1.0 && q.UsedPoints == n && greedy->GetNumberOfUnusedPoints() == 0,
-            "sphere: coverage " << q.Coverage);
-  PCS_CHECK(q.Triangles == 2 * n - 4, "sphere: " << q.Triangles << " triangles, 2V-4");
+  const vtkIdType added = greedy->GetNumberOfAddedPoints();
+  PCS_CHECK(
+    q.Coverage == 1.0 && q.UsedPoints == n + added && greedy->GetNumberOfUnusedPoints() == 0,
+    "sphere: coverage " << q.Coverage);
+  PCS_CHECK(q.Triangles == 2 * (n + added) - 4, "sphere: " << q.Triangles << " triangles, 2V-4");
   PCS_CHECK(SignedVolume(mesh) > 0.0, "sphere: outward orientation");
   PCS_CHECK(CheckArrays(greedy, "sphere"), "");
   return true;
@@ -363,8 +377,9 @@ bool TestTorus()
   vtkPolyData* mesh = greedy->GetOutput();
   const Quality q = Measure(mesh);
   PCS_CHECK(CheckClosed(q, 1, "torus"), "");
-  PCS_CHECK(q.Coverage == 1.0 && q.UsedPoints == n, "torus: coverage " << q.Coverage);
-  PCS_CHECK(q.Triangles == 2 * n, "torus: " << q.Triangles << " triangles, 2V");
+  const vtkIdType added = greedy->GetNumberOfAddedPoints();
+  PCS_CHECK(q.Coverage == 1.0 && q.UsedPoints == n + added, "torus: coverage " << q.Coverage);
+  PCS_CHECK(q.Triangles == 2 * (n + added), "torus: " << q.Triangles << " triangles, 2V");
   PCS_CHECK(SignedVolume(mesh) > 0.0, "torus: outward orientation");
   PCS_CHECK(CheckArrays(greedy, "torus"), "");
   return true;
@@ -380,7 +395,8 @@ bool TestDamagedSphere()
   vtkPolyData* mesh = greedy->GetOutput();
   const Quality q = Measure(mesh);
   PCS_CHECK(CheckClosed(q, 0, "damaged sphere"), "");
-  PCS_CHECK(q.Coverage == 1.0 && q.UsedPoints == n, "damaged sphere: coverage " << q.Coverage);
+  PCS_CHECK(q.Coverage == 1.0 && q.UsedPoints == n + greedy->GetNumberOfAddedPoints(),
+    "damaged sphere: coverage " << q.Coverage);
   PCS_CHECK(SignedVolume(mesh) > 0.0, "damaged sphere: outward orientation");
   const double spacing = greedy->GetMeanSpacing();
   const double distance = DistanceToUnitSphere(mesh, spacing);
@@ -388,6 +404,26 @@ bool TestDamagedSphere()
             "damaged sphere: a triangle " << distance << " mean spacings from the sphere");
   PCS_CHECK(CheckArrays(greedy, "damaged sphere"), "");
   PCS_CHECK(greedy->GetNumberOfHolesFilled() > 0, "damaged sphere: holes filled");
+
+  // The flat fill of the removed caps (FairHoleFills off) lies up to the cap's sagitta, 1 -
+  // cos(20 deg) = 0.06 or about 2 mean spacings, inside the sphere; the refined and faired fill
+  // continues the sphere: new points on the caps, closer to the sphere than the flat fill.
+  vtkNew<vtkGreedySurfaceTriangulation> flat;
+  flat->SetInputData(pcstest::MakeCloud(xyz));
+  flat->FairHoleFillsOff();
+  flat->Update();
+  const Quality qFlat = Measure(flat->GetOutput());
+  PCS_CHECK(CheckClosed(qFlat, 0, "damaged sphere, flat fill"), "");
+  PCS_CHECK(flat->GetNumberOfAddedPoints() == 0 && qFlat.UsedPoints == n,
+    "damaged sphere, flat fill: no point added");
+  const double flatDistance = DistanceToUnitSphere(flat->GetOutput(), spacing);
+  PCS_CHECK(greedy->GetNumberOfAddedPoints() > 0, "damaged sphere: points added on the caps");
+  PCS_CHECK(distance < 0.5 * flatDistance,
+    "damaged sphere: faired fill " << distance << " mean spacings from the sphere, flat fill "
+                                   << flatDistance);
+  std::cout << "damaged sphere: " << greedy->GetNumberOfAddedPoints()
+            << " points added; farthest vertex or centroid " << distance
+            << " mean spacings from the sphere (flat fill " << flatDistance << ")" << std::endl;
 
   // The step 2 result: the well-sampled regions only, open, the lost points unused.
   vtkNew<vtkGreedySurfaceTriangulation> step2;
@@ -459,9 +495,10 @@ bool TestBridgedIslands()
                 "islands: lost point " << i << " left unused away from the border");
     }
   }
-  PCS_CHECK(q.UsedPoints + greedy->GetNumberOfUnusedPoints() == n &&
-              greedy->GetNumberOfUnusedPoints() <= n / 200,
-            "islands: " << greedy->GetNumberOfUnusedPoints() << " unused points");
+  PCS_CHECK(
+    q.UsedPoints + greedy->GetNumberOfUnusedPoints() == n + greedy->GetNumberOfAddedPoints() &&
+      greedy->GetNumberOfUnusedPoints() <= n / 200,
+    "islands: " << greedy->GetNumberOfUnusedPoints() << " unused points");
   PCS_CHECK(greedy->GetNumberOfIslands() == 2, "islands: " << greedy->GetNumberOfIslands());
   PCS_CHECK(greedy->GetNumberOfBridges() > 0, "islands: bridges");
   vtkStringArray* steps = vtkStringArray::SafeDownCast(

@@ -3,8 +3,9 @@
 // caps thinned tenfold (around (0, -0.6, 0.8) and -z). Left: the step 2 result (BridgeIslands and
 // FillHoles off): the well-sampled regions, open, with the lost points in red. Right: the
 // repaired mesh, the triangles coloured by the step that made them (Stage: step 1 sand, hole
-// filling blue, step 7 swaps green). The repaired mesh must be closed, manifold, genus 0 and use
-// every point, the step 2 result manifold, before anything is rendered.
+// filling blue, step 7 swaps green; the fill of the removed cap in view is refined and faired by
+// FairHoleFills). The repaired mesh must be closed, manifold, genus 0 and use every point, the
+// step 2 result manifold, before anything is rendered.
 #include "vtkGreedySurfaceTriangulation.h"
 #include "vtkReconstructionQuality.h"
 

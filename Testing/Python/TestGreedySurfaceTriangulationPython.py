@@ -58,7 +58,8 @@ DEFAULTS = {"NumberOfNeighbors": 12, "CrossingTest": 2, "AutomaticCorrectFractio
             "MinimumIslandTriangles": 20, "BoundaryVectorRadius": 3.0, "StatusNeutralAngle": 15.0,
             "BridgeIslands": True, "MaximumBridgeLength": 10.0, "MinimumBridgeSeparation": 0.5,
             "FillHoles": True, "MaximumHoleDiameter": DOUBLE_MAX, "AuxiliaryPointDistance": 0.5,
-            "MaximumHolePoints": 256, "SwapBridgeEdges": True, "InsertLostPoints": True}
+            "MaximumHolePoints": 256, "SwapBridgeEdges": True, "InsertLostPoints": True,
+            "FairHoleFills": True}
 RANGES = {"NumberOfNeighbors": (3, 64), "CrossingTest": (0, 2),
           "AutomaticCorrectFraction": (0.0, 1.0), "UniformityNeighbors": (2, 64),
           "UniformityAngle": (0.0, 90.0), "MaximumNormalDeviation": (0.0, 180.0),
@@ -120,7 +121,16 @@ repair.Update()
 q = quality(repair.GetOutput())
 check(q["NumberOfBoundaryEdges"] == 0 and q["Genus"] == 0 and q["NumberOfNonManifoldEdges"] == 0,
       "capless sphere repaired: closed genus 0 (%s)" % q)
-check(repair.GetOutput().GetNumberOfPolys() == 2 * m - 4, "capless sphere: 2V-4 triangles")
+# The fill of the cap is refined and faired (FairHoleFills): its new points come after the
+# input points, with Status 5, and count as vertices of the closed surface.
+added = repair.GetNumberOfAddedPoints()
+check(added > 0 and repair.GetOutput().GetNumberOfPoints() == m + added,
+      "capless sphere: %d points added by the fill's refinement" % added)
+status = repair.GetOutput().GetPointData().GetArray("Status")
+check(all((status.GetValue(i) == 5) == (i >= m) for i in range(m + added)),
+      "capless sphere: Status 5 for the added points only")
+check(repair.GetOutput().GetNumberOfPolys() == 2 * (m + added) - 4,
+      "capless sphere: 2V-4 triangles")
 check(repair.GetNumberOfHolesFilled() >= 1, "capless sphere: a hole filled")
 stage = repair.GetOutput().GetCellData().GetArray("Stage")
 check(any(stage.GetValue(i) == 6 for i in range(stage.GetNumberOfTuples())), "Stage 6 triangles")
@@ -150,7 +160,8 @@ if len(sys.argv) > 1:
         check(got == value, "proxy default %s = %s (got %s)" % (name, value, got))
     proxy.UpdatePipeline()
     out = servermanager.Fetch(proxy)
-    check(out.GetNumberOfPolys() == 2 * m - 4,
+    check(out.GetNumberOfPolys() == 2 * out.GetNumberOfPoints() - 4
+          and out.GetNumberOfPoints() == m + added,
           "proxy output 2V-4 (got %d)" % out.GetNumberOfPolys())
     proxy.FillHoles = 0
     proxy.BridgeIslands = 0

@@ -25,6 +25,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <ctime>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -872,6 +873,9 @@ int vtkPerimeterPeelSurface::RequestData(
 
   vtkIdType iterations = 0, removedCount = 0, groupCount = 0, tetrahedra = 0;
   double finalThreshold = 0.0, delaunayTime = 0.0, peelTime = 0.0;
+  double delaunayCPUTime = 0.0, peelCPUTime = 0.0;
+  const std::clock_t startCPU = std::clock();
+  std::clock_t peelStartCPU = startCPU;
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   Clock::time_point peelStart = start;
@@ -895,6 +899,8 @@ int vtkPerimeterPeelSurface::RequestData(
     pcs::AddFieldCount(fd, "NumberOfUnusedPoints", numberOfPoints - usedPoints);
     pcs::AddFieldValue(fd, "DelaunayTime", delaunayTime);
     pcs::AddFieldValue(fd, "PeelTime", peelTime);
+    pcs::AddFieldValue(fd, "DelaunayCPUTime", delaunayCPUTime);
+    pcs::AddFieldValue(fd, "PeelCPUTime", peelCPUTime);
     if (numberOfPoints > usedPoints && polys->GetNumberOfCells() > 0)
     {
       vtkWarningMacro(<< numberOfPoints - usedPoints << " of " << numberOfPoints
@@ -958,6 +964,8 @@ int vtkPerimeterPeelSurface::RequestData(
   tetrahedra = dt.GetNumberOfFiniteCells();
   peelStart = Clock::now();
   delaunayTime = std::chrono::duration<double>(peelStart - start).count();
+  peelStartCPU = std::clock();
+  delaunayCPUTime = static_cast<double>(peelStartCPU - startCPU) / CLOCKS_PER_SEC;
   this->UpdateProgress(0.6);
 
   // Peeling (paper section 3, steps 3-7).
@@ -1233,6 +1241,7 @@ int vtkPerimeterPeelSurface::RequestData(
     static_cast<vtkIdType>(triangles.size()), static_cast<int32_t>(3 * triangles.size()));
   polys->SetData(offsets, connectivity);
   peelTime = std::chrono::duration<double>(Clock::now() - peelStart).count();
+  peelCPUTime = static_cast<double>(std::clock() - peelStartCPU) / CLOCKS_PER_SEC;
   this->UpdateProgress(1.0);
   return finish();
 }

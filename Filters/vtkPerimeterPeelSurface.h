@@ -91,7 +91,8 @@
  * with relative measures),
  * NumberOfTetrahedra, NumberOfRemovedTetrahedra (groups included), NumberOfGroupRemovals,
  * NumberOfTriangles, NumberOfUsedPoints, NumberOfUnusedPoints, DelaunayTime and PeelTime
- * (seconds: the tetrahedralization, and everything after it).
+ * (seconds: the tetrahedralization, and everything after it), DelaunayCPUTime and PeelCPUTime
+ * (the processor time of the same two parts, std::clock).
  *
  * Under MPI the cloud is gathered on process 0, which computes the surface; the other
  * processes' outputs are empty.

@@ -99,7 +99,8 @@ check(mesh.GetNumberOfPolys() == 2 * n - 4, "2V-4 triangles (got %d)" % mesh.Get
 fd = mesh.GetFieldData()
 for name in ("NumberOfIterations", "FinalThreshold", "NumberOfTetrahedra",
              "NumberOfRemovedTetrahedra", "NumberOfGroupRemovals", "NumberOfTriangles",
-             "NumberOfUsedPoints", "NumberOfUnusedPoints", "DelaunayTime", "PeelTime"):
+             "NumberOfUsedPoints", "NumberOfUnusedPoints", "DelaunayTime", "PeelTime",
+             "DelaunayCPUTime", "PeelCPUTime"):
     check(fd.GetArray(name) is not None, "field data %s" % name)
 check(fd.GetArray("NumberOfTriangles").GetValue(0) == 2 * n - 4, "field data NumberOfTriangles")
 check(fd.GetArray("NumberOfUnusedPoints").GetValue(0) == 0, "no unused point")

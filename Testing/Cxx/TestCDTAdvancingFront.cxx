@@ -15,6 +15,12 @@
 // - a thin sheet (paper Fig. 2b / 3b): two parallel planar grids closer to each other than their
 //   spacing, normals opposite: two separate sheets of 2 (n - 1)^2 triangles each (the points of
 //   one sheet project into the triangles of the other, but their normals are opposite);
+// - a sphere sample with a long slit (the points within a band along half a meridian removed,
+//   6 to 12 mean spacings wide, wider than the neighbourhood radius, so that the front leaves it
+//   open): the mesh is manifold and every triangle stays within one mean spacing of the sphere
+//   (its vertices are on it; the triangles of a 20,000-point sample deviate by a few hundredths
+//   of a spacing). The hole filling used to close such a slit with a chain of slivers along it,
+//   3.8 to 21 mean spacings off the sphere;
 // - bad input: no points, two points, zero-length and NaN normals, duplicates, NaN coordinates:
 //   warnings, counts, and a valid output with every input point; a point with a zero-length or
 //   NaN normal gets an estimated one (outwards on the sphere, like the valid input normals) and
@@ -33,6 +39,7 @@
 #include "vtkPointData.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -399,6 +406,63 @@ bool TestThinSheet()
   return true;
 }
 
+// A sphere with a slit: the points with |x| < width / 2 and y > -0.5 removed.
+bool TestSlit(double width)
+{
+  const Cloud sphere = Sphere(20000, 3);
+  Cloud c;
+  for (size_t i = 0; i < sphere.XYZ.size(); i += 3)
+  {
+    if (!(std::fabs(sphere.XYZ[i]) < 0.5 * width && sphere.XYZ[i + 1] > -0.5))
+    {
+      c.XYZ.insert(c.XYZ.end(), &sphere.XYZ[i], &sphere.XYZ[i] + 3);
+      c.Normals.insert(c.Normals.end(), &sphere.Normals[i], &sphere.Normals[i] + 3);
+    }
+  }
+  auto input = MakeInput(c, true);
+  vtkNew<vtkCDTAdvancingFront> filter;
+  Run(filter, input);
+  const std::string label = "slit " + std::to_string(width);
+  auto quality = Quality(filter->GetOutput());
+  PCS_CHECK(pcstest::FieldCount(quality, "NumberOfNonManifoldEdges") == 0 &&
+      pcstest::FieldCount(quality, "NumberOfNonManifoldVertices") == 0,
+    label << ": not manifold");
+  const double spacing = filter->GetMeanSpacing();
+  vtkPolyData* out = filter->GetOutput();
+  double deviation = 0.0;
+  for (vtkIdType cell = 0; cell < out->GetNumberOfCells(); ++cell)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    out->GetCellPoints(cell, npts, pts);
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      out->GetPoint(pts[k], p[k]);
+    }
+    // Centroid and edge midpoints: the farthest points of a small triangle from the sphere.
+    const double weights[4][3] = { { 1 / 3.0, 1 / 3.0, 1 / 3.0 }, { 0.5, 0.5, 0 }, { 0, 0.5, 0.5 },
+      { 0.5, 0, 0.5 } };
+    for (const auto& w : weights)
+    {
+      double x[3];
+      for (int c3 = 0; c3 < 3; ++c3)
+      {
+        x[c3] = w[0] * p[0][c3] + w[1] * p[1][c3] + w[2] * p[2][c3];
+      }
+      deviation = std::max(deviation, 1.0 - std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]));
+    }
+  }
+  std::cout << label << ": " << filter->GetNumberOfTriangles() << " triangles ("
+            << filter->GetNumberOfHoleFillingTriangles() << " by hole filling), "
+            << pcstest::FieldCount(quality, "NumberOfBoundaryEdges")
+            << " boundary edges, largest deviation " << deviation / spacing << " mean spacings"
+            << std::endl;
+  PCS_CHECK(deviation <= spacing,
+    label << ": a triangle " << deviation / spacing << " mean spacings off the sphere");
+  return true;
+}
+
 bool TestBadInput()
 {
   {
@@ -481,6 +545,10 @@ int TestCDTAdvancingFront(int, char*[])
   failures += TestClosed("torus 4000, input normals", Torus(4000, 4), true, 1) ? 0 : 1;
   failures += TestClosed("torus 4000, PCA normals", Torus(4000, 5), false, 1) ? 0 : 1;
   failures += TestThinSheet() ? 0 : 1;
+  for (double width : { 0.075, 0.1, 0.15 })
+  {
+    failures += TestSlit(width) ? 0 : 1;
+  }
   failures += TestBadInput() ? 0 : 1;
   std::cout << failures << " failure(s)" << std::endl;
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -162,7 +162,7 @@ public:
 
   // Counts.
   vtkIdType LostPoints = 0, Islands = 0, Holes = 0, Bridges = 0, Chords = 0, HolesFilled = 0,
-            HolesLeftOpen = 0, Swaps = 0, Inserted = 0, Added = 0;
+            HolesLeftOpen = 0, Swaps = 0, Inserted = 0, Added = 0, LoopsClosed = 0;
   bool Aborted = false;
 
   const double* P(int32_t i) const { return &this->X[3 * static_cast<size_t>(i)]; }
@@ -184,6 +184,7 @@ public:
   void Step6FillHoles(double begin, double end);
   void InsertLostPoints(double begin, double end);
   void CloseSharpEars(int32_t start);
+  void CloseSmallLoops();
   void Step7Swaps();
   void OrientOutwards();
   void RefineAndFairFills(std::vector<int32_t>& triangles, std::vector<uint8_t>& stages,
@@ -1731,6 +1732,170 @@ void Reconstruction::CloseSharpEars(int32_t start)
 }
 
 //------------------------------------------------------------------------------------------------
+// After lost point insertion: a boundary loop still open whose diameter is at most
+// MaximumBridgeLength (and MaximumHoleDiameter) spacings while its connected piece of mesh
+// extends over more than twice that diameter is a sampling gap, whatever step 3 called it: it is
+// triangulated like a hole (steps 5 and 6, with the lost points inside it). Such loops are the
+// small holes whose few boundary vectors step 3 could not read (noise: 7 boundary edges on the
+// noisy knot, loops of 4 or 5 vertices on the noisy camel) and the loops that lost point
+// insertion reshaped. The outer border of an open surface is never one: it spans its piece.
+void Reconstruction::CloseSmallLoops()
+{
+  if (!this->Self->GetFillHoles())
+  {
+    return;
+  }
+  const double limit =
+    std::min(this->Self->GetMaximumBridgeLength(), this->Self->GetMaximumHoleDiameter()) *
+    this->Spacing;
+  std::vector<std::vector<int32_t>> loops;
+  this->Mesh.GetBoundaryLoops(loops);
+  if (loops.empty())
+  {
+    return;
+  }
+  // Connected pieces of the mesh (through shared vertices) and their bounding boxes.
+  std::vector<int32_t> parent(static_cast<size_t>(this->N));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&parent](int32_t x) {
+    while (parent[x] != x)
+    {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  };
+  const int64_t ids = this->Mesh.GetNumberOfTriangleIds();
+  for (int64_t t = 0; t < ids; ++t)
+  {
+    if (!this->Mesh.IsTriangleRemoved(t))
+    {
+      const int32_t* tri = this->Mesh.GetTriangle(t);
+      parent[find(tri[1])] = find(tri[0]);
+      parent[find(tri[2])] = find(tri[0]);
+    }
+  }
+  std::vector<double> box(6 * static_cast<size_t>(this->N), 0.0);
+  std::vector<char> seen(static_cast<size_t>(this->N), 0);
+  for (int32_t v = 0; v < this->N; ++v)
+  {
+    if (this->Mesh.IsFree(v))
+    {
+      continue;
+    }
+    const int32_t r = find(v);
+    double* b = &box[6 * static_cast<size_t>(r)];
+    for (int j = 0; j < 3; ++j)
+    {
+      const double x = this->P(v)[j];
+      b[2 * j] = seen[r] ? std::min(b[2 * j], x) : x;
+      b[2 * j + 1] = seen[r] ? std::max(b[2 * j + 1], x) : x;
+    }
+    seen[r] = 1;
+  }
+  pcs::holes::HoleFiller filler;
+  filler.AuxiliaryDistance = this->Self->GetAuxiliaryPointDistance() * this->Spacing;
+  filler.MaximumGreedyPoints = this->Self->GetMaximumHolePoints();
+  filler.EdgeExists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
+  vtkNew<vtkIdList> near;
+  std::vector<int32_t> loop, candidates;
+  std::vector<double> vectors;
+  std::vector<int64_t> added;
+  for (const auto& front : loops)
+  {
+    if (front.size() < 3)
+    {
+      continue;
+    }
+    // Reversed: the fill traverses the boundary edges against the mesh (as in step 6).
+    loop.assign(front.rbegin(), front.rend());
+    double centre[3] = { 0, 0, 0 };
+    for (int32_t v : loop)
+    {
+      vtkMath::Add(centre, this->P(v), centre);
+    }
+    vtkMath::MultiplyScalar(centre, 1.0 / loop.size());
+    double radius = 0.0;
+    for (int32_t v : loop)
+    {
+      radius = std::max(radius, Distance(centre, this->P(v)));
+    }
+    const double* b = &box[6 * static_cast<size_t>(find(loop[0]))];
+    const double extent = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+      (b[5] - b[4]) * (b[5] - b[4]));
+    if (2 * radius > limit || extent <= 4 * radius)
+    {
+      continue;
+    }
+    // A vertex twice in the loop (the loop touches itself) is left to step 5's chords.
+    std::vector<int32_t> sorted(loop);
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    {
+      continue;
+    }
+    vectors.clear();
+    for (int32_t v : loop)
+    {
+      const double* I = &this->EdgeVectors[3 * static_cast<size_t>(v)];
+      vectors.insert(vectors.end(), I, I + 3);
+    }
+    candidates.clear();
+    this->Locator->FindPointsWithinRadius(radius, centre, near);
+    for (vtkIdType j = 0; j < near->GetNumberOfIds(); ++j)
+    {
+      const int32_t q = static_cast<int32_t>(near->GetId(j));
+      if (this->Status[q] == vtkGreedySurfaceTriangulation::LOST && this->Mesh.IsFree(q))
+      {
+        candidates.push_back(q);
+      }
+    }
+    std::sort(candidates.begin(), candidates.end());
+    pcs::holes::FillResult result;
+    filler.Fill(this->X.data(), loop, vectors, candidates, result);
+    if (!result.Complete)
+    {
+      continue; // a partial fill would leave a more ragged loop
+    }
+    added.clear();
+    bool ok = !result.Triangles.empty();
+    for (size_t t = 0; t < result.Triangles.size() && ok; t += 3)
+    {
+      const int64_t id = this->Mesh.AddTriangle(
+        result.Triangles[t], result.Triangles[t + 1], result.Triangles[t + 2]);
+      ok = id >= 0;
+      if (ok)
+      {
+        added.push_back(id);
+      }
+    }
+    for (size_t t = 0; t < result.Triangles.size() && ok; ++t)
+    {
+      ok = this->Mesh.GetNumberOfFans(result.Triangles[t]) == 1;
+    }
+    if (!ok)
+    {
+      for (int64_t id : added)
+      {
+        this->Mesh.RemoveTriangle(id);
+      }
+      continue;
+    }
+    this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 6);
+    for (int32_t q : result.UsedPoints)
+    {
+      this->Status[q] = vtkGreedySurfaceTriangulation::LOST_USED_BY_HOLE_FILLING;
+    }
+    for (const auto& chord : result.Chords)
+    {
+      this->Links.push_back(chord);
+    }
+    this->Chords += static_cast<vtkIdType>(result.Chords.size());
+    ++this->LoopsClosed;
+  }
+}
+
+//------------------------------------------------------------------------------------------------
 // Step 7: bridge and chord edges replaced by the shorter diagonal of their two triangles.
 void Reconstruction::Step7Swaps()
 {
@@ -2508,6 +2673,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
     pcs::AddFieldCount(fd, "NumberOfSwaps", r.Swaps);
     pcs::AddFieldCount(fd, "NumberOfInsertedPoints", r.Inserted);
     pcs::AddFieldCount(fd, "NumberOfAddedPoints", r.Added);
+    pcs::AddFieldCount(fd, "NumberOfSmallLoopsClosed", r.LoopsClosed);
     pcs::AddFieldCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
     pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", duplicates);
     pcs::AddFieldCount(fd, "NumberOfSkippedPoints", skipped);
@@ -2743,6 +2909,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
   {
     return finish();
   }
+  r.CloseSmallLoops();
   r.Step7Swaps();
   if (r.Bridges + r.Chords > 0)
   {

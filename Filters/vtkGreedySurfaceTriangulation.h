@@ -103,6 +103,14 @@
  *   through its neighbours. After an attachment, the boundary ears at the new point and its two
  *   boundary neighbours sharper than 90 degrees are closed (no zig-zag boundary). The edges of
  *   the split triangles join the step 7 swap candidates.
+ * - Small loops (ours, with FillHoles): after the insertion, a boundary loop still open whose
+ *   diameter is at most MaximumBridgeLength (and MaximumHoleDiameter) while its connected piece
+ *   of mesh extends over more than twice that diameter is triangulated like a hole (steps 5 and
+ *   6, with the lost points inside it), whatever step 3 called it: a gap narrower than a bridge
+ *   is a sampling gap. Such loops are small holes whose few boundary vectors step 3 could not
+ *   read (noise: the noisy knot's one 7-edge loop, loops of 4 or 5 vertices on the noisy
+ *   camel) and loops reshaped by the insertion; the outer border of an open surface spans its
+ *   piece and is never one. Counted in NumberOfSmallLoopsClosed.
  * - Fill refinement and fairing (ours, when FairHoleFills and FillHoles are on; "9" in
  *   StepsUsed; after Liepa, "Filling Holes in Meshes", SGP 2003, sections 3.2-3.3): step 6
  *   projects a hole on its average plane, so across a region without input points the fill is
@@ -135,7 +143,8 @@
  * 8: lost point insertion and its ears); field data `NumberOfTriangles`, `NumberOfLostPoints`
  * (after step 2), `NumberOfIslands`, `NumberOfHoles` (after step 4), `NumberOfBridges`,
  * `NumberOfChords`, `NumberOfHolesFilled`, `NumberOfHolesLeftOpen`, `NumberOfSwaps`,
- * `NumberOfInsertedPoints`, `NumberOfAddedPoints`, `NumberOfUnusedPoints`,
+ * `NumberOfInsertedPoints`, `NumberOfSmallLoopsClosed`, `NumberOfAddedPoints`,
+ * `NumberOfUnusedPoints`,
  * `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`, `MeanSpacing`, and the columns of the paper's
  * Table 1: `NumberOfPoints` (input points), `AverageUniformityInSSR` (mean m over the points of the
  * well-sampled regions, i.e. correct or boundary after step 2), `SSRAreaPercent` (area of the step
@@ -324,8 +333,9 @@ public:
 
   ///@{
   /**
-   * Step 4: longest bridge (the paper's l), in units of the mean spacing. Default 10; range
-   * [0, VTK_DOUBLE_MAX].
+   * Step 4: longest bridge (the paper's l), in units of the mean spacing; with FillHoles, also
+   * the widest boundary loop closed after lost point insertion as a sampling gap (see the class
+   * documentation). Default 10; range [0, VTK_DOUBLE_MAX].
    */
   vtkSetClampMacro(MaximumBridgeLength, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumBridgeLength, double);

@@ -213,6 +213,9 @@ bool CheckArrays(vtkGreedySurfaceTriangulation* filter, const std::string& what)
       (added == 0 || (filter->GetFairHoleFills() && filter->GetFillHoles())),
     what << ": NumberOfAddedPoints " << added);
   const vtkIdType inputPoints = n - added;
+  const vtkIdType loopsClosed = pcstest::FieldCount(mesh, "NumberOfSmallLoopsClosed");
+  PCS_CHECK(loopsClosed >= 0 && (loopsClosed == 0 || filter->GetFillHoles()),
+    what << ": NumberOfSmallLoopsClosed " << loopsClosed);
   vtkIdType count[6] = { 0, 0, 0, 0, 0, 0 }, unused = 0, ssrFinite = 0;
   double ssrUniformity = 0.0;
   for (vtkIdType i = 0; i < n; ++i)

@@ -139,8 +139,8 @@ public:
     // neighbour graph is a subgraph of the Delaunay graph), kept sorted with the other end.
     const int64_t points = static_cast<int64_t>(this->Count.size());
     const int k = neighbors;
-    std::vector<double> length(static_cast<size_t>(points) * k,
-      std::numeric_limits<double>::infinity());
+    std::vector<double> length(
+      static_cast<size_t>(points) * k, std::numeric_limits<double>::infinity());
     std::vector<int32_t> other(static_cast<size_t>(points) * k, -1);
     auto offer = [&](int32_t v, int32_t w, double d)
     {
@@ -182,8 +182,8 @@ public:
         {
           const int32_t w = this->DT.Vertex(c, j);
           const double* b = this->XYZ + 3 * static_cast<int64_t>(w);
-          const double d = std::sqrt((b[0] - a[0]) * (b[0] - a[0]) +
-            (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
+          const double d = std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+            (b[2] - a[2]) * (b[2] - a[2]));
           offer(v, w, d);
           offer(w, v, d);
         }
@@ -405,24 +405,21 @@ public:
   {
     this->Group.clear();
     this->BadCount = 0;
+    this->DirtyBadCount = 0;
     const bool mayOpenHandle = this->Solid.LargestExteriorFacet(c) > handleThreshold;
     std::priority_queue<std::pair<double, int64_t>> grow;
     bool ok = this->Add(c, threshold, grow);
     while (ok)
     {
-      // The link of a vertex on the rim of a large flat layer holds thousands of cells: the
-      // links are checked after each of the first 8 cells, then when the group doubles.
-      const int64_t size = static_cast<int64_t>(this->Group.size());
-      const bool last = grow.empty() || size >= this->MaximumGroup;
-      if (size <= 8 || (size & (size - 1)) == 0 || last)
+      // The group stops at the first cell after which the boundary is a manifold again: a group
+      // that went on (its links were once checked only when it doubled) could pinch the boundary
+      // again and grow, largest facet first, along a torus's tube to the size bound instead of
+      // closing up across the hole.
+      if (this->IsManifold())
       {
-        this->CheckDirtyVertices();
-        if (this->BadCount == 0)
-        {
-          break;
-        }
+        break;
       }
-      if (last)
+      if (grow.empty() || static_cast<int64_t>(this->Group.size()) >= this->MaximumGroup)
       {
         ok = false;
         break;
@@ -622,17 +619,33 @@ private:
     return euler;
   }
 
-  // Check the links of the vertices whose cells changed since the last check.
-  void CheckDirtyVertices()
+  // Whether the boundary is a manifold at every vertex of the group. Lazy, since it is asked after
+  // every cell and the link of a vertex on the rim of a large flat layer holds thousands of cells:
+  // a vertex found non-manifold whose cells have not changed since is still non-manifold (then
+  // nothing is checked), and the vertices whose cells changed (the last changed first) are
+  // checked until one is non-manifold. The answer is the same as checking every vertex.
+  bool IsManifold()
   {
-    for (const auto& vc : this->DirtyVertices)
+    if (this->BadCount > this->DirtyBadCount)
     {
-      const bool bad = !this->ManifoldAt(vc.first, vc.second);
-      this->BadCount += (bad ? 1 : 0) - this->Bad[vc.first];
-      this->Bad[vc.first] = bad ? 1 : 0;
-      this->Dirty[vc.first] = 0;
+      return false;
     }
-    this->DirtyVertices.clear();
+    while (!this->DirtyVertices.empty())
+    {
+      const std::pair<int32_t, int64_t> vc = this->DirtyVertices.back();
+      this->DirtyVertices.pop_back();
+      const int32_t v = vc.first;
+      this->Dirty[v] = 0;
+      this->DirtyBadCount -= this->Bad[v];
+      const uint8_t bad = this->ManifoldAt(v, vc.second) ? 0 : 1;
+      this->BadCount += bad - this->Bad[v];
+      this->Bad[v] = bad;
+      if (bad)
+      {
+        return false;
+      }
+    }
+    return this->BadCount == 0;
   }
 
   // Whether c shows the outside a facet whose measure is at most the threshold.
@@ -664,6 +677,7 @@ private:
       if (!this->Dirty[v])
       {
         this->Dirty[v] = 1;
+        this->DirtyBadCount += this->Bad[v];
         this->DirtyVertices.emplace_back(v, c);
       }
     }
@@ -788,7 +802,8 @@ private:
   std::vector<uint8_t> Failed;
   std::vector<uint8_t> Bad, Dirty;
   std::vector<std::pair<int32_t, int64_t>> DirtyVertices; // vertex, a cell of it
-  int64_t BadCount = 0;
+  int64_t BadCount = 0;      // vertices of the group found non-manifold when last checked
+  int64_t DirtyBadCount = 0; // those of them whose cells changed since
   std::vector<int64_t> Stack, Fill;
   std::unordered_map<int64_t, int64_t> Label;
   std::vector<int32_t> EdgeEnds;

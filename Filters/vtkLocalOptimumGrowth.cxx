@@ -140,7 +140,7 @@ private:
   struct Item
   {
     Id A, B;
-    uint8_t Level; // relaxation level of constraint 2 (0: strict, 1: factor 2, 2: no minimum)
+    uint8_t Level; // stage of Expand (0: flat candidates only, 1: strict, 2, 3: relaxed)
   };
   struct Deferred
   {
@@ -682,8 +682,14 @@ double Grower::EarScore(Id v, Id u, Id w, double cosNormal, double minimumRatio)
 
 //------------------------------------------------------------------------------------------------
 // Expansion of the front edge a->b (triangle (a, b, y)) by the triangle (b, a, c).
-bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
+// Stages (RelaxConstraints on): 0, only the candidates whose triangle bends by at most half of
+// constraint 1; 1, every candidate, the paper's constraints; 2 and 3, constraint 2 relaxed
+// (relaxation levels 1 and 2). Without RelaxConstraints only stage 0 is used, with every
+// candidate.
+bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
 {
+  const bool flatOnly = this->Par.Relax && stage == 0;
+  const int level = this->Par.Relax ? std::max(0, stage - 1) : 0;
   const Id y = this->Mesh.OppositeVertex(a, b);
   double ne[3];
   if (y < 0 || !UnitNormal(this->P3(a), this->P3(b), this->P3(y), ne))
@@ -786,8 +792,13 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
         continue;
       }
     }
+    const uint8_t tier = Dot(nt, ne) >= this->Par.CosHalfNormal ? 0 : 1;
+    if (flatOnly && tier != 0)
+    {
+      continue;
+    }
     this->Admissible.push_back(c);
-    this->AdmissibleTier.push_back(Dot(nt, ne) >= this->Par.CosHalfNormal ? 0 : 1);
+    this->AdmissibleTier.push_back(tier);
   }
 
   while (!this->Admissible.empty())
@@ -882,7 +893,7 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
         {
           this->Queue.push_back({ tri[j], tri[(j + 1) % 3], 0 });
         }
-        return this->Expand(a, b, level, false);
+        return this->Expand(a, b, stage, false);
       }
       continue;
     }
@@ -891,10 +902,10 @@ bool Grower::Expand(Id a, Id b, int level, bool mayReverse)
       continue;
     }
     // A bridge between two different front loops of one part adds a handle. That is how the
-    // front closes around a torus's tube, but with relaxed constraints it is refused: there it
-    // came only from near-contacts of the front with itself, folding the mesh over (a handle on
-    // random sphere samples).
-    if (level > 0 && !this->OnFrontLoop(a, b, c) &&
+    // front closes around a torus's tube, but after the first stage it is refused: there it came
+    // only from near-contacts of the front with itself, folding the mesh over (a handle on
+    // random sphere and torus samples, and on CGAL's knot2 vertices).
+    if (stage > 0 && !this->OnFrontLoop(a, b, c) &&
       this->TriangleLabel(this->Mesh.FindTriangle(c, nc)) ==
         this->TriangleLabel(this->Mesh.FindTriangle(a, b)))
     {
@@ -1160,7 +1171,7 @@ bool Grower::RetryDeferred()
   kept = 0;
   for (const Deferred& d : this->DeferredEdges)
   {
-    if (d.Level < 2)
+    if (d.Level < 3)
     {
       this->Queue.push_back({ d.A, d.B, static_cast<uint8_t>(d.Level + 1) });
       any = true;

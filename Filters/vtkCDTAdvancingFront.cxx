@@ -458,8 +458,10 @@ private:
 };
 
 //------------------------------------------------------------------------------------------------
-// Where to look for the mesh edges that may cross a new triangle (rule II.D.2). An edge u w
-// passing within `reach` of a point x has u within reach + |u w| of x; with one global longest
+// Where to look for the mesh edges that may cross a new triangle (rule II.D.2). An edge u w of
+// length L passing within `reach` of a point x has its end point nearer to its closest point f to
+// x within sqrt(reach^2 + L^2 / 4) of x (f is an end point, or x - f is perpendicular to the
+// edge and the nearer end point is at most L / 2 from f along it); with one global longest
 // edge that ball is large (a few long edges, typically made where the sampling is sparse, would
 // make every query pay for them). This coarse grid keeps, per cell, the longest edge with an end
 // point in it, so that the ball only grows where long edges are: the points themselves are then
@@ -484,12 +486,13 @@ public:
   }
 
   // The radius around x that holds at least one end point of every edge passing within `reach`
-  // of x (the end point nearer to the edge's closest point to x: within reach plus half the
-  // edge's length); `longest` is the longest edge of the mesh (the bound when too many cells
-  // are in range).
+  // of x (the end point nearer to the edge's closest point to x: within sqrt(reach^2 + L^2 / 4)
+  // for an edge of length L); `longest` is the longest edge of the mesh (the bound when too many
+  // cells are in range; no cell farther than that bound from x can matter).
   double Reach(const double* x, double reach, double longest) const
   {
-    const double extent = reach + longest;
+    const double reach2 = reach * reach;
+    const double extent = std::sqrt(reach2 + 0.25 * longest * longest);
     int64_t low[3], high[3];
     int64_t cells = 1;
     for (int k = 0; k < 3; ++k)
@@ -502,7 +505,7 @@ public:
     }
     if (cells > 343 || cells <= 0)
     {
-      return reach + 0.5 * longest;
+      return extent;
     }
     double result = reach;
     for (int64_t i = low[0]; i <= high[0]; ++i)
@@ -512,7 +515,12 @@ public:
         for (int64_t k = low[2]; k <= high[2]; ++k)
         {
           const auto found = this->Cells.find(this->Key(i, j, k));
-          if (found == this->Cells.end() || reach + 0.5 * found->second <= result)
+          if (found == this->Cells.end())
+          {
+            continue;
+          }
+          const double bound2 = reach2 + 0.25 * found->second * found->second;
+          if (bound2 <= result * result)
           {
             continue;
           }
@@ -525,10 +533,9 @@ public:
             const double gap = std::max(std::max(lo - x[c], x[c] - (lo + this->Size)), 0.0);
             d2 += gap * gap;
           }
-          const double bound = reach + 0.5 * found->second;
-          if (d2 <= bound * bound)
+          if (d2 <= bound2)
           {
-            result = bound;
+            result = std::sqrt(bound2);
           }
         }
       }
@@ -947,10 +954,10 @@ bool Front::PassesProjectionTests(
   // blocks it only when its normal line meets the triangle within MaximumRay: the point is
   // within reach + MaximumRay of g. An edge u w crosses it only if a point of the projected
   // segment, (1 - s) u' + s w' with u' = u + t_u n_u, |t_u| <= MaximumRay (the same for w), is in
-  // the triangle: the segment u w passes within reach + MaximumRay of g, and one of u and w is
-  // within that plus |u w| / 2 of g (EdgeReachGrid bounds |u w| locally): the edges are found
-  // from their end points in that ball. These bounds only select what the exact tests then
-  // decide (1 % of margin against rounding).
+  // the triangle: the segment u w passes within s = reach + MaximumRay of g, and one of u and w
+  // is within sqrt(s^2 + |u w|^2 / 4) of g (see EdgeReachGrid, which bounds |u w| locally): the
+  // edges are found from their end points in that ball. These bounds only select what the exact
+  // tests then decide (1 % of margin against rounding).
   const Id v[3] = { e0, e1, third };
   double centroid[3];
   for (int k = 0; k < 3; ++k)
@@ -1020,17 +1027,26 @@ bool Front::PassesProjectionTests(
     std::fill(this->ProjectedStamp.begin(), this->ProjectedStamp.end(), 0u);
     this->CurrentStamp = 1;
   }
+  // The end points that may be the nearer end of an edge passing within the segment reach s
+  // (within sqrt(s^2 + L^2 / 4) of g for their longest edge L) are stamped; every edge that may
+  // cross has at least one stamped end point, and is tested from its stamped end point of smaller
+  // id.
   for (vtkIdType k = 0; k < count; ++k)
   {
-    this->Stamp[this->Ball[k]] = this->CurrentStamp;
+    const Id u = static_cast<Id>(this->Ball[k]);
+    if (this->BallDistance2[k] <=
+        segmentReach2 + 0.25 * this->MaxIncident[u] * this->MaxIncident[u] &&
+      !this->Mesh.IsFree(u))
+    {
+      this->Stamp[u] = this->CurrentStamp;
+    }
   }
   for (vtkIdType k = 0; k < count; ++k)
   {
     const Id u = static_cast<Id>(this->Ball[k]);
-    const double uReach = 1.01 * pointReach + this->MaxIncident[u];
-    if (this->BallDistance2[k] > uReach * uReach || this->Mesh.IsFree(u))
+    if (this->Stamp[u] != this->CurrentStamp)
     {
-      continue; // no edge of u reaches the triangle
+      continue; // no edge of u reaches the triangle, or not from u
     }
     GetEdgeEnds(this->Mesh, u, this->VertexTriangles, this->Neighbors);
     const bool uIsVertex = u == e0 || u == e1 || u == third;
@@ -1038,7 +1054,7 @@ bool Front::PassesProjectionTests(
     {
       if (this->Stamp[w] == this->CurrentStamp && w < u)
       {
-        continue; // seen from w
+        continue; // tested from w
       }
       const bool wIsVertex = w == e0 || w == e1 || w == third;
       if (uIsVertex && wIsVertex)

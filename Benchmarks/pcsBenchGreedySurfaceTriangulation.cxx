@@ -18,8 +18,11 @@
 // method alike: boundary edges and loops, non-manifold edges and vertices, components, genus (-1
 // when not closed), Hausdorff distance over the mean spacing, and the completeness: the fraction
 // of the vertices of the reference surface (the undamaged mesh of mesh inputs, else the clean
-// cloud) within 2 mean spacings (of those vertices) of the mesh. With a third argument the mesh
-// is written as OFF over all input points. CGAL is used here only: the library never links it.
+// cloud) within 2 mean spacings (of those vertices) of the mesh; and input_bound_2s, the
+// fraction of those vertices within 2 mean spacings of some input point (what the damaged cloud
+// still covers; a mesh goes beyond it only by long triangles across gaps or by added points).
+// With a third argument the mesh is written as OFF over all input points. CGAL is used here
+// only: the library never links it.
 #include "pcsBenchInput.h"
 
 #include "vtkGreedySurfaceTriangulation.h"
@@ -324,6 +327,30 @@ int main(int argc, char* argv[])
   quality->SetReferenceData(reference);
   quality->Update();
   vtkPolyData* measured = quality->GetOutput();
+  // The reference's spacing: of its vertices (its used points when it is a surface).
+  const double spacing =
+    input.Reference.empty() ? MeanSpacing(input.XYZ) : MeanSpacing(input.ReferenceXYZ);
+  // The input bound: the fraction of the reference vertices within 2 spacings of some point of
+  // the (damaged, noisy) input cloud, what the cloud itself still covers. A method that adds no
+  // points goes beyond it only through long triangles spanning gaps of the cloud.
+  double inputBound = 0.0;
+  {
+    vtkSmartPointer<vtkPolyData> cloud = MakeMesh(xyz, {});
+    vtkNew<vtkStaticPointLocator> locator;
+    locator->SetDataSet(cloud);
+    locator->BuildLocator();
+    vtkPoints* refPoints = reference->GetPoints();
+    long within = 0;
+    const vtkIdType m = refPoints ? refPoints->GetNumberOfPoints() : 0;
+    for (vtkIdType i = 0; i < m && n > 0; ++i)
+    {
+      double p[3], q[3];
+      refPoints->GetPoint(i, p);
+      cloud->GetPoint(locator->FindClosestPoint(p), q);
+      within += vtkMath::Distance2BetweenPoints(p, q) <= 4.0 * spacing * spacing ? 1 : 0;
+    }
+    inputBound = m > 0 ? static_cast<double>(within) / m : 0.0;
+  }
   double completeness = 0.0;
   if (!triangles.empty())
   {
@@ -333,9 +360,6 @@ int main(int argc, char* argv[])
     back->Update();
     vtkPolyData* out = back->GetOutput();
     vtkDataArray* distance = out->GetPointData()->GetArray("DistanceToReference");
-    // The reference's spacing: of its vertices (its used points when it is a surface).
-    const double spacing =
-      input.Reference.empty() ? MeanSpacing(input.XYZ) : MeanSpacing(input.ReferenceXYZ);
     long within = 0, counted = 0;
     for (vtkIdType i = 0; i < distance->GetNumberOfTuples(); ++i)
     {
@@ -367,7 +391,8 @@ int main(int argc, char* argv[])
               "\"points_per_second\": %.0f, \"triangles\": %zu, \"peak_mb\": %.1f, "
               "\"unused\": %ld, \"added\": %ld, \"boundary_edges\": %ld, \"boundary_loops\": %ld, "
               "\"non_manifold_edges\": %ld, \"non_manifold_vertices\": %ld, \"components\": %ld, "
-              "\"genus\": %ld, \"hausdorff_over_spacing\": %.3f, \"completeness_2s\": %.5f}\n",
+              "\"genus\": %ld, \"hausdorff_over_spacing\": %.3f, \"completeness_2s\": %.5f, "
+              "\"input_bound_2s\": %.5f}\n",
     method.c_str(), spec.c_str(), n, seconds, seconds > 0 ? n / seconds : 0.0, triangles.size(),
     peak, meshPoints - used, meshPoints - n,
     static_cast<long>(FieldValue(measured, "NumberOfBoundaryEdges")),
@@ -376,6 +401,6 @@ int main(int argc, char* argv[])
     static_cast<long>(FieldValue(measured, "NumberOfNonManifoldVertices")),
     static_cast<long>(FieldValue(measured, "NumberOfConnectedComponents")),
     static_cast<long>(FieldValue(measured, "Genus")), FieldValue(measured, "HausdorffOverSpacing"),
-    completeness);
+    completeness, inputBound);
   return 0;
 }

@@ -104,13 +104,24 @@
  *   boundary neighbours sharper than 90 degrees are closed (no zig-zag boundary). The edges of
  *   the split triangles join the step 7 swap candidates.
  * - Small loops (ours, with FillHoles): after the insertion, a boundary loop still open whose
- *   diameter is at most MaximumBridgeLength (and MaximumHoleDiameter) while its connected piece
- *   of mesh extends over more than twice that diameter is triangulated like a hole (steps 5 and
- *   6, with the lost points inside it), whatever step 3 called it: a gap narrower than a bridge
- *   is a sampling gap. Such loops are small holes whose few boundary vectors step 3 could not
- *   read (noise: the noisy knot's one 7-edge loop, loops of 4 or 5 vertices on the noisy
- *   camel) and loops reshaped by the insertion; the outer border of an open surface spans its
- *   piece and is never one. Counted in NumberOfSmallLoopsClosed.
+ *   width is at most MaximumBridgeLength, whose diameter is at most MaximumHoleDiameter and
+ *   whose connected piece of mesh extends over more than twice that diameter is triangulated
+ *   like a hole (steps 5 and 6, with the lost points inside it), whatever step 3 called it: a
+ *   gap narrower than a bridge is a sampling gap. The width: for each loop vertex, the distance
+ *   to the nearest loop vertex at least a quarter of the loop's length away along the loop; the
+ *   lower third of these distances, times sqrt(2) (a circle's width is its diameter, a slit's
+ *   about 1.4 times its width, whatever its length). Such loops are small holes whose few
+ *   boundary vectors step 3 could not read (noise: the noisy knot's one 7-edge loop, loops of 4
+ *   or 5 vertices on the noisy camel), loops reshaped by the insertion, and long narrow gaps on
+ *   thin parts sampled in rings (the camel's legs: a loop 20 spacings across and 4.8 wide,
+ *   where step 3's farthest-point votes are neutral); the outer border of an open surface spans
+ *   its piece and is never one. When the projected fill of such a loop fails (a loop winding
+ *   around a thin part does not project simply), the loop polygon is triangulated on its own
+ *   vertices by the triangulation that minimises the largest dihedral angle, then the area
+ *   (Liepa, SGP 2003, section 3.1: dynamic programming, cubic in the loop size, loops of at most
+ *   400 vertices), no diagonal on an existing edge; it is kept when that angle, the mesh
+ *   triangles across the loop included, is at most MaximumNormalDeviation. Counted in
+ *   NumberOfSmallLoopsClosed, the fallback also in NumberOfSmallLoopsFilledByDihedral.
  * - Fill refinement and fairing (ours, when FairHoleFills and FillHoles are on; "9" in
  *   StepsUsed; after Liepa, "Filling Holes in Meshes", SGP 2003, sections 3.2-3.3): step 6
  *   projects a hole on its average plane, so across a region without input points the fill is
@@ -143,7 +154,8 @@
  * 8: lost point insertion and its ears); field data `NumberOfTriangles`, `NumberOfLostPoints`
  * (after step 2), `NumberOfIslands`, `NumberOfHoles` (after step 4), `NumberOfBridges`,
  * `NumberOfChords`, `NumberOfHolesFilled`, `NumberOfHolesLeftOpen`, `NumberOfSwaps`,
- * `NumberOfInsertedPoints`, `NumberOfSmallLoopsClosed`, `NumberOfAddedPoints`,
+ * `NumberOfInsertedPoints`, `NumberOfSmallLoopsClosed`, `NumberOfSmallLoopsFilledByDihedral`,
+ * `NumberOfAddedPoints`,
  * `NumberOfUnusedPoints`,
  * `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`, `MeanSpacing`, and the columns of the paper's
  * Table 1: `NumberOfPoints` (input points), `AverageUniformityInSSR` (mean m over the points of the
@@ -283,8 +295,9 @@ public:
    * Step 2: largest angle, in degrees, between the normals of two triangles around a point for
    * the point to be correct (the paper's smoothness condition, section 3, states 90). Default
    * 120: on the bunny with Gaussian noise of a quarter of the mean spacing, 90 leaves 76 % of the
-   * points correct, 120 leaves 95 %; clean surfaces are unaffected. Range [0, 180] (180 disables
-   * the smoothness test; the projected winding test remains).
+   * points correct, 120 leaves 95 %; clean surfaces are unaffected. Also the largest dihedral
+   * angle of the fallback fill of a small loop (see the class documentation). Range [0, 180]
+   * (180 disables the smoothness test; the projected winding test remains).
    */
   vtkSetClampMacro(MaximumNormalDeviation, double, 0.0, 180.0);
   vtkGetMacro(MaximumNormalDeviation, double);
@@ -334,8 +347,8 @@ public:
   ///@{
   /**
    * Step 4: longest bridge (the paper's l), in units of the mean spacing; with FillHoles, also
-   * the widest boundary loop closed after lost point insertion as a sampling gap (see the class
-   * documentation). Default 10; range [0, VTK_DOUBLE_MAX].
+   * the largest width of a boundary loop closed after lost point insertion as a sampling gap
+   * (see the class documentation). Default 10; range [0, VTK_DOUBLE_MAX].
    */
   vtkSetClampMacro(MaximumBridgeLength, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumBridgeLength, double);

@@ -216,6 +216,10 @@ bool CheckArrays(vtkGreedySurfaceTriangulation* filter, const std::string& what)
   const vtkIdType loopsClosed = pcstest::FieldCount(mesh, "NumberOfSmallLoopsClosed");
   PCS_CHECK(loopsClosed >= 0 && (loopsClosed == 0 || filter->GetFillHoles()),
     what << ": NumberOfSmallLoopsClosed " << loopsClosed);
+  // The loops closed by the least-dihedral fallback are among the small loops closed.
+  const vtkIdType byDihedral = pcstest::FieldCount(mesh, "NumberOfSmallLoopsFilledByDihedral");
+  PCS_CHECK(byDihedral >= 0 && byDihedral <= loopsClosed,
+    what << ": NumberOfSmallLoopsFilledByDihedral " << byDihedral << " of " << loopsClosed);
   vtkIdType count[6] = { 0, 0, 0, 0, 0, 0 }, unused = 0, ssrFinite = 0;
   double ssrUniformity = 0.0;
   for (vtkIdType i = 0; i < n; ++i)

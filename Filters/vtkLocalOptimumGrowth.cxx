@@ -185,6 +185,7 @@ private:
   bool InsertOrphan(Id q);
   bool FillHole(const std::vector<Id>& frontLoop);
   void OrientComponents();
+  void Unfold();
   void ReportProgress();
 
   // Neighbourhood of the current operation: candidate vertices (the K-neighbourhoods of the
@@ -1524,6 +1525,106 @@ void Grower::InsertOrphans()
   }
 }
 
+// Step 7: folds repaired by edge flips. An edge whose two triangles bend by more than 90 degrees
+// (normals with a negative dot product) is flipped when that raises the smallest normal dot
+// product among the five edges of its quadrilateral (the edge itself and the four around it),
+// the new edge being absent from the mesh. Topology: the flip keeps every vertex and boundary
+// edge, and the two new triangles are checked by the mesh before they are kept.
+void Grower::Unfold()
+{
+  auto normalOf = [this](Id x, Id y, Id z, double* n) {
+    return UnitNormal(this->P3(x), this->P3(y), this->P3(z), n);
+  };
+  std::vector<std::pair<Id, Id>> stack;
+  const int64_t count = this->Mesh.GetNumberOfTriangleIds();
+  for (int64_t t = 0; t < count; ++t)
+  {
+    if (!this->Mesh.IsTriangleRemoved(t))
+    {
+      const int32_t* v = this->Mesh.GetTriangle(t);
+      for (int j = 0; j < 3; ++j)
+      {
+        if (v[j] < v[(j + 1) % 3])
+        {
+          stack.emplace_back(v[j], v[(j + 1) % 3]);
+        }
+      }
+    }
+  }
+  // Each flip raises a local minimum; the budget bounds the work whatever the geometry.
+  int64_t budget = 4 * count + 64;
+  while (!stack.empty() && budget > 0 && !this->Aborted)
+  {
+    const Id a = stack.back().first, b = stack.back().second;
+    stack.pop_back();
+    const int64_t t1 = this->Mesh.FindTriangle(a, b);
+    const int64_t t2 = this->Mesh.FindTriangle(b, a);
+    if (t1 < 0 || t2 < 0)
+    {
+      continue;
+    }
+    const Id c = this->Mesh.OppositeVertex(a, b), d = this->Mesh.OppositeVertex(b, a);
+    double n1[3], n2[3];
+    if (c == d || !normalOf(a, b, c, n1) || !normalOf(b, a, d, n2) || Dot(n1, n2) >= 0.0 ||
+      this->Mesh.GetEdgeValence(c, d) > 0)
+    {
+      continue;
+    }
+    double m1[3], m2[3]; // the new triangles (a, d, c) and (b, c, d)
+    if (pcs::projected::Collinear(this->P3(a), this->P3(d), this->P3(c)) ||
+      pcs::projected::Collinear(this->P3(b), this->P3(c), this->P3(d)) ||
+      !normalOf(a, d, c, m1) || !normalOf(b, c, d, m2))
+    {
+      continue;
+    }
+    double before = Dot(n1, n2), after = Dot(m1, m2);
+    // The four edges around: (s, e) with the triangle owning s->e before and after the flip.
+    const Id ring[4][2] = { { b, c }, { c, a }, { a, d }, { d, b } };
+    const double* owners[4][2] = { { n1, m2 }, { n1, m1 }, { n2, m1 }, { n2, m2 } };
+    for (int i = 0; i < 4; ++i)
+    {
+      const Id s = ring[i][0], e = ring[i][1];
+      const Id o = this->Mesh.OppositeVertex(e, s);
+      double no[3];
+      if (o >= 0 && normalOf(e, s, o, no))
+      {
+        before = std::min(before, Dot(no, owners[i][0]));
+        after = std::min(after, Dot(no, owners[i][1]));
+      }
+    }
+    if (!(after > before))
+    {
+      continue;
+    }
+    --budget;
+    this->Mesh.RemoveTriangle(t1);
+    this->Mesh.RemoveTriangle(t2);
+    int64_t x = -1, y = -1;
+    if (this->Mesh.CanAddTriangle(a, d, c) == pcs::SurfaceMesh::Check::Ok)
+    {
+      x = this->Mesh.AddTriangle(a, d, c);
+    }
+    if (x >= 0 && this->Mesh.CanAddTriangle(b, c, d) == pcs::SurfaceMesh::Check::Ok)
+    {
+      y = this->Mesh.AddTriangle(b, c, d);
+    }
+    if (x < 0 || y < 0)
+    {
+      if (x >= 0)
+      {
+        this->Mesh.RemoveTriangle(x);
+      }
+      this->Mesh.AddTriangle(a, b, c);
+      this->Mesh.AddTriangle(b, a, d);
+      continue;
+    }
+    for (const auto& edge : ring)
+    {
+      stack.emplace_back(edge[0], edge[1]);
+    }
+  }
+}
+
 // Closed components are turned outwards: positive signed volume.
 void Grower::OrientComponents()
 {
@@ -1593,6 +1694,7 @@ void Grower::Run()
   {
     this->InsertOrphans();
     this->FillHoles();
+    this->Unfold();
   }
   this->OrientComponents();
 }

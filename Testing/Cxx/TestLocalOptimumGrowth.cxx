@@ -11,7 +11,9 @@
 // - a planar 20 x 20 grid (cocircular and collinear points everywhere): 722 triangles, one loop;
 // - two disjoint spheres: two closed components (the front dies, a second seed is planted);
 // - random sphere and torus samples that once kept a sliver hole, gained a handle or left a
-//   point unused: closed, genus 0 / 1, every point used;
+//   point unused: closed, genus 0 / 1, every point used; on the spheres (and the 3000-point
+//   sphere above) no edge folded over between two triangles without a sliver angle (below 5
+//   degrees);
 // - degenerate inputs (no point, 2 points, collinear points): a warning and no triangle.
 #include "vtkLocalOptimumGrowth.h"
 #include "vtkReconstructionQuality.h"
@@ -25,9 +27,12 @@
 #include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <map>
 #include <random>
 #include <string>
 
@@ -89,6 +94,51 @@ double SignedVolume(vtkPolyData* mesh)
     volume += vtkMath::Dot(a, cross) / 6.0;
   }
   return volume;
+}
+
+// Edges whose two triangles fold over (normals with a negative dot product), counted only when
+// both triangles have every angle of at least 5 degrees: a closed smooth surface sampled
+// densely has none (a sliver's normal says little about the surface).
+int CountFolds(vtkPolyData* mesh)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, std::array<double, 3>> owners;
+  int folds = 0;
+  for (const auto& t : pcstest::CellTuples<3>(mesh))
+  {
+    double p[3][3];
+    for (int j = 0; j < 3; ++j)
+    {
+      mesh->GetPoint(t[j], p[j]);
+    }
+    double smallest = 180.0;
+    for (int j = 0; j < 3; ++j)
+    {
+      double u[3], v[3];
+      vtkMath::Subtract(p[(j + 1) % 3], p[j], u);
+      vtkMath::Subtract(p[(j + 2) % 3], p[j], v);
+      smallest =
+        std::min(smallest, vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(u, v)));
+    }
+    if (smallest < 5.0)
+    {
+      continue;
+    }
+    double u[3], v[3], n[3];
+    vtkMath::Subtract(p[1], p[0], u);
+    vtkMath::Subtract(p[2], p[0], v);
+    vtkMath::Cross(u, v, n);
+    vtkMath::Normalize(n);
+    for (int j = 0; j < 3; ++j)
+    {
+      const auto twin = owners.find({ t[(j + 1) % 3], t[j] });
+      if (twin != owners.end() && vtkMath::Dot(twin->second.data(), n) < 0.0)
+      {
+        ++folds;
+      }
+      owners[{ t[j], t[(j + 1) % 3] }] = { n[0], n[1], n[2] };
+    }
+  }
+  return folds;
 }
 
 bool CheckClosed(const Quality& q, double genus, const std::string& what)
@@ -193,6 +243,7 @@ bool TestSphere()
     "Hausdorff " << q.Hausdorff << " > 2 x mean spacing " << q.Spacing);
   PCS_CHECK(SignedVolume(growth->GetOutput()) > 0.0, "outward orientation");
   PCS_CHECK(growth->GetNumberOfSeeds() == 1, "one seed: " << growth->GetNumberOfSeeds());
+  PCS_CHECK(CountFolds(growth->GetOutput()) == 0, "sphere: folded edges");
   return true;
 }
 
@@ -332,6 +383,7 @@ bool TestRandomSamples()
     PCS_CHECK(q.Triangles == 2 * sample.first - 4, what << ": " << q.Triangles << " triangles");
     PCS_CHECK(growth->GetNumberOfUnusedPoints() == 0 && q.UsedPoints == sample.first,
       what << ": every point used");
+    PCS_CHECK(CountFolds(growth->GetOutput()) == 0, what << ": folded edges");
   }
   const std::pair<int, unsigned> tori[] = { { 2000, 1 }, { 2000, 4 }, { 2000, 12 }, { 5000, 9 },
     { 5000, 19 } };
@@ -360,6 +412,7 @@ bool TestRandomSamples()
     PCS_CHECK(q.Triangles == 2 * sample.first, what << ": " << q.Triangles << " triangles");
     PCS_CHECK(growth->GetNumberOfUnusedPoints() == 0 && q.UsedPoints == sample.first,
       what << ": every point used");
+    // Not checked here: 2000/4 and 2000/12 keep a folded triangle (see the class @warning).
   }
   return true;
 }

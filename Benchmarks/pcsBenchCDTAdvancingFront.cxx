@@ -19,6 +19,8 @@
 // written as OFF over all input points. With PCS_BENCH_NO_QUALITY=1 in the environment only the
 // reconstruction runs (for profiling and for comparing outputs): the JSON line stops at the
 // triangle count and the third argument, if any, receives the triangles, one "i j k" per line.
+// With PCS_BENCH_WRITE_INPUT=<file.xyz> the input cloud is also written there, one point per
+// line, "x y z nx ny nz" (the normals of ours-normals; an input for this benchmark and others).
 // CGAL is used here only: the library never links it.
 #include "pcsBenchInput.h"
 
@@ -156,6 +158,17 @@ int main(int argc, char* argv[])
   }
   const std::vector<double>& xyz = input.XYZ;
   const long n = input.Size();
+  if (const char* inputPath = std::getenv("PCS_BENCH_WRITE_INPUT"))
+  {
+    std::ofstream out(inputPath);
+    out.precision(17);
+    for (long i = 0; i < n; ++i)
+    {
+      out << xyz[3 * i] << " " << xyz[3 * i + 1] << " " << xyz[3 * i + 2] << " "
+          << input.Normals[3 * i] << " " << input.Normals[3 * i + 1] << " "
+          << input.Normals[3 * i + 2] << "\n";
+    }
+  }
   std::vector<std::array<long, 3>> triangles;
   double seconds = 0.0, cpuSeconds = 0.0, baseline = 0.0;
   auto cpuNow = []()

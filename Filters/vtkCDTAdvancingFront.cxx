@@ -571,6 +571,9 @@ struct Parameters
   double MinimumArea = 0;            // II.E
   int MaximumCandidates = 0;         // candidates submitted to the II.D tests per edge
   bool CloseTriangularHoles = false; // III.C: a 3-edge hole closes without II.C.2
+  // III.C: II.C.1 is not required of a triangle whose two edges at its third vertex are at most
+  // LongEar long.
+  bool ShortTrianglesSkipNormalAgreement = false;
   // III.C ears (a triangle with a front edge next to the edge expanded): an ear that adds an edge
   // longer than LongEar must have no angle whose cosine exceeds MaximumLongEarCos.
   double LongEar = 0;
@@ -915,7 +918,12 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
   }
   const double *n0 = this->N(e0), *n1 = this->N(e1), *n2 = this->N(third);
   // II.C.1: the edge's end-point normals agree with the third point's.
-  if (Dot(n0, n2) <= 0.0 || Dot(n1, n2) <= 0.0 || !this->CanAdd(e0, e1, third))
+  // (Waived in the hole-filling step when both edges at the third point are short.)
+  const bool agreementWaived = parameters.ShortTrianglesSkipNormalAgreement &&
+    Distance2(this->P(e0), this->P(third)) <= parameters.LongEar * parameters.LongEar &&
+    Distance2(this->P(e1), this->P(third)) <= parameters.LongEar * parameters.LongEar;
+  if ((!agreementWaived && (Dot(n0, n2) <= 0.0 || Dot(n1, n2) <= 0.0)) ||
+    !this->CanAdd(e0, e1, third))
   {
     return false;
   }
@@ -2009,6 +2017,7 @@ int vtkCDTAdvancingFront::RequestData(
   relaxed.Radius = this->HoleFillingRadiusFactor * strict.Radius;
   relaxed.MinimumNormalDot = this->HoleFillingMinimumNormalDot;
   relaxed.CloseTriangularHoles = true;
+  relaxed.ShortTrianglesSkipNormalAgreement = true;
   // An ear that adds an edge longer than the neighbourhood radius must have no angle below 15
   // degrees (see IsAcceptableEar).
   relaxed.LongEar = strict.Radius;

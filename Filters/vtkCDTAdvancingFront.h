@@ -75,7 +75,18 @@
  *   off the surface on the 10^5-point camel sample, 4.5 to 14 on a sphere with a slit 6 to 12
  *   spacings wide (TestCDTAdvancingFront). Such a slit now stays open (a narrow hole costs
  *   little completeness); a wide hole still closes with long ears of reasonable shape (the
- *   bunny00 vertex set needs ears over 10 mean spacings long).
+ *   bunny00 vertex set needs ears over 10 mean spacings long). One more relaxation (ours): II.C.1
+ *   is not required in this step of a triangle whose two edges at its third vertex are at most
+ *   the neighbourhood radius long. Where the surface folds within a few spacings (a rounded rim, a
+ *   crease) the normals of the points around a hole left there are more than 90 degrees apart,
+ *   and no triangle across it satisfied II.C.1: on the 10^5-point armadillo sample a 6-edge hole
+ *   6.6 mean spacings wide on such a fold (vertex normals 54 to 77 degrees from the hole's plane)
+ *   stayed open, 2.24 mean spacings from the surface, and was not closed by any other relaxation
+ *   (HoleFillingMinimumNormalDot 0, HoleFillingRadiusFactor 1, 200 candidates). The orientation
+ *   rule and the relaxed II.C.2 still apply; longer triangles keep II.C.1 (waived for them too,
+ *   fills 11 to 26 mean spacings long crossed the camel sample with PCA normals, 3.5 mean
+ *   spacings off the surface). Note that II.D.1 ignores a point whose normal disagrees with one
+ *   of the vertex normals (Fig. 3b), so such a triangle is checked by II.D.2 mainly.
  * - Manifold result: pinches left when the fronts stop are undone (at such a vertex the
  *   triangles of all fans but the largest are removed, `NumberOfRemovedTriangles`) and the holes
  *   this opens are filled again with the III.C rules, pinches no longer allowed. The output has
@@ -111,21 +122,23 @@
  * gathered on process 0, which computes the mesh; the other processes output nothing.
  *
  * @warning
- * Measured against CGAL's advancing front on the same clouds (Benchmarks/run_cdt_benchmark.py,
- * 2026-11-23, loaded 2-core machine; the README gives the table). Time: with the meshes' vertex
- * normals 1.00-1.49 times faster than CGAL on the vertex sets of bunny00, armadillo and
- * refined_elephant and on 10^5-point samples, but 2.2 times slower on the small irregular vertex
- * sets of the camel and the elephant; with estimated normals 1.25-4.5 times slower (the K
- * nearest-point queries of vtkPCANormalEstimation, twice per point, the second pass sequential,
- * take 40-56 % of the time). Quality: 0 non-manifold edges and vertices and coverage >= 99 % on
- * every clean cloud, but the Hausdorff distance exceeds 2 mean spacings on samples of the
- * armadillo (2.24) and the camel (5.04) with exact normals, through a few hole-filling ears
- * (section III.C takes the ears at any distance) closed across a hole, with edges of 5 to 44
- * mean spacings, and on thin features with estimated normals (up to 9.17 on the camel). Noisy clouds (Gaussian noise of 0.4 mean spacing): many
- * front edges and points find no valid triangle (the noise puts neighbouring points inside the
- * candidate triangles' projections); the work per front edge and per seed point is bounded by
- * MaximumNumberOfCandidates, but the filter still takes 3.7-11 times CGAL's time, leaves holes
- * (coverage 0.94-0.98) and unused points (2-6 %).
+ * Measured against CGAL's advancing front on the same clouds (Benchmarks/run_cdt_benchmark.py
+ * and CPU times, 2026-11-23, loaded 2-core machine; the README gives the tables). CPU time: with
+ * the meshes' vertex normals 1.45-1.73 times faster than CGAL on the 10^5-point samples and the
+ * vertex sets of bunny00, armadillo and refined_elephant, but 1.3-1.4 times slower on the small
+ * irregular vertex sets of the camel and the elephant (the II.D projection tests of the
+ * triangles made are most of the time); with estimated normals 1.1-1.4 times faster on the
+ * former, 1.6-2.4 times slower on the latter. Quality: 0 non-manifold edges and vertices and
+ * coverage >= 99 % on every clean cloud; the Hausdorff distance exceeds 2 mean spacings on the
+ * 10^5-point samples of the armadillo (2.04, a hole with edges of 7 spacings on a fold) and the
+ * camel (2.36: a sharp tip of the mesh is 2.36 spacings from the nearest sample point, CGAL 2.38)
+ * with exact normals, and with estimated normals on the camel and elephant vertex sets (2.82,
+ * 2.36: triangles standing across the surface where the PCA normals of the irregular sampling
+ * are 60-90 degrees off) and the camel samples. Noisy clouds (Gaussian noise of 0.4 mean
+ * spacing): many front edges and points find no valid triangle (the noise puts neighbouring
+ * points inside the candidate triangles' projections); the work per front edge and per seed
+ * point is bounded by MaximumNumberOfCandidates, but the filter still takes 3-9 times CGAL's CPU
+ * time, leaves holes (coverage 0.94-0.98) and unused points (2-6 %).
  *
  * @sa
  * vtkPCANormalEstimation vtkStaticPointLocator vtkReconstructionQuality vtkIncrementalDelaunay3D

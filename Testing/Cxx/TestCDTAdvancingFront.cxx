@@ -127,6 +127,36 @@ Cloud Torus(int n, unsigned seed)
   return c;
 }
 
+// A lens: two spherical caps of radius 1 and polar half angle `half` (radians), mirror images in
+// the plane z = 0 where they meet along a sharp rim. Each cap gets n points on a golden-angle
+// spiral (uniform by area), none within half a spacing of the rim; exact normals. At the rim the
+// normals of the two caps are 180 - 2 half degrees apart: more than 90 below 45 degrees, so no
+// triangle across the rim satisfies II.C.1.
+Cloud Lens(int n, double half)
+{
+  const double h = std::cos(half); // the caps' centres are at z = -h and z = +h
+  const double spacing = std::sqrt(2.0 * Pi * (1.0 - std::cos(half)) / n);
+  const double golden = Pi * (3.0 - std::sqrt(5.0));
+  Cloud c;
+  for (double side : { 1.0, -1.0 })
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const double z = 1.0 - (1.0 - std::cos(half)) * (i + 0.5) / n; // cosine of the polar angle
+      const double polar = std::acos(z);
+      if (half - polar < 0.5 * spacing)
+      {
+        continue;
+      }
+      const double d[3] = { std::sin(polar) * std::cos(golden * i),
+        std::sin(polar) * std::sin(golden * i), side * z };
+      c.XYZ.insert(c.XYZ.end(), { d[0], d[1], d[2] - side * h });
+      c.Normals.insert(c.Normals.end(), { d[0], d[1], d[2] });
+    }
+  }
+  return c;
+}
+
 struct Messages
 {
   int Warnings = 0;
@@ -544,6 +574,12 @@ int TestCDTAdvancingFront(int, char*[])
   failures += TestClosed("sphere 20000, input normals", Sphere(20000, 3), true, 0) ? 0 : 1;
   failures += TestClosed("torus 4000, input normals", Torus(4000, 4), true, 1) ? 0 : 1;
   failures += TestClosed("torus 4000, PCA normals", Torus(4000, 5), false, 1) ? 0 : 1;
+  // A sharp rim (normals 120 and 100 degrees apart across it): the front stops there (II.C.1),
+  // and the hole filling closes the slit because it does not require II.C.1 of short triangles
+  // (without that, 110 boundary edges were left on both lenses).
+  failures += TestClosed("lens 30 degrees, input normals", Lens(3000, Pi / 6.0), true, 0) ? 0 : 1;
+  failures +=
+    TestClosed("lens 40 degrees, input normals", Lens(3000, 2.0 * Pi / 9.0), true, 0) ? 0 : 1;
   failures += TestThinSheet() ? 0 : 1;
   for (double width : { 0.075, 0.1, 0.15 })
   {

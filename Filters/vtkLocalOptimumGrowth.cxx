@@ -1527,11 +1527,11 @@ void Grower::InsertOrphans()
   }
 }
 
-// Step 7: folds repaired by edge flips. An edge whose two triangles bend by more than 90 degrees
-// (normals with a negative dot product) is flipped when that raises the smallest normal dot
-// product among the five edges of its quadrilateral (the edge itself and the four around it),
-// the new edge being absent from the mesh. Topology: the flip keeps every vertex and boundary
-// edge, and the two new triangles are checked by the mesh before they are kept.
+// Step 7: folds repaired by edge flips. An edge whose two triangles bend by more than constraint 1
+// allows is flipped when the other diagonal of its quadrilateral is shorter and absent from the
+// mesh, and the flip raises the smallest normal dot product among the five edges of the
+// quadrilateral (the edge itself and the four around it). Topology: the flip keeps every vertex
+// and boundary edge, and the two new triangles are checked by the mesh before they are kept.
 void Grower::Unfold()
 {
   auto normalOf = [this](Id x, Id y, Id z, double* n) {
@@ -1567,8 +1567,9 @@ void Grower::Unfold()
     }
     const Id c = this->Mesh.OppositeVertex(a, b), d = this->Mesh.OppositeVertex(b, a);
     double n1[3], n2[3];
-    if (c == d || !normalOf(a, b, c, n1) || !normalOf(b, a, d, n2) || Dot(n1, n2) >= 0.0 ||
-      this->Mesh.GetEdgeValence(c, d) > 0)
+    if (c == d || !normalOf(a, b, c, n1) || !normalOf(b, a, d, n2) ||
+      Dot(n1, n2) >= this->Par.CosNormal || this->Mesh.GetEdgeValence(c, d) > 0 ||
+      Distance2(this->P3(c), this->P3(d)) >= Distance2(this->P3(a), this->P3(b)))
     {
       continue;
     }

@@ -118,18 +118,22 @@
  *    project's shared hole triangulation (paper 001 steps 5-6: projection on the loop's mean
  *    plane, chord splitting, 2D greedy triangulation, free points inside used), kept only when
  *    every triangle fits the manifold mesh.
- * 7. Folds (added): an edge whose two triangles bend by more than 90 degrees (normals with a
- *    negative dot product) is flipped when the flip raises the smallest normal dot product
- *    among the five edges of its quadrilateral (the edge and the four around it) and the new
- *    edge is not in the mesh; the mesh checks the two new triangles (oriented, manifold) before
- *    they are kept, and the edges around a flipped edge are tried again (at most 4 flips per
- *    triangle on average). The vertices and the boundary edges stay the same. Such folds are
- *    left where ears, later-stage expansions and hole fills meet at a sharply bent spot (on
- *    10^5 samples of CGAL's armadillo 1015 edges, 679 after): the worst triangle of that cloud,
- *    folded by 139 degrees against a hole fill, set its Hausdorff distance (2.07 mean spacings,
- *    1.94 after). Slivers (angles below 1 degree) left by step 5 may still fold, and so may a
- *    triangle folded against all three of its neighbours, which no single flip improves (two of
- *    the five hard random torus samples of the test keep one).
+ * 7. Folds (added): an edge whose two triangles bend by more than MaximumNormalAngle (the
+ *    bound of constraint 1) is flipped when the other diagonal of its quadrilateral is shorter
+ *    and not in the mesh, and the flip raises the smallest normal dot product among the five
+ *    edges of the quadrilateral (the edge and the four around it); the mesh checks the two new
+ *    triangles (oriented, manifold) before they are kept, and the edges around a flipped edge
+ *    are tried again (at most 4 flips per triangle on average). The vertices and the boundary
+ *    edges stay the same. Such folds are left where ears, later-stage expansions and hole fills
+ *    meet at a sharply bent spot (on 10^5 samples of CGAL's armadillo 1015 edges bend by more
+ *    than 90 degrees, 368 after): the worst triangle of that cloud, folded by 139 degrees
+ *    against a hole fill, set its Hausdorff distance (2.07 mean spacings, 1.79 after), and on
+ *    the elephant samples a corner cut by the wrong diagonal set it (2.13, 1.66 after). Without
+ *    the length condition the flips of edges bending by more than 60 degrees made the armadillo
+ *    samples worse (2.12: a long diagonal leaves the surface); flips of edges bending by more
+ *    than 90 degrees only gave 1.94 and 2.13. Slivers (angles below 1 degree) left by step 5
+ *    may still fold, and so may a triangle folded against all three of its neighbours, which no
+ *    single flip improves (two of the five hard random torus samples of the test keep one).
  * 8. Each closed component is oriented outwards (positive signed volume).
  *
  * Output: all input points and point data, the triangles (consistently oriented), point data
@@ -156,10 +160,9 @@
  * the tip: measured on 10^5 samples of CGAL's camel, the worst reference vertex is 2.36 mean
  * spacings from our mesh and from CGAL's advancing-front mesh alike, and 2.38 from the convex
  * hull of its 30 nearest samples, so that no mesh over these points comes within 2 spacings of
- * it; on the elephant samples a sharp corner is cut (2.13 spacings; a triangle over its nearest
- * samples could pass at 1.2). Thin tubes sampled by sparse rings (edge ratios above 3, as
- * in decimated meshes) are left with holes. Random closed samples are closed over every point
- * on most seeds, not all (see step 4).
+ * it. Thin tubes sampled by sparse rings (edge ratios above 3, as in decimated meshes) are left
+ * with holes. Random closed samples are closed over every point on most seeds, not all (see
+ * step 4).
  *
  * @sa
  * vtkCDTAdvancingFront vtkGreedySurfaceTriangulation vtkReconstructionQuality

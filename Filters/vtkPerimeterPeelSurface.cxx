@@ -1035,11 +1035,22 @@ int vtkPerimeterPeelSurface::RequestData(
     this->GroupFactor * (this->FacetMeasure == AREA ? this->GroupFactor : 1.0);
   // A group that opens a handle needs a start facet twice as clear (rule 3 of the class docs).
   const double handleFactor = groupFactor * (this->FacetMeasure == AREA ? 4.0 : 2.0);
+  // The cave limit (rule 4 of the class docs): the measure of an equilateral triangle of
+  // perimeter CaveLimit local spacings; -1 (never reached) without relative measures or when 0.
+  double caveLimit = -1.0;
+  if (relative && this->CaveLimit > 0.0)
+  {
+    const double side = this->CaveLimit / 3.0;
+    caveLimit = this->FacetMeasure == AREA
+      ? 0.25 * std::sqrt(3.0) * side * side
+      : (this->FacetMeasure == CIRCUMRADIUS ? side / std::sqrt(3.0) : this->CaveLimit);
+  }
   // Whether the inside cell c, whose exterior facets are `mask` and the largest of them m, may
   // not be removed now. With ManifoldOutput, a cell whose facet is not clearly too large for the
   // surface (at most GroupFactor x threshold) is not removed when it would show a facet more than
   // 1.5 times larger (a cave under a true surface triangle; neighbouring surface triangles of a
-  // uniform random sample differ by less).
+  // uniform random sample differ by less), nor a cell whose exterior facets are all within the
+  // cave limit when it would show one over it (a cave dug in steps of less than 1.5 times).
   // Each rule, once true, stays true while the other cells go and none of c's face neighbours
   // does: the counts of inside cells only drop, a boundary vertex or edge stays on the boundary,
   // and c's own facets change only with its neighbours (which offer c again when they go).
@@ -1057,6 +1068,10 @@ int vtkPerimeterPeelSurface::RequestData(
       return false;
     }
     if (m <= threshold * groupFactor && solid.LargestFacet(c, 15 & ~mask) > 1.5 * m)
+    {
+      return true;
+    }
+    if (m <= caveLimit && solid.LargestFacet(c, 15 & ~mask) > caveLimit)
     {
       return true;
     }
@@ -1267,6 +1282,7 @@ void vtkPerimeterPeelSurface::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ThresholdFactor: " << this->ThresholdFactor << "\n";
   os << indent << "GroupFactor: " << this->GroupFactor << "\n";
+  os << indent << "CaveLimit: " << this->CaveLimit << "\n";
   os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
   os << indent << "Threshold: " << this->Threshold << "\n";
   os << indent << "FacetMeasure: " << this->FacetMeasure << "\n";

@@ -215,9 +215,10 @@ bool CheckTorus()
 
 // The goblet of the paper's Fig. 1 (a surface of revolution with a cavity): closed, manifold,
 // genus 0, >= 99 % of the points, and the cup stays hollow: the axis point at mid-height inside
-// the cup and the point just above its inner bottom are outside the solid, while points in the
-// stem and in the cup's wall are inside (vtkSelectEnclosedPoints). (The shallow top of the foot
-// comes out pitted on random samples: no point inside the foot is asserted.)
+// the cup and the point just above its inner bottom are outside the solid, while a point in the
+// stem is inside, and one in the cup's wall at ThresholdFactor 1.5 (vtkSelectEnclosedPoints).
+// (The shallow top of the foot comes out pitted on random samples: no point inside the foot is
+// asserted.)
 bool CheckGoblet()
 {
   for (unsigned seed : { 1u, 2u })
@@ -233,8 +234,20 @@ bool CheckGoblet()
     PCS_CHECK(!enclosed->IsInsideSurface(0.0, 0.0, 1.2), label << ": cup axis at mid-height");
     PCS_CHECK(!enclosed->IsInsideSurface(0.0, 0.0, 0.95), label << ": above the cup's bottom");
     PCS_CHECK(enclosed->IsInsideSurface(0.0, 0.0, 0.45), label << ": in the stem");
-    PCS_CHECK(enclosed->IsInsideSurface(0.5, 0.0, 1.2), label << ": in the cup's wall");
     enclosed->Complete();
+    // The cup's wall (0.1, about two spacings) is thinner than the relative measure resolves at
+    // ThresholdFactor 1.0: the surface zigzags through it (class docs), so a point in the wall is
+    // inside on some samples only (measured on 8 other seeds: 3 of 8, 6 of 8 with the cave
+    // limit). From 1.5 on the wall is clean: there the point must be inside.
+    vtkNew<vtkPerimeterPeelSurface> wider;
+    wider->SetInputData(pcstest::MakeCloud(GobletPoints(8000, seed)));
+    wider->SetThresholdFactor(1.5);
+    wider->Update();
+    vtkNew<vtkSelectEnclosedPoints> wall;
+    wall->Initialize(wider->GetOutput());
+    PCS_CHECK(!wall->IsInsideSurface(0.0, 0.0, 1.2), label << ", factor 1.5: cup axis");
+    PCS_CHECK(wall->IsInsideSurface(0.5, 0.0, 1.2), label << ", factor 1.5: in the cup's wall");
+    wall->Complete();
   }
   return true;
 }

@@ -73,10 +73,10 @@ def quality(mesh):
 
 DEFAULTS = {"ThresholdFactor": 1.0, "ConvergenceTolerance": 0.01, "Threshold": 0.0,
             "FacetMeasure": 0, "MaximumIterations": 100, "GroupFactor": 4.0,
-            "ManifoldOutput": True, "LocalSpacingNeighbors": 6}
+            "ManifoldOutput": True, "LocalSpacingNeighbors": 6, "CaveLimit": 9.0}
 RANGES = {"ThresholdFactor": (0.01, 1000.0), "ConvergenceTolerance": (0.0, 1.0),
           "FacetMeasure": (0, 2), "MaximumIterations": (1, 100000), "GroupFactor": (1.0, 1000.0),
-          "LocalSpacingNeighbors": (0, 64)}
+          "LocalSpacingNeighbors": (0, 64), "CaveLimit": (0.0, 1000.0)}
 
 peel = vtkPerimeterPeelSurface()
 for name, value in DEFAULTS.items():
@@ -88,7 +88,7 @@ for name, (low, high) in RANGES.items():
     check(getattr(probe, "Get" + name)() == low, "%s clamps to %s" % (name, low))
     getattr(probe, "Set" + name)(type(high)(10**9))
     check(getattr(probe, "Get" + name)() == high, "%s clamps to %s" % (name, high))
-check("GroupFactor" in str(peel), "PrintSelf prints the parameters")
+check("GroupFactor" in str(peel) and "CaveLimit" in str(peel), "PrintSelf prints the parameters")
 
 n = 1000
 peel.SetInputData(fibonacci_sphere(n))

@@ -89,6 +89,34 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
       bucketStart[b + 1] = static_cast<int32_t>(bucketIds.size());
     }
   }
+  // The coordinates in the same bucket order, so that a query reads its candidates' coordinates
+  // contiguously (the same doubles, hence the same distances).
+  const int32_t bucketed = static_cast<int32_t>(bucketIds.size());
+  std::vector<double> bucketXYZ(3 * static_cast<size_t>(bucketed));
+  for (int32_t j = 0; j < bucketed; ++j)
+  {
+    std::copy_n(
+      xyz + 3 * static_cast<size_t>(bucketIds[j]), 3, &bucketXYZ[3 * static_cast<size_t>(j)]);
+  }
+  // The queries run in bucket order when the buckets hold every point once (always, for a
+  // locator built on these points): consecutive queries are then close in space, which keeps the
+  // carried radius apt and the buckets they read in cache. The order does not change the result.
+  bool bucketOrder = false;
+  if (bucketed == n)
+  {
+    std::vector<char> seen(static_cast<size_t>(n), 0);
+    bool permutation = true;
+    for (int32_t j = 0; j < n && permutation; ++j)
+    {
+      const int32_t id = bucketIds[j];
+      permutation = id >= 0 && id < n && !seen[id];
+      if (permutation)
+      {
+        seen[id] = 1;
+      }
+    }
+    bucketOrder = permutation;
+  }
   double spacing[3];
   locator->GetSpacing(spacing);
   const double* box = locator->GetBounds();
@@ -120,11 +148,17 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
     vtkSMPTools::For(first, last, [&](int32_t begin, int32_t end) {
       double& radius = radii.Local();
       std::vector<std::pair<double, int32_t>> found;
-      for (int32_t i = begin; i < end; ++i)
+      for (int32_t position = begin; position < end; ++position)
       {
+        const int32_t i = bucketOrder ? bucketIds[position] : position;
         const double* p = xyz + 3 * static_cast<size_t>(i);
+        // Only the candidates inside the ball are kept: once the ball holds more than k points,
+        // the k nearest others are inside it, ties at its radius included. After the last
+        // allowed growth (a degenerate cloud) every candidate is kept, as the ball may not hold
+        // k others.
         for (int attempt = 0;; ++attempt)
         {
+          const bool all = attempt > 200;
           found.clear();
           int lo[3], hi[3];
           for (int c = 0; c < 3; ++c)
@@ -143,12 +177,15 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
                   bx + divisions[0] * (by + static_cast<vtkIdType>(divisions[1]) * bz);
                 for (int32_t j = bucketStart[bucket]; j < bucketStart[bucket + 1]; ++j)
                 {
-                  const int32_t id = bucketIds[j];
-                  const double d2 = Distance2(p, xyz + 3 * static_cast<size_t>(id));
-                  inside += d2 <= r2 ? 1 : 0;
-                  if (id != i)
+                  const double d2 = Distance2(p, &bucketXYZ[3 * static_cast<size_t>(j)]);
+                  if (d2 <= r2 || all)
                   {
-                    found.emplace_back(d2, id);
+                    inside += d2 <= r2 ? 1 : 0;
+                    const int32_t id = bucketIds[j];
+                    if (id != i)
+                    {
+                      found.emplace_back(d2, id);
+                    }
                   }
                 }
               }

@@ -23,10 +23,12 @@ namespace pcs
 /// once from the locator (GetBucketIds) and the buckets a ball overlaps are walked directly on
 /// `xyz`, as FindPointsWithinRadius does but without its per-point virtual GetPoint and
 /// per-call BuildLocator checks (2.2x fewer instructions on a 2 x 10^4-point sphere). The
-/// result does not depend on those radii, nor on the number of threads (vtkSMPTools, in
-/// blocks). `progress` (optional)
-/// receives the fraction done between blocks; returning false stops the search (the function
-/// then returns false and the table is incomplete).
+/// coordinates are copied once in bucket order, the queries run in that order (neighbouring
+/// queries one after the other), and only the candidates inside the ball are kept for the
+/// partial sort. The result does not depend on those radii, on the query order, nor on the
+/// number of threads (vtkSMPTools, in blocks). `progress` (optional) receives the fraction done
+/// between blocks; returning false stops the search (the function then returns false and the
+/// table is incomplete).
 bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int32_t n, int k,
   std::vector<int32_t>& neighbors, const std::function<bool(double)>& progress = nullptr);
 

@@ -183,6 +183,7 @@ public:
   void Step3Status();
   void Step4Bridges();
   void Step6FillHoles(double begin, double end);
+  void RecordFill(const pcs::holes::FillResult& result);
   void InsertLostPoints(double begin, double end);
   void CloseSharpEars(int32_t start);
   void CloseSmallLoops();
@@ -1561,47 +1562,36 @@ void Reconstruction::Step6FillHoles(double begin, double end)
     pcs::holes::FillResult result;
     filler.Fill(this->X.data(), loop, vectors, candidates, result);
     // Add the triangles; undo the whole hole if the mesh would not stay a manifold.
-    added.clear();
-    bool ok = !result.Triangles.empty();
-    for (size_t t = 0; t < result.Triangles.size() && ok; t += 3)
+    if (result.Triangles.empty() ||
+      !this->Mesh.AddTriangles(result.Triangles.data(), result.Triangles.size() / 3, added))
     {
-      const int64_t id = this->Mesh.AddTriangle(
-        result.Triangles[t], result.Triangles[t + 1], result.Triangles[t + 2]);
-      ok = id >= 0;
-      if (ok)
-      {
-        added.push_back(id);
-      }
-    }
-    for (size_t t = 0; t < result.Triangles.size() && ok; ++t)
-    {
-      ok = this->Mesh.GetNumberOfFans(result.Triangles[t]) == 1;
-    }
-    if (!ok)
-    {
-      for (int64_t id : added)
-      {
-        this->Mesh.RemoveTriangle(id);
-      }
       ++this->HolesLeftOpen;
       continue;
     }
-    this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 6);
-    for (int32_t q : result.UsedPoints)
-    {
-      this->Status[q] = vtkGreedySurfaceTriangulation::LOST_USED_BY_HOLE_FILLING;
-    }
-    for (const auto& chord : result.Chords)
-    {
-      this->Links.push_back(chord);
-    }
-    this->Chords += static_cast<vtkIdType>(result.Chords.size());
+    this->RecordFill(result);
     ++this->HolesFilled;
     if (!result.Complete)
     {
       ++this->HolesLeftOpen; // partly filled
     }
   }
+}
+
+//------------------------------------------------------------------------------------------------
+// Bookkeeping of a fill kept in the mesh: its triangles are step 6's, its lost points are used by
+// hole filling, its chords join the step 7 swap candidates.
+void Reconstruction::RecordFill(const pcs::holes::FillResult& result)
+{
+  this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 6);
+  for (int32_t q : result.UsedPoints)
+  {
+    this->Status[q] = vtkGreedySurfaceTriangulation::LOST_USED_BY_HOLE_FILLING;
+  }
+  for (const auto& chord : result.Chords)
+  {
+    this->Links.push_back(chord);
+  }
+  this->Chords += static_cast<vtkIdType>(result.Chords.size());
 }
 
 //------------------------------------------------------------------------------------------------
@@ -2041,40 +2031,12 @@ void Reconstruction::CloseSmallLoops()
       }
       ++this->LoopsFilledByDihedral;
     }
-    added.clear();
-    bool ok = !result.Triangles.empty();
-    for (size_t t = 0; t < result.Triangles.size() && ok; t += 3)
+    if (result.Triangles.empty() ||
+      !this->Mesh.AddTriangles(result.Triangles.data(), result.Triangles.size() / 3, added))
     {
-      const int64_t id = this->Mesh.AddTriangle(
-        result.Triangles[t], result.Triangles[t + 1], result.Triangles[t + 2]);
-      ok = id >= 0;
-      if (ok)
-      {
-        added.push_back(id);
-      }
-    }
-    for (size_t t = 0; t < result.Triangles.size() && ok; ++t)
-    {
-      ok = this->Mesh.GetNumberOfFans(result.Triangles[t]) == 1;
-    }
-    if (!ok)
-    {
-      for (int64_t id : added)
-      {
-        this->Mesh.RemoveTriangle(id);
-      }
       continue;
     }
-    this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 6);
-    for (int32_t q : result.UsedPoints)
-    {
-      this->Status[q] = vtkGreedySurfaceTriangulation::LOST_USED_BY_HOLE_FILLING;
-    }
-    for (const auto& chord : result.Chords)
-    {
-      this->Links.push_back(chord);
-    }
-    this->Chords += static_cast<vtkIdType>(result.Chords.size());
+    this->RecordFill(result);
     ++this->LoopsClosed;
   }
 }

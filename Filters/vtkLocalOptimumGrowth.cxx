@@ -1254,29 +1254,17 @@ bool Grower::FillHole(const std::vector<Id>& frontLoop)
       return false;
     }
   }
-  std::vector<int64_t> added;
-  bool ok = true;
-  for (size_t t = 0; ok && t + 2 < result.Triangles.size(); t += 3)
+  for (size_t t = 0; t + 2 < result.Triangles.size(); t += 3)
   {
     const Id* v = &result.Triangles[t];
-    ok = !pcs::projected::Collinear(this->P3(v[0]), this->P3(v[1]), this->P3(v[2]));
-    const int64_t id = ok ? this->Mesh.AddTriangle(v[0], v[1], v[2]) : -1;
-    ok = ok && id >= 0;
-    if (ok)
+    if (pcs::projected::Collinear(this->P3(v[0]), this->P3(v[1]), this->P3(v[2])))
     {
-      added.push_back(id);
+      return false;
     }
   }
-  for (size_t t = 0; ok && t < result.Triangles.size(); ++t)
+  std::vector<int64_t> added;
+  if (!this->Mesh.AddTriangles(result.Triangles.data(), result.Triangles.size() / 3, added))
   {
-    ok = this->Mesh.GetNumberOfFans(result.Triangles[t]) == 1;
-  }
-  if (!ok)
-  {
-    for (auto it = added.rbegin(); it != added.rend(); ++it)
-    {
-      this->Mesh.RemoveTriangle(*it);
-    }
     return false;
   }
   for (Id q : result.UsedPoints)

@@ -376,6 +376,34 @@ int64_t SurfaceMesh::AddTriangle(int32_t a, int32_t b, int32_t c)
   return t;
 }
 
+bool SurfaceMesh::AddTriangles(const int32_t* vertices, size_t count, std::vector<int64_t>& added)
+{
+  added.clear();
+  bool ok = true;
+  for (size_t t = 0; t < count && ok; ++t)
+  {
+    const int32_t* v = vertices + 3 * t;
+    const int64_t id = this->AddTriangle(v[0], v[1], v[2]);
+    ok = id >= 0;
+    if (ok)
+    {
+      added.push_back(id);
+    }
+  }
+  for (size_t i = 0; i < 3 * count && ok; ++i)
+  {
+    ok = this->GetNumberOfFans(vertices[i]) == 1;
+  }
+  if (!ok)
+  {
+    for (auto it = added.rbegin(); it != added.rend(); ++it)
+    {
+      this->RemoveTriangle(*it);
+    }
+  }
+  return ok;
+}
+
 void SurfaceMesh::RemoveTriangle(int64_t t)
 {
   if (t < 0 || t >= this->GetNumberOfTriangleIds() || this->IsTriangleRemoved(t))

@@ -112,6 +112,14 @@ public:
   /// half-edge is used).
   int64_t AddTriangle(int32_t a, int32_t b, int32_t c);
 
+  /// Add the `count` oriented triangles of `vertices` (3 ids each) together, as one change: a
+  /// vertex may be pinched between two of the additions (a fan closed by its last triangle), but
+  /// when AddTriangle refuses one of them or, once all are in, one of their vertices has more
+  /// than one fan, the triangles added are removed again and false is returned (the structure
+  /// is as before). The ids of the triangles added are written to `added` (cleared first); no
+  /// triangle (count 0) is a success that changes nothing.
+  bool AddTriangles(const int32_t* vertices, size_t count, std::vector<int64_t>& added);
+
   /// Remove triangle t (no-op when already removed). The structure is exactly as if t had
   /// never been added (except that its id stays unused).
   void RemoveTriangle(int64_t t);

@@ -391,6 +391,35 @@ void TestReverseComponent()
     EXPECT(mesh.GetNumberOfFans(v) == 1, "manifold vertex " << v);
   }
 }
+
+// AddTriangles: a fan added in an order that pinches its centre until the last triangle is
+// accepted; a set that leaves a vertex with two fans is refused and the mesh is unchanged.
+void TestAddTriangles()
+{
+  // Hexagon 1..6 around centre 0, triangles (0, i, i + 1); (0, 1, 2) and (0, 4, 5) first, so 0
+  // has two fans until the others close its fan.
+  SurfaceMesh mesh(7);
+  std::vector<int64_t> added;
+  const int32_t fan[] = { 0, 1, 2, 0, 4, 5, 0, 2, 3, 0, 3, 4, 0, 5, 6, 0, 6, 1 };
+  EXPECT(mesh.AddTriangles(fan, 6, added), "a closed fan is accepted whatever the order");
+  EXPECT(added.size() == 6 && mesh.GetNumberOfTriangles() == 6, "six triangles added");
+  EXPECT(mesh.GetNumberOfFans(0) == 1, "the centre has one fan");
+  ExpectConsistent(mesh, "fan");
+
+  SurfaceMesh pinch(7);
+  const int32_t two[] = { 0, 1, 2, 0, 4, 5 };
+  EXPECT(!pinch.AddTriangles(two, 2, added), "two fans at vertex 0 are refused");
+  EXPECT(pinch.GetNumberOfTriangles() == 0 && pinch.GetNumberOfBoundaryHalfEdges() == 0 &&
+      pinch.GetNumberOfFans(0) == 0,
+    "the refused set leaves the mesh empty");
+  ExpectConsistent(pinch, "refused pinch");
+
+  // A half-edge used twice: the second triangle is refused, the first removed again.
+  const int32_t twice[] = { 0, 1, 2, 0, 1, 3 };
+  EXPECT(!pinch.AddTriangles(twice, 2, added), "a repeated half-edge is refused");
+  EXPECT(pinch.GetNumberOfTriangles() == 0, "nothing left after the refusal");
+  EXPECT(pinch.AddTriangles(twice, 0, added) && added.empty(), "no triangle: success, no change");
+}
 } // namespace
 
 int main()
@@ -400,6 +429,7 @@ int main()
   TestGridLoops();
   TestTorusAndRemoval();
   TestReverseComponent();
+  TestAddTriangles();
   std::cout << Checks << " checks, " << Failures << " failures" << std::endl;
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -48,6 +48,15 @@ def fibonacci_sphere(n, cap_degrees=0.0):
     return cloud
 
 
+def cloud_from_array(xyz):
+    """A vtkPolyData of the points of an (n, 3) array (no cells)."""
+    cloud = vtkPolyData()
+    points = vtkPoints()
+    points.SetData(numpy_to_vtk(numpy.ascontiguousarray(xyz, dtype=float), deep=1))
+    cloud.SetPoints(points)
+    return cloud
+
+
 def quality(mesh):
     q = vtkReconstructionQuality()
     q.SetInputData(mesh)
@@ -168,10 +177,7 @@ for seed in range(6):
             xyz = numpy.c_[(1 + 0.35 * numpy.cos(b)) * numpy.cos(a),
                            (1 + 0.35 * numpy.cos(b)) * numpy.sin(a), 0.35 * numpy.sin(b)]
         xyz = xyz + rng.normal(scale=0.125 * math.sqrt(4 * math.pi / count), size=xyz.shape)
-        cloud = vtkPolyData()
-        cloud_points = vtkPoints()
-        cloud_points.SetData(numpy_to_vtk(numpy.ascontiguousarray(xyz), deep=1))
-        cloud.SetPoints(cloud_points)
+        cloud = cloud_from_array(xyz)
         noisy = vtkGreedySurfaceTriangulation()
         noisy.SetInputData(cloud)
         noisy.Update()
@@ -201,10 +207,7 @@ if words:
     nv, nf = int(words[1]), int(words[2])
     xyz = numpy.array(words[4:4 + 3 * nv], dtype=float).reshape(-1, 3)
     check(nv - nf // 2 == 2 and nf == 2 * nv - 4, "camel.off: closed genus 0 (V %d F %d)" % (nv, nf))
-    cloud = vtkPolyData()
-    cloud_points = vtkPoints()
-    cloud_points.SetData(numpy_to_vtk(numpy.ascontiguousarray(xyz), deep=1))
-    cloud.SetPoints(cloud_points)
+    cloud = cloud_from_array(xyz)
     camel = vtkGreedySurfaceTriangulation()
     camel.SetInputData(cloud)
     camel.Update()

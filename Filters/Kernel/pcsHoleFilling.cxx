@@ -1,6 +1,7 @@
 #include "pcsHoleFilling.h"
 
 #include "pcsPredicates.h"
+#include "pcsProjectedTests.h"
 
 #include "vtkMath.h"
 
@@ -881,6 +882,120 @@ bool HoleFiller::Fill(const double* xyz, const std::vector<int32_t>& loop,
   std::vector<char> taken(candidates.size(), 0);
   result.Complete = this->FillPiece(xyz, piece, taken, candidates, result, 0);
   return !result.Triangles.empty();
+}
+
+//------------------------------------------------------------------------------------------------
+// Triangulation of a loop by its own vertices (vtkGreedySurfaceTriangulation's fallback when the
+// projected fill fails): the triangulation of the loop polygon (its vertices only) that minimises
+// first the largest dihedral angle (between adjacent fill triangles, and between a fill triangle
+// and the mesh triangle across a loop edge) and then the area, by dynamic programming over the
+// sub-polygons (Liepa, "Filling Holes in Meshes", SGP 2003, section 3.1). A diagonal that is an
+// edge of the mesh already and an exactly degenerate triangle are forbidden. `across(e)` gives the
+// unit normal of the mesh triangle on the loop edge loop[e] -> loop[e + 1] (false when none).
+// Triangles in loop order are appended to `triangles`; the largest dihedral angle (radians) is
+// returned, or a negative value when there is no triangulation (or the loop has more than 400
+// vertices: the cost is cubic).
+double LeastDihedralFill(const double* xyz, const std::vector<int32_t>& loop,
+  const std::function<bool(int32_t, int32_t)>& edgeExists,
+  const std::function<bool(int, double[3])>& across, std::vector<int32_t>& triangles)
+{
+  const int n = static_cast<int>(loop.size());
+  if (n < 3 || n > 400)
+  {
+    return -1.0;
+  }
+  const double inf = std::numeric_limits<double>::infinity();
+  auto at = [n](int i, int j) { return static_cast<size_t>(i) * n + j; };
+  std::vector<double> angle(static_cast<size_t>(n) * n, inf), area(angle);
+  std::vector<int> best(static_cast<size_t>(n) * n, -1);
+  auto point = [&](int i) { return xyz + 3 * static_cast<size_t>(loop[i]); };
+  auto unitNormal = [&](int a, int b, int c, double nrm[3]) {
+    double u[3], v[3];
+    vtkMath::Subtract(point(b), point(a), u);
+    vtkMath::Subtract(point(c), point(a), v);
+    vtkMath::Cross(u, v, nrm);
+    return 0.5 * vtkMath::Normalize(nrm);
+  };
+  auto between = [](const double a[3], const double b[3]) {
+    return std::acos(std::max(-1.0, std::min(1.0, vtkMath::Dot(a, b))));
+  };
+  // The normal of the triangle on the side (i, j) of the sub-polygon i..j (j = i + 1: the mesh).
+  auto side = [&](int i, int j, double nrm[3]) {
+    if (j == i + 1)
+    {
+      return across(i, nrm);
+    }
+    unitNormal(i, best[at(i, j)], j, nrm);
+    return true;
+  };
+  for (int i = 0; i + 1 < n; ++i)
+  {
+    angle[at(i, i + 1)] = 0.0;
+    area[at(i, i + 1)] = 0.0;
+  }
+  for (int span = 2; span < n; ++span)
+  {
+    for (int i = 0; i + span < n; ++i)
+    {
+      const int j = i + span;
+      // (i, j) is a diagonal unless it is the loop edge (0, n - 1).
+      const bool outer = i == 0 && j == n - 1;
+      if (!outer && edgeExists && edgeExists(loop[i], loop[j]))
+      {
+        continue;
+      }
+      for (int k = i + 1; k < j; ++k)
+      {
+        if (!(angle[at(i, k)] < inf && angle[at(k, j)] < inf) ||
+          pcs::projected::Collinear(point(i), point(k), point(j)))
+        {
+          continue;
+        }
+        double nrm[3], other[3];
+        const double a = area[at(i, k)] + area[at(k, j)] + unitNormal(i, k, j, nrm);
+        double worst = std::max(angle[at(i, k)], angle[at(k, j)]);
+        if (side(i, k, other))
+        {
+          worst = std::max(worst, between(nrm, other));
+        }
+        if (side(k, j, other))
+        {
+          worst = std::max(worst, between(nrm, other));
+        }
+        if (outer && across(n - 1, other))
+        {
+          worst = std::max(worst, between(nrm, other));
+        }
+        // Lexicographic: the largest angle first (ties within 1e-9 radians), then the area.
+        const double current = angle[at(i, j)];
+        if (worst < current - 1e-9 || (worst <= current + 1e-9 && a < area[at(i, j)]))
+        {
+          angle[at(i, j)] = worst;
+          area[at(i, j)] = a;
+          best[at(i, j)] = k;
+        }
+      }
+    }
+  }
+  if (best[at(0, n - 1)] < 0)
+  {
+    return -1.0;
+  }
+  std::vector<std::array<int, 2>> stack{ { 0, n - 1 } };
+  while (!stack.empty())
+  {
+    const auto range = stack.back();
+    stack.pop_back();
+    const int k = best[at(range[0], range[1])];
+    if (k < 0)
+    {
+      continue; // a loop edge
+    }
+    triangles.insert(triangles.end(), { loop[range[0]], loop[k], loop[range[1]] });
+    stack.push_back({ range[0], k });
+    stack.push_back({ k, range[1] });
+  }
+  return angle[at(0, n - 1)];
 }
 
 } // namespace holes

@@ -147,6 +147,20 @@ private:
     const std::vector<double>* uv, Piece& first, Piece& second) const;
 };
 
+/// Triangulation of a loop by its own vertices (vtkGreedySurfaceTriangulation's fallback when the
+/// projected fill fails): the triangulation of the loop polygon (its vertices only) that minimises
+/// first the largest dihedral angle (between adjacent fill triangles, and between a fill triangle
+/// and the mesh triangle across a loop edge) and then the area, by dynamic programming over the
+/// sub-polygons (Liepa, "Filling Holes in Meshes", SGP 2003, section 3.1). A diagonal that is an
+/// edge of the mesh already and an exactly degenerate triangle are forbidden. `across(e)` gives the
+/// unit normal of the mesh triangle on the loop edge loop[e] -> loop[e + 1] (false when none).
+/// Triangles in loop order are appended to `triangles`; the largest dihedral angle (radians) is
+/// returned, or a negative value when there is no triangulation (or the loop has more than 400
+/// vertices: the cost is cubic).
+double LeastDihedralFill(const double* xyz, const std::vector<int32_t>& loop,
+  const std::function<bool(int32_t, int32_t)>& edgeExists,
+  const std::function<bool(int, double[3])>& across, std::vector<int32_t>& triangles);
+
 } // namespace holes
 } // namespace pcs
 

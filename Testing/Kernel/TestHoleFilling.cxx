@@ -487,11 +487,70 @@ void TestHoleFiller()
 }
 } // namespace
 
+// LeastDihedralFill on loops whose answer is known by construction.
+void TestLeastDihedralFill()
+{
+  const auto noAcross = [](int, double[3]) { return false; };
+  // A convex planar hexagon, counter-clockwise in the xy plane: 4 triangles, all facing +z, every
+  // dihedral angle 0.
+  std::vector<double> xyz;
+  std::vector<int32_t> loop;
+  for (int i = 0; i < 6; ++i)
+  {
+    const double a = 2.0 * std::acos(-1.0) * i / 6.0;
+    xyz.insert(xyz.end(), { std::cos(a), std::sin(a), 0.0 });
+    loop.push_back(i);
+  }
+  std::vector<int32_t> triangles;
+  double worst = pcs::holes::LeastDihedralFill(xyz.data(), loop, nullptr, noAcross, triangles);
+  CHECK(triangles.size() == 12, "hexagon: %d triangles, expected 4",
+    static_cast<int>(triangles.size() / 3));
+  CHECK(worst >= 0.0 && worst < 1e-9, "hexagon: largest dihedral angle %g, expected 0", worst);
+  for (size_t t = 0; t + 2 < triangles.size(); t += 3)
+  {
+    const double* p = &xyz[3 * triangles[t]];
+    const double* q = &xyz[3 * triangles[t + 1]];
+    const double* r = &xyz[3 * triangles[t + 2]];
+    const double z = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+    CHECK(z > 0, "hexagon: triangle %d does not face +z", static_cast<int>(t / 3));
+  }
+  // A square whose diagonal 0-2 is a mesh edge already: the fill must use the diagonal 1-3.
+  const double square[] = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
+  const std::vector<int32_t> four = { 0, 1, 2, 3 };
+  const auto diagonal02 = [](int32_t a, int32_t b)
+  { return (a == 0 && b == 2) || (a == 2 && b == 0); };
+  triangles.clear();
+  worst = pcs::holes::LeastDihedralFill(square, four, diagonal02, noAcross, triangles);
+  CHECK(worst >= 0.0 && triangles.size() == 6, "square: 2 triangles expected");
+  for (size_t t = 0; t + 2 < triangles.size(); t += 3)
+  {
+    const bool has0 = triangles[t] == 0 || triangles[t + 1] == 0 || triangles[t + 2] == 0;
+    const bool has2 = triangles[t] == 2 || triangles[t + 1] == 2 || triangles[t + 2] == 2;
+    CHECK(!(has0 && has2), "square: the existing edge 0-2 was used again");
+  }
+  // Three collinear vertices (0, 1, 2) and an apex: the degenerate triangle (0, 1, 2) is
+  // forbidden, so both triangles use the apex 3.
+  const double flat[] = { 0, 0, 0, 1, 0, 0, 2, 0, 0, 1, 1, 0 };
+  triangles.clear();
+  worst = pcs::holes::LeastDihedralFill(flat, four, nullptr, noAcross, triangles);
+  CHECK(worst >= 0.0 && triangles.size() == 6, "collinear: 2 triangles expected");
+  for (size_t t = 0; t + 2 < triangles.size(); t += 3)
+  {
+    CHECK(triangles[t] == 3 || triangles[t + 1] == 3 || triangles[t + 2] == 3,
+      "collinear: a triangle without the apex");
+  }
+  // A loop of two vertices has no triangulation.
+  triangles.clear();
+  CHECK(pcs::holes::LeastDihedralFill(flat, { 0, 1 }, nullptr, noAcross, triangles) < 0,
+    "two vertices: no triangulation");
+}
+
 int main()
 {
   TestPolygonPredicates();
   TestGreedy2D();
   TestHoleFiller();
+  TestLeastDihedralFill();
   std::printf("%d failure(s)\n", Failures);
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

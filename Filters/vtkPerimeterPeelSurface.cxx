@@ -446,10 +446,9 @@ public:
       // The Euler characteristic of the boundary drops when a handle opens, stays when the
       // topology does, and grows when a handle closes (a bridge goes) or a component splits off:
       // the last is refused (the solid must stay connected around the group), and so is a handle
-      // opened by a short group (at most 8 cells) that the start facet does not clearly show:
-      // the spurious handles of dense sphere samples were tunnels of 3-5 cells between two dents
-      // (10^5 points: starting at facets 4.0-4.8 times the threshold); the torus holes of the
-      // tests start at 11-26 times or take 16-128 cells.
+      // opened by a short group (at most 8 cells) whose start facet is not over handleThreshold
+      // (HandleFactor; by default every group start passes: the short groups punch the webs of
+      // flat tetrahedra left across concave regions, see the class docs).
       const int64_t after = this->BoundaryEuler();
       for (int64_t g : this->Group)
       {
@@ -1033,8 +1032,10 @@ int vtkPerimeterPeelSurface::RequestData(
   // GroupFactor is a ratio of lengths: squared for the area measure.
   const double groupFactor =
     this->GroupFactor * (this->FacetMeasure == AREA ? this->GroupFactor : 1.0);
-  // A group that opens a handle needs a start facet twice as clear (rule 3 of the class docs).
-  const double handleFactor = groupFactor * (this->FacetMeasure == AREA ? 4.0 : 2.0);
+  // A short group that opens a handle needs a start facet over HandleFactor x GroupFactor x
+  // threshold (rule 3 of the class docs; a ratio of lengths, squared for the area measure).
+  const double handleFactor =
+    groupFactor * this->HandleFactor * (this->FacetMeasure == AREA ? this->HandleFactor : 1.0);
   // The cave limit (rule 4 of the class docs): the measure of an equilateral triangle of
   // perimeter CaveLimit local spacings; -1 (never reached) without relative measures or when 0.
   double caveLimit = -1.0;
@@ -1282,6 +1283,7 @@ void vtkPerimeterPeelSurface::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ThresholdFactor: " << this->ThresholdFactor << "\n";
   os << indent << "GroupFactor: " << this->GroupFactor << "\n";
+  os << indent << "HandleFactor: " << this->HandleFactor << "\n";
   os << indent << "CaveLimit: " << this->CaveLimit << "\n";
   os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
   os << indent << "Threshold: " << this->Threshold << "\n";

@@ -280,6 +280,8 @@ int main(int argc, char* argv[])
         greedy->SetInsertLostPoints(value != 0.0);
       else if (name == "FairHoleFills")
         greedy->SetFairHoleFills(value != 0.0);
+      else if (name == "CapOpenEnds")
+        greedy->SetCapOpenEnds(value != 0.0);
       else
       {
         std::cerr << "unknown parameter " << name << std::endl;

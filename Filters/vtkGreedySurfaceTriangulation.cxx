@@ -53,6 +53,10 @@ namespace
 {
 constexpr double Pi = 3.14159265358979323846;
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
+// CapOpenEnds: a loop is capped when its piece's area is at least this multiple of the area the
+// loop spans (twice a hemisphere bowl's), by a least-dihedral fill folding at most this much.
+constexpr double CapAreaRatio = 4.0;
+constexpr double MaximumCapDihedral = 150.0; // degrees
 // Point ids are 32-bit in the kernels (pcs::SurfaceMesh).
 constexpr vtkIdType MaximumNumberOfPoints = 500000000;
 
@@ -163,7 +167,7 @@ public:
   // Counts.
   vtkIdType LostPoints = 0, Islands = 0, Holes = 0, Bridges = 0, Chords = 0, HolesFilled = 0,
             HolesLeftOpen = 0, Swaps = 0, Inserted = 0, Added = 0, LoopsClosed = 0,
-            LoopsFilledByDihedral = 0;
+            LoopsFilledByDihedral = 0, EndsCapped = 0;
   bool Aborted = false;
 
   const double* P(int32_t i) const { return &this->X[3 * static_cast<size_t>(i)]; }
@@ -187,6 +191,9 @@ public:
   void InsertLostPoints(double begin, double end);
   void CloseSharpEars(int32_t start);
   void CloseSmallLoops();
+  bool FillOpenLoop(const pcs::holes::HoleFiller& filler, const std::vector<int32_t>& loop,
+    const double centre[3], double radius, double maximumDihedral, bool& byDihedral);
+  void CapOpenEnds();
   void Step7Swaps();
   void OrientOutwards();
   void RefineAndFairFills(std::vector<int32_t>& triangles, std::vector<uint8_t>& stages,
@@ -1829,10 +1836,7 @@ void Reconstruction::CloseSmallLoops()
   filler.AuxiliaryDistance = this->Self->GetAuxiliaryPointDistance() * this->Spacing;
   filler.MaximumGreedyPoints = this->Self->GetMaximumHolePoints();
   filler.EdgeExists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
-  vtkNew<vtkIdList> near;
-  std::vector<int32_t> loop, candidates;
-  std::vector<double> vectors;
-  std::vector<int64_t> added;
+  std::vector<int32_t> loop;
   for (const auto& front : loops)
   {
     if (front.size() < 3)
@@ -1871,60 +1875,189 @@ void Reconstruction::CloseSmallLoops()
     {
       continue;
     }
-    vectors.clear();
-    for (int32_t v : loop)
+    bool byDihedral = false;
+    if (this->FillOpenLoop(filler, loop, centre, radius,
+          vtkMath::RadiansFromDegrees(this->Self->GetMaximumNormalDeviation()), byDihedral))
     {
-      const double* I = &this->EdgeVectors[3 * static_cast<size_t>(v)];
-      vectors.insert(vectors.end(), I, I + 3);
+      ++this->LoopsClosed;
+      this->LoopsFilledByDihedral += byDihedral ? 1 : 0;
     }
-    candidates.clear();
-    this->Locator->FindPointsWithinRadius(radius, centre, near);
-    for (vtkIdType j = 0; j < near->GetNumberOfIds(); ++j)
+  }
+}
+
+// The fill of a loop left open after step 6 (`loop` reversed, as a hole; no vertex twice): steps
+// 5 and 6 with the lost points within `radius` of `centre`; when that fill is incomplete, the
+// loop's triangulation of least largest dihedral angle on its own vertices, kept when that angle
+// (the mesh triangles across the loop included) is at most `maximumDihedral` (radians). The
+// triangles are added as one change, refused as a whole when they would break the manifold.
+// True when the loop was closed; `byDihedral` tells which fill closed it.
+bool Reconstruction::FillOpenLoop(const pcs::holes::HoleFiller& filler,
+  const std::vector<int32_t>& loop, const double centre[3], double radius, double maximumDihedral,
+  bool& byDihedral)
+{
+  byDihedral = false;
+  std::vector<double> vectors;
+  for (int32_t v : loop)
+  {
+    const double* I = &this->EdgeVectors[3 * static_cast<size_t>(v)];
+    vectors.insert(vectors.end(), I, I + 3);
+  }
+  std::vector<int32_t> candidates;
+  vtkNew<vtkIdList> near;
+  this->Locator->FindPointsWithinRadius(radius, centre, near);
+  for (vtkIdType j = 0; j < near->GetNumberOfIds(); ++j)
+  {
+    const int32_t q = static_cast<int32_t>(near->GetId(j));
+    if (this->Status[q] == vtkGreedySurfaceTriangulation::LOST && this->Mesh.IsFree(q))
     {
-      const int32_t q = static_cast<int32_t>(near->GetId(j));
-      if (this->Status[q] == vtkGreedySurfaceTriangulation::LOST && this->Mesh.IsFree(q))
+      candidates.push_back(q);
+    }
+  }
+  std::sort(candidates.begin(), candidates.end());
+  pcs::holes::FillResult result;
+  filler.Fill(this->X.data(), loop, vectors, candidates, result);
+  if (!result.Complete)
+  {
+    // A partial fill would leave a more ragged loop: the triangulation of the loop of least
+    // largest dihedral angle instead (no lost point used).
+    result = pcs::holes::FillResult();
+    auto across = [this, &loop](int e, double nrm[3]) {
+      const int32_t a = loop[e], b = loop[(e + 1) % loop.size()];
+      const int32_t x = this->Mesh.OppositeVertex(b, a); // the mesh triangle (b, a, x)
+      if (x < 0)
       {
-        candidates.push_back(q);
+        return false;
       }
-    }
-    std::sort(candidates.begin(), candidates.end());
-    pcs::holes::FillResult result;
-    filler.Fill(this->X.data(), loop, vectors, candidates, result);
-    if (!result.Complete)
+      double u[3], v[3];
+      vtkMath::Subtract(this->P(a), this->P(b), u);
+      vtkMath::Subtract(this->P(x), this->P(b), v);
+      vtkMath::Cross(u, v, nrm);
+      return vtkMath::Normalize(nrm) > 0.0;
+    };
+    const double worst =
+      pcs::holes::LeastDihedralFill(this->X.data(), loop, filler.EdgeExists, across, result.Triangles);
+    if (!(worst >= 0.0 && worst <= maximumDihedral))
     {
-      // A partial fill would leave a more ragged loop: the triangulation of the loop of least
-      // largest dihedral angle instead (no lost point used), when that angle is within
-      // MaximumNormalDeviation (the umbrella test's bound on the normals around a point).
-      result = pcs::holes::FillResult();
-      auto across = [this, &loop](int e, double nrm[3]) {
-        const int32_t a = loop[e], b = loop[(e + 1) % loop.size()];
-        const int32_t x = this->Mesh.OppositeVertex(b, a); // the mesh triangle (b, a, x)
-        if (x < 0)
-        {
-          return false;
-        }
-        double u[3], v[3];
-        vtkMath::Subtract(this->P(a), this->P(b), u);
-        vtkMath::Subtract(this->P(x), this->P(b), v);
-        vtkMath::Cross(u, v, nrm);
-        return vtkMath::Normalize(nrm) > 0.0;
-      };
-      const double worst =
-        pcs::holes::LeastDihedralFill(this->X.data(), loop, filler.EdgeExists, across, result.Triangles);
-      if (!(worst >= 0.0 &&
-            worst <= vtkMath::RadiansFromDegrees(this->Self->GetMaximumNormalDeviation())))
-      {
-        continue;
-      }
-      ++this->LoopsFilledByDihedral;
+      return false;
     }
-    if (result.Triangles.empty() ||
-      !this->Mesh.AddTriangles(result.Triangles.data(), result.Triangles.size() / 3, added))
+    byDihedral = true;
+  }
+  std::vector<int64_t> added;
+  if (result.Triangles.empty() ||
+    !this->Mesh.AddTriangles(result.Triangles.data(), result.Triangles.size() / 3, added))
+  {
+    return false;
+  }
+  this->RecordFill(result);
+  return true;
+}
+
+//------------------------------------------------------------------------------------------------
+// After the small loops (CapOpenEnds): a loop still open is the cut end of a tube or of a part
+// separated from a closed object (an ear behind a removed band, a leg cut from its body) rather
+// than the border of an open surface when its piece of mesh is much larger than the area the
+// loop spans: the piece's area is at least CapAreaRatio times the norm of the loop's vector area
+// (the flat disc it bounds). The outer border of an open surface spans about its piece (a flat
+// sheet 1, a half cylinder pi / 2, a hemisphere bowl 2), a tube end reaching h beyond a
+// hemisphere of the rim's radius r gives 2 + 2 h / r, and a narrow slit going back along itself
+// spans almost nothing. Such a loop whose diameter is at most MaximumHoleDiameter is closed like
+// a small loop, its least-dihedral fallback kept up to MaximumCapDihedral: a cap meets the tube's
+// wall at about 90 degrees, more where the cut is ragged.
+void Reconstruction::CapOpenEnds()
+{
+  if (!this->Self->GetFillHoles() || !this->Self->GetCapOpenEnds())
+  {
+    return;
+  }
+  const double diameterLimit = this->Self->GetMaximumHoleDiameter() * this->Spacing;
+  std::vector<std::vector<int32_t>> loops;
+  this->Mesh.GetBoundaryLoops(loops);
+  if (loops.empty())
+  {
+    return;
+  }
+  // Connected pieces of the mesh (through shared vertices) and their areas.
+  std::vector<int32_t> parent(static_cast<size_t>(this->N));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&parent](int32_t x) {
+    while (parent[x] != x)
+    {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  };
+  const int64_t ids = this->Mesh.GetNumberOfTriangleIds();
+  for (int64_t t = 0; t < ids; ++t)
+  {
+    if (!this->Mesh.IsTriangleRemoved(t))
+    {
+      const int32_t* tri = this->Mesh.GetTriangle(t);
+      parent[find(tri[1])] = find(tri[0]);
+      parent[find(tri[2])] = find(tri[0]);
+    }
+  }
+  std::vector<double> area(static_cast<size_t>(this->N), 0.0);
+  for (int64_t t = 0; t < ids; ++t)
+  {
+    if (!this->Mesh.IsTriangleRemoved(t))
+    {
+      const int32_t* tri = this->Mesh.GetTriangle(t);
+      double u[3], v[3], n[3];
+      vtkMath::Subtract(this->P(tri[1]), this->P(tri[0]), u);
+      vtkMath::Subtract(this->P(tri[2]), this->P(tri[0]), v);
+      vtkMath::Cross(u, v, n);
+      area[find(tri[0])] += 0.5 * vtkMath::Norm(n);
+    }
+  }
+  pcs::holes::HoleFiller filler;
+  filler.AuxiliaryDistance = this->Self->GetAuxiliaryPointDistance() * this->Spacing;
+  filler.MaximumGreedyPoints = this->Self->GetMaximumHolePoints();
+  filler.EdgeExists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
+  std::vector<int32_t> loop, sorted;
+  for (const auto& front : loops)
+  {
+    if (front.size() < 3)
     {
       continue;
     }
-    this->RecordFill(result);
-    ++this->LoopsClosed;
+    // Reversed: the fill traverses the boundary edges against the mesh (as in step 6). A loop
+    // touching itself at a vertex is left open.
+    loop.assign(front.rbegin(), front.rend());
+    sorted = loop;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    {
+      continue;
+    }
+    double centre[3] = { 0, 0, 0 };
+    for (int32_t v : loop)
+    {
+      vtkMath::Add(centre, this->P(v), centre);
+    }
+    vtkMath::MultiplyScalar(centre, 1.0 / loop.size());
+    double radius = 0.0, spanned[3] = { 0, 0, 0 };
+    for (size_t i = 0; i < loop.size(); ++i)
+    {
+      radius = std::max(radius, Distance(centre, this->P(loop[i])));
+      double a[3], b[3], c[3];
+      vtkMath::Subtract(this->P(loop[i]), centre, a);
+      vtkMath::Subtract(this->P(loop[(i + 1) % loop.size()]), centre, b);
+      vtkMath::Cross(a, b, c);
+      vtkMath::Add(spanned, c, spanned);
+    }
+    if (2 * radius > diameterLimit ||
+      !(area[find(loop[0])] >= CapAreaRatio * 0.5 * vtkMath::Norm(spanned)))
+    {
+      continue;
+    }
+    bool byDihedral = false;
+    if (this->FillOpenLoop(
+          filler, loop, centre, radius, vtkMath::RadiansFromDegrees(MaximumCapDihedral), byDihedral))
+    {
+      ++this->EndsCapped;
+      this->LoopsFilledByDihedral += byDihedral ? 1 : 0;
+    }
   }
 }
 
@@ -2708,6 +2841,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
     pcs::AddFieldCount(fd, "NumberOfAddedPoints", r.Added);
     pcs::AddFieldCount(fd, "NumberOfSmallLoopsClosed", r.LoopsClosed);
     pcs::AddFieldCount(fd, "NumberOfSmallLoopsFilledByDihedral", r.LoopsFilledByDihedral);
+    pcs::AddFieldCount(fd, "NumberOfEndsCapped", r.EndsCapped);
     pcs::AddFieldCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
     pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", duplicates);
     pcs::AddFieldCount(fd, "NumberOfSkippedPoints", skipped);
@@ -2944,6 +3078,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
     return finish();
   }
   r.CloseSmallLoops();
+  r.CapOpenEnds();
   r.Step7Swaps();
   if (r.Bridges + r.Chords > 0)
   {
@@ -3085,6 +3220,7 @@ void vtkGreedySurfaceTriangulation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SwapBridgeEdges: " << this->SwapBridgeEdges << "\n";
   os << indent << "InsertLostPoints: " << this->InsertLostPoints << "\n";
   os << indent << "FairHoleFills: " << this->FairHoleFills << "\n";
+  os << indent << "CapOpenEnds: " << this->CapOpenEnds << "\n";
   os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";
   os << indent << "NumberOfLostPoints: " << this->NumberOfLostPoints << "\n";
   os << indent << "NumberOfIslands: " << this->NumberOfIslands << "\n";

@@ -122,6 +122,25 @@
  *   400 vertices), no diagonal on an existing edge; it is kept when that angle, the mesh
  *   triangles across the loop included, is at most MaximumNormalDeviation. Counted in
  *   NumberOfSmallLoopsClosed, the fallback also in NumberOfSmallLoopsFilledByDihedral.
+ * - Open ends (ours, when CapOpenEnds and FillHoles are on, after the small loops): a part cut
+ *   off from a closed object by a gap wider than MaximumBridgeLength (an ear behind a removed
+ *   band, the lower part of a leg) comes out as a separate piece with open ends, and the cut end
+ *   of a tube leaves a loop whose boundary vectors run along the tube, where step 3's votes are
+ *   neutral. A loop still open is closed like a small loop when its piece of mesh has at least 4
+ *   times the area the loop spans (the norm of its vector area: the flat disc it bounds) and its
+ *   diameter is at most MaximumHoleDiameter; the least-dihedral fallback is kept up to 150
+ *   degrees (a cap meets the tube's wall at about 90 degrees, more where the cut is ragged; 150
+ *   and beyond would lay the cap back onto the mesh). The ratio tells the two kinds of border
+ *   apart: the outer border of an open surface spans about the area of its piece (a flat sheet
+ *   1, a half cylinder pi / 2, a hemisphere bowl 2), the end of a tube reaching h beyond a
+ *   hemisphere of the rim's radius r gives 2 + 2 h / r, and a narrow slit going back along
+ *   itself spans almost nothing. A deep open shell (a vase's mouth) is closed too: switch
+ *   CapOpenEnds off to keep it open. The caps are fill triangles (stage 6), refined and faired
+ *   like the others (FairHoleFills): across a cut the cap bulges to continue the tube, so the
+ *   two caps of a narrow cut come close (a capsule of radius 22 spacings cut by an empty slab 17
+ *   spacings wide: 1 spacing apart). Counted in NumberOfEndsCapped, the fallback also in
+ *   NumberOfSmallLoopsFilledByDihedral. Parts are not joined back to the body: the hole the part
+ *   left in it has been filled by then.
  * - Fill refinement and fairing (ours, when FairHoleFills and FillHoles are on; "9" in
  *   StepsUsed; after Liepa, "Filling Holes in Meshes", SGP 2003, sections 3.2-3.3): step 6
  *   projects a hole on its average plane, so across a region without input points the fill is
@@ -155,7 +174,7 @@
  * (after step 2), `NumberOfIslands`, `NumberOfHoles` (after step 4), `NumberOfBridges`,
  * `NumberOfChords`, `NumberOfHolesFilled`, `NumberOfHolesLeftOpen`, `NumberOfSwaps`,
  * `NumberOfInsertedPoints`, `NumberOfSmallLoopsClosed`, `NumberOfSmallLoopsFilledByDihedral`,
- * `NumberOfAddedPoints`,
+ * `NumberOfEndsCapped`, `NumberOfAddedPoints`,
  * `NumberOfUnusedPoints`,
  * `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`, `MeanSpacing`, and the columns of the paper's
  * Table 1: `NumberOfPoints` (input points), `AverageUniformityInSSR` (mean m over the points of the
@@ -193,9 +212,9 @@
  * 2 spacings of the mesh (0.977 -> 0.957, 0.967 -> 0.941, 0.938 -> 0.920, 0.798 -> 0.780, 0.980 ->
  * 0.968), raised the Hausdorff distance and added 49 to 741 boundary edges; set MaximumHoleDiameter
  * to refuse fills wider than the sampling justifies. A part cut off by a gap wider than
- * MaximumBridgeLength (an ear behind a removed band) is not bridged: it stays a separate open
- * piece, the hole beside it is closed without it, and the lost points between them are attached
- * to its border and to the hole's fill (a ragged boundary). Lost points farther from every
+ * MaximumBridgeLength (an ear behind a removed band) is not bridged: it stays a separate piece,
+ * the hole beside it is closed without it, and its own open end is capped (CapOpenEnds). Lost
+ * points farther from every
  * triangle than the triangle's longest edge, or whose insertion would fold the mesh, stay
  * unused (Status 2, counted in NumberOfUnusedPoints): on the thin legs of CGAL's camel 186 of
  * its 9,770 vertices (1.9 %).
@@ -441,6 +460,18 @@ public:
 
   ///@{
   /**
+   * After the small loops (only when FillHoles is on): close a loop still open whose piece of
+   * mesh has at least 4 times the area the loop spans -- the cut end of a tube or of a part
+   * separated from a closed object, not the border of an open surface (see the class
+   * documentation). Off: such loops stay open. Default on.
+   */
+  vtkSetMacro(CapOpenEnds, bool);
+  vtkGetMacro(CapOpenEnds, bool);
+  vtkBooleanMacro(CapOpenEnds, bool);
+  ///@}
+
+  ///@{
+  /**
    * Counts from the last execution (also in the output's field data).
    */
   vtkGetMacro(NumberOfTriangles, vtkIdType);
@@ -479,6 +510,7 @@ protected:
   bool SwapBridgeEdges = true;
   bool InsertLostPoints = true;
   bool FairHoleFills = true;
+  bool CapOpenEnds = true;
 
   vtkIdType NumberOfTriangles = 0;
   vtkIdType NumberOfLostPoints = 0;

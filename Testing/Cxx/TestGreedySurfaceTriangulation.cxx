@@ -9,6 +9,9 @@
 //   well-sampled regions alone: open, with more boundary loops and the lost points unused;
 // - two islands of a plane separated by an empty strip 6 spacings wide: bridged into one surface
 //   (one connected component, one boundary loop); with BridgeIslands off two components;
+// - a capsule cut in two by an empty slab wider than MaximumBridgeLength: two closed pieces (the
+//   cut ends capped, the caps within the tube and on their side of the cut); with CapOpenEnds off
+//   two open ends; an open disc and a hemisphere bowl keep their one boundary loop;
 // - the point data Status, LocalUniformity and the cell data Stage agree with each other and with
 //   the field data counts (the paper's Table 1 columns are recomputed from them);
 // - degenerate inputs (no point, 2 points, collinear points, a NaN point): a warning and a valid
@@ -216,10 +219,16 @@ bool CheckArrays(vtkGreedySurfaceTriangulation* filter, const std::string& what)
   const vtkIdType loopsClosed = pcstest::FieldCount(mesh, "NumberOfSmallLoopsClosed");
   PCS_CHECK(loopsClosed >= 0 && (loopsClosed == 0 || filter->GetFillHoles()),
     what << ": NumberOfSmallLoopsClosed " << loopsClosed);
-  // The loops closed by the least-dihedral fallback are among the small loops closed.
+  const vtkIdType endsCapped = pcstest::FieldCount(mesh, "NumberOfEndsCapped");
+  PCS_CHECK(endsCapped >= 0 &&
+      (endsCapped == 0 || (filter->GetFillHoles() && filter->GetCapOpenEnds())),
+    what << ": NumberOfEndsCapped " << endsCapped);
+  // The loops closed by the least-dihedral fallback are among the small loops closed and the
+  // ends capped.
   const vtkIdType byDihedral = pcstest::FieldCount(mesh, "NumberOfSmallLoopsFilledByDihedral");
-  PCS_CHECK(byDihedral >= 0 && byDihedral <= loopsClosed,
-    what << ": NumberOfSmallLoopsFilledByDihedral " << byDihedral << " of " << loopsClosed);
+  PCS_CHECK(byDihedral >= 0 && byDihedral <= loopsClosed + endsCapped,
+    what << ": NumberOfSmallLoopsFilledByDihedral " << byDihedral << " of "
+         << loopsClosed + endsCapped);
   vtkIdType count[6] = { 0, 0, 0, 0, 0, 0 }, unused = 0, ssrFinite = 0;
   double ssrUniformity = 0.0;
   for (vtkIdType i = 0; i < n; ++i)
@@ -535,6 +544,130 @@ bool TestBridgedIslands()
   return true;
 }
 
+// Random points on a capsule along x, uniform by area: a cylinder of radius r over |x| <= h with
+// hemispherical ends; the points with |x| < gap / 2 are left out.
+std::vector<double> CutCapsule(int n, unsigned seed, double r, double h, double gap)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  const double cylinder = 4.0 * vtkMath::Pi() * r * h, sphere = 4.0 * vtkMath::Pi() * r * r;
+  std::vector<double> xyz;
+  for (int i = 0; i < n; ++i)
+  {
+    double p[3];
+    if (u(rng) * (cylinder + sphere) < cylinder)
+    {
+      const double angle = 2.0 * vtkMath::Pi() * u(rng);
+      p[0] = h * (2.0 * u(rng) - 1.0);
+      p[1] = r * std::cos(angle);
+      p[2] = r * std::sin(angle);
+    }
+    else
+    {
+      double d[3] = { gauss(rng), gauss(rng), gauss(rng) };
+      if (vtkMath::Normalize(d) == 0.0)
+      {
+        continue;
+      }
+      p[0] = r * d[0] + (d[0] > 0 ? h : -h);
+      p[1] = r * d[1];
+      p[2] = r * d[2];
+    }
+    if (std::abs(p[0]) >= 0.5 * gap)
+    {
+      xyz.insert(xyz.end(), { p[0], p[1], p[2] });
+    }
+  }
+  return xyz;
+}
+
+bool TestOpenEnds()
+{
+  // A capsule (radius 0.5, cylinder |x| <= 1.5) cut in two by an empty slab |x| < 0.2, wider
+  // than MaximumBridgeLength spacings: two separate halves, each a tube closed at one end. Their
+  // cut ends are holes of a closed object (each half's area is about 7 times the area its rim
+  // spans): both capped, two closed pieces.
+  const double r = 0.5, h = 1.5, gap = 0.4;
+  const auto xyz = CutCapsule(6000, 11, r, h, gap);
+  vtkNew<vtkGreedySurfaceTriangulation> greedy;
+  greedy->SetInputData(pcstest::MakeCloud(xyz));
+  greedy->Update();
+  vtkPolyData* mesh = greedy->GetOutput();
+  const double spacing = greedy->GetMeanSpacing();
+  PCS_CHECK(gap / spacing > greedy->GetMaximumBridgeLength(),
+    "cut capsule: the slab (" << gap / spacing << " spacings) is narrower than a bridge");
+  const Quality q = Measure(mesh);
+  PCS_CHECK(q.BoundaryEdges == 0 && q.Components == 2,
+    "cut capsule: " << q.BoundaryEdges << " boundary edges, " << q.Components << " components");
+  PCS_CHECK(q.NonManifoldEdges == 0 && q.NonManifoldVertices == 0 && q.Orientation == 1.0,
+    "cut capsule: manifold and oriented");
+  PCS_CHECK(q.Degenerate == 0 && q.Duplicates == 0, "cut capsule: no degenerate triangle");
+  PCS_CHECK(pcstest::FieldCount(mesh, "NumberOfEndsCapped") == 2,
+    "cut capsule: " << pcstest::FieldCount(mesh, "NumberOfEndsCapped") << " ends capped");
+  // The caps stay inside the tube (no vertex farther than 3 spacings from its axis) and on their
+  // side of the cut, each between the flat disc of its rim and a hemisphere on it: the volume is
+  // at least the two halves' (5 % less for the inscribed mesh) and less than that plus a ball of
+  // radius r.
+  double nearestToCut = VTK_DOUBLE_MAX, farthestFromAxis = 0.0;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    nearestToCut = std::min(nearestToCut, std::abs(p[0]));
+    farthestFromAxis = std::max(farthestFromAxis, std::hypot(p[1], p[2]));
+  }
+  PCS_CHECK(farthestFromAxis <= r + 3.0 * spacing,
+    "cut capsule: a vertex " << farthestFromAxis << " from the axis");
+  PCS_CHECK(nearestToCut > 0.0, "cut capsule: a cap crosses the middle of the cut");
+  const double ball = 4.0 / 3.0 * vtkMath::Pi() * r * r * r;
+  const double halves = 0.5 * ball + vtkMath::Pi() * r * r * (2.0 * h - gap);
+  const double volume = SignedVolume(mesh);
+  PCS_CHECK(volume >= 0.95 * halves && volume <= halves + ball,
+    "cut capsule: volume " << volume << ", " << halves << " with flat caps");
+  PCS_CHECK(CheckArrays(greedy, "cut capsule"), "");
+
+  // Without CapOpenEnds the cut ends stay open.
+  vtkNew<vtkGreedySurfaceTriangulation> open;
+  open->SetInputData(pcstest::MakeCloud(xyz));
+  open->CapOpenEndsOff();
+  open->Update();
+  const Quality qo = Measure(open->GetOutput());
+  PCS_CHECK(qo.Loops == 2 && qo.Components == 2,
+    "cut capsule, CapOpenEnds off: " << qo.Loops << " loops, " << qo.Components << " components");
+  PCS_CHECK(CheckArrays(open, "cut capsule, CapOpenEnds off"), "");
+
+  // Open surfaces keep their border: a flat disc and a hemisphere bowl (whose area is twice the
+  // area its rim spans), one boundary loop each.
+  for (int bowl = 0; bowl < 2; ++bowl)
+  {
+    std::mt19937_64 rng(13);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<double> sheet;
+    for (int i = 0; i < 3000; ++i)
+    {
+      const double angle = 2.0 * vtkMath::Pi() * u(rng);
+      // Uniform by area: on the lower unit hemisphere z is uniform, on the unit disc rho^2.
+      const double z = bowl ? -u(rng) : 0.0;
+      const double rho = bowl ? std::sqrt(1.0 - z * z) : std::sqrt(u(rng));
+      sheet.insert(sheet.end(), { rho * std::cos(angle), rho * std::sin(angle), z });
+    }
+    const std::string what = bowl ? "hemisphere bowl" : "open disc";
+    vtkNew<vtkGreedySurfaceTriangulation> patch;
+    patch->SetInputData(pcstest::MakeCloud(sheet));
+    patch->Update();
+    const Quality qp = Measure(patch->GetOutput());
+    PCS_CHECK(qp.Loops == 1 && qp.Components == 1,
+      what << ": " << qp.Loops << " loops, " << qp.Components << " components");
+    PCS_CHECK(qp.NonManifoldEdges == 0 && qp.NonManifoldVertices == 0 && qp.Orientation == 1.0,
+      what << ": manifold and oriented");
+    PCS_CHECK(pcstest::FieldCount(patch->GetOutput(), "NumberOfEndsCapped") == 0,
+      what << ": an end capped");
+    PCS_CHECK(CheckArrays(patch, what), "");
+  }
+  return true;
+}
+
 bool TestDegenerate()
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -569,6 +702,7 @@ int TestGreedySurfaceTriangulation(int, char*[])
   ok = TestTorus() && ok;
   ok = TestDamagedSphere() && ok;
   ok = TestBridgedIslands() && ok;
+  ok = TestOpenEnds() && ok;
   ok = TestDegenerate() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

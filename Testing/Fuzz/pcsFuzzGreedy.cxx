@@ -51,6 +51,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     greedy->SetMaximumHoleDiameter(1.0 + (p[3] >> 2));
   }
   greedy->SetInsertLostPoints(((p[0] ^ p[2]) & 0x01) == 0);
+  greedy->SetCapOpenEnds(((p[1] ^ p[2]) & 0x02) == 0);
   greedy->SetStatusNeutralAngle((p[3] >> 2) * 90.0 / 63.0);
   greedy->SetUniformityAngle((p[3] >> 2) * 95.0 / 63.0);
   greedy->Update();

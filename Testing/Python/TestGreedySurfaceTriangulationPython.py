@@ -72,7 +72,7 @@ DEFAULTS = {"NumberOfNeighbors": 12, "CrossingTest": 2, "AutomaticCorrectFractio
             "BridgeIslands": True, "MaximumBridgeLength": 10.0, "MinimumBridgeSeparation": 0.5,
             "FillHoles": True, "MaximumHoleDiameter": DOUBLE_MAX, "AuxiliaryPointDistance": 0.5,
             "MaximumHolePoints": 256, "SwapBridgeEdges": True, "InsertLostPoints": True,
-            "FairHoleFills": True}
+            "FairHoleFills": True, "CapOpenEnds": True}
 RANGES = {"NumberOfNeighbors": (3, 64), "CrossingTest": (0, 2),
           "AutomaticCorrectFraction": (0.0, 1.0), "UniformityNeighbors": (2, 64),
           "UniformityAngle": (0.0, 90.0), "MaximumNormalDeviation": (0.0, 180.0),

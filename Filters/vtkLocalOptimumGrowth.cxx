@@ -184,6 +184,7 @@ private:
   void InsertOrphans();
   bool InsertOrphan(Id q);
   bool FillHole(const std::vector<Id>& frontLoop);
+  bool FillNarrowLoop(const std::vector<Id>& frontLoop);
   void OrientComponents();
   void Unfold();
   void ReportProgress();
@@ -1279,9 +1280,135 @@ bool Grower::FillHole(const std::vector<Id>& frontLoop)
   return true;
 }
 
+// A loop longer than MaximumHoleEdges (or one the projected triangulation could not close)
+// closed by the triangulation of its own vertices of least largest dihedral angle
+// (pcs::holes::LeastDihedralFill), kept only when the fill stays on the sampled surface: the
+// centroid and the midpoints of the new edges of each of its triangles lie within 2 local
+// spacings of an input point (the accuracy bound asked of the whole mesh), the local spacing
+// being the mean distance of the loop's vertices to their nearest neighbours. A sampling gap on
+// a thin or sharply bent feature passes; a membrane across an open border, a slit, or between
+// parts that only come close passes through empty space and is refused.
+bool Grower::FillNarrowLoop(const std::vector<Id>& frontLoop)
+{
+  const size_t m = frontLoop.size();
+  if (m > 400)
+  {
+    return false; // the least-dihedral triangulation is cubic in the loop's length
+  }
+  // The fill's triangles own the twins of the front edges: the loop is walked backwards.
+  std::vector<Id> loop(frontLoop.rbegin(), frontLoop.rend());
+  double spacing = 0.0, perimeter = 0.0, area[3] = { 0, 0, 0 };
+  for (size_t i = 0; i < m; ++i)
+  {
+    const Id v = loop[i], w = loop[(i + 1) % m];
+    double nearest = std::numeric_limits<double>::infinity();
+    const Id* nb = this->Neighbors(v);
+    for (int j = 0; j < this->K && nb[j] >= 0; ++j)
+    {
+      nearest = std::min(nearest, Distance2(this->P3(v), this->P3(nb[j])));
+    }
+    spacing += std::sqrt(nearest);
+    perimeter += std::sqrt(Distance2(this->P3(v), this->P3(w)));
+    double c[3];
+    Cross(this->P3(v), this->P3(w), c);
+    for (int k = 0; k < 3; ++k)
+    {
+      area[k] += 0.5 * c[k];
+    }
+  }
+  spacing /= static_cast<double>(m);
+  const double reach = 2.0 * spacing;
+  // A flat region bounded by the loop whose points all lie within `reach` of the loop has at
+  // most perimeter x reach of area: a wide open border is refused before the cubic fill.
+  if (!(spacing > 0.0) || std::sqrt(Dot(area, area)) > 2.0 * perimeter * reach)
+  {
+    return false;
+  }
+  auto across = [this, &loop, m](int e, double nrm[3]) {
+    const Id a = loop[e], b = loop[(e + 1) % m];
+    const Id x = this->Mesh.OppositeVertex(b, a); // the mesh triangle (b, a, x)
+    return x >= 0 && UnitNormal(this->P3(b), this->P3(a), this->P3(x), nrm);
+  };
+  auto exists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
+  std::vector<Id> triangles;
+  if (pcs::holes::LeastDihedralFill(this->X, loop, exists, across, triangles) < 0.0 ||
+    triangles.empty())
+  {
+    return false;
+  }
+  // The input points around the loop: its vertices and their K nearest neighbours.
+  if (++this->MarkStamp == 0)
+  {
+    std::fill(this->Mark.begin(), this->Mark.end(), 0);
+    this->MarkStamp = 1;
+  }
+  std::vector<Id> around;
+  for (Id v : loop)
+  {
+    const Id* nb = this->Neighbors(v);
+    for (int j = -1; j < this->K; ++j)
+    {
+      const Id q = j < 0 ? v : nb[j];
+      if (q >= 0 && this->Mark[q] != this->MarkStamp)
+      {
+        this->Mark[q] = this->MarkStamp;
+        around.push_back(q);
+      }
+    }
+  }
+  static const double weights[4][3] = { { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 }, { 0.5, 0.5, 0.0 },
+    { 0.0, 0.5, 0.5 }, { 0.5, 0.0, 0.5 } };
+  for (size_t t = 0; t + 2 < triangles.size(); t += 3)
+  {
+    const Id* v = &triangles[t];
+    const double* q[3] = { this->P3(v[0]), this->P3(v[1]), this->P3(v[2]) };
+    if (pcs::projected::Collinear(q[0], q[1], q[2]))
+    {
+      return false;
+    }
+    for (int j = 0; j < 4; ++j)
+    {
+      // The centroid, then the midpoints of the edges v[j-1] v[j % 3] that are new (a loop edge
+      // is in the mesh already).
+      if (j > 0 && this->Mesh.GetEdgeValence(v[j - 1], v[j % 3]) > 0)
+      {
+        continue;
+      }
+      double x[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        x[k] = weights[j][0] * q[0][k] + weights[j][1] * q[1][k] + weights[j][2] * q[2][k];
+      }
+      bool near = false;
+      for (Id p : around)
+      {
+        if (Distance2(x, this->P3(p)) <= reach * reach)
+        {
+          near = true;
+          break;
+        }
+      }
+      if (!near)
+      {
+        return false;
+      }
+    }
+  }
+  std::vector<int64_t> added;
+  if (!this->Mesh.AddTriangles(triangles.data(), triangles.size() / 3, added))
+  {
+    return false;
+  }
+  for (int64_t id : added)
+  {
+    this->Register(id);
+  }
+  return true;
+}
+
 void Grower::FillHoles()
 {
-  if (this->Par.MaxHoleEdges < 3)
+  if (this->Par.MaxHoleEdges < 1)
   {
     return;
   }
@@ -1289,7 +1416,7 @@ void Grower::FillHoles()
   this->Mesh.GetBoundaryLoops(loops);
   for (const auto& loop : loops)
   {
-    if (loop.size() < 3 || static_cast<int>(loop.size()) > this->Par.MaxHoleEdges)
+    if (loop.size() < 3)
     {
       continue;
     }
@@ -1299,7 +1426,10 @@ void Grower::FillHoles()
     {
       continue; // a loop through a vertex twice
     }
-    if (this->FillHole(loop))
+    // Small loops with the projected hole triangulation; longer ones, and small ones it could
+    // not close, only when narrow.
+    if ((static_cast<int>(loop.size()) <= this->Par.MaxHoleEdges && this->FillHole(loop)) ||
+      this->FillNarrowLoop(loop))
     {
       ++this->HolesClosed;
     }

@@ -8,6 +8,9 @@
 // - 4000 random points on a torus: closed, manifold, oriented, genus 1, 2V triangles;
 // - an open height-field patch (with a NaN point and exact duplicates): one boundary loop, Euler
 //   characteristic 1, every finite distinct point used, the NaN point skipped and reported;
+// - open tubes of 10- and 30-point rings: the ends of the thin one (radius 1.62 spacings) capped
+//   by the narrow-loop fill (closed, genus 0, 2V - 4 triangles), those of the wide one (4.79
+//   spacings) and of both with MaximumHoleEdges 0 left open (two loops, Euler characteristic 0);
 // - a planar 20 x 20 grid (cocircular and collinear points everywhere): 722 triangles, one loop;
 // - two disjoint spheres: two closed components (the front dies, a second seed is planted);
 // - random sphere and torus samples that once kept a sliver hole, gained a handle or left a
@@ -316,6 +319,69 @@ bool TestOpenPatch()
   return true;
 }
 
+// An open tube of unit radius: `rows` rings of n points, every other ring turned by half a step,
+// the rings sqrt(3)/2 chords apart (every point's nearest neighbours one chord away).
+std::vector<double> Tube(int n, int rows)
+{
+  const double chord = 2.0 * std::sin(vtkMath::Pi() / n);
+  std::vector<double> xyz;
+  for (int i = 0; i < rows; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      const double a = 2.0 * vtkMath::Pi() * (j + 0.5 * (i % 2)) / n;
+      xyz.insert(xyz.end(), { std::cos(a), std::sin(a), i * chord * std::sqrt(3.0) / 2.0 });
+    }
+  }
+  return xyz;
+}
+
+bool TestNarrowLoops()
+{
+  // The end rings (loops longer than MaximumHoleEdges) are closed only when narrow: every fill
+  // point within 2 local spacings (here the chord) of a point. Every point of a flat disc lies
+  // within its radius of the nearest rim vertex: the radius of a 10-point ring is 1.62 chords,
+  // so its end is capped. In a 30-point ring (radius 4.79 chords) any triangulation has a
+  // triangle containing the centre, whose centroid lies within a third of the radius from the
+  // centre and so at least 3.19 chords from every point: both ends stay open.
+  for (int n : { 10, 30 })
+  {
+    for (int holes : { 8, 0 })
+    {
+      const std::vector<double> xyz = Tube(n, 12);
+      vtkNew<vtkLocalOptimumGrowth> growth;
+      growth->SetMaximumHoleEdges(holes);
+      growth->SetInputData(pcstest::MakeCloud(xyz));
+      growth->Update();
+      const Quality q = Measure(growth->GetOutput());
+      const std::string what =
+        "tube of " + std::to_string(n) + "-point rings, MaximumHoleEdges " + std::to_string(holes);
+      PCS_CHECK(growth->GetNumberOfUnusedPoints() == 0,
+        what << ": unused " << growth->GetNumberOfUnusedPoints());
+      if (n == 10 && holes > 0)
+      {
+        if (!CheckClosed(q, 0, what))
+        {
+          return false;
+        }
+        PCS_CHECK(q.Triangles == 2 * 12 * n - 4, what << ": " << q.Triangles << " triangles");
+        PCS_CHECK(growth->GetNumberOfHolesClosed() == 2,
+          what << ": " << growth->GetNumberOfHolesClosed() << " holes closed");
+      }
+      else
+      {
+        PCS_CHECK(q.Loops == 2 && q.BoundaryEdges == 2 * n,
+          what << ": " << q.Loops << " loops, " << q.BoundaryEdges << " boundary edges");
+        PCS_CHECK(q.NonManifoldEdges == 0 && q.NonManifoldVertices == 0 && q.Orientation == 1.0,
+          what << ": not a manifold oriented mesh");
+        PCS_CHECK(q.Components == 1 && q.Euler == 0,
+          what << ": components " << q.Components << ", Euler characteristic " << q.Euler);
+      }
+    }
+  }
+  return true;
+}
+
 bool TestPlanarGrid()
 {
   // 20 x 20 unit grid: every quad has 4 cocircular corners, the border is collinear.
@@ -447,6 +513,7 @@ int TestLocalOptimumGrowth(int, char*[])
   ok = TestSphere() && ok;
   ok = TestTorus() && ok;
   ok = TestOpenPatch() && ok;
+  ok = TestNarrowLoops() && ok;
   ok = TestPlanarGrid() && ok;
   ok = TestTwoSpheres() && ok;
   ok = TestRandomSamples() && ok;

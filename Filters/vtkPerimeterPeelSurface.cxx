@@ -189,16 +189,27 @@ public:
         }
       }
     }
+    // The mean of those lengths; when the longest is over 8 times their median (an edge across
+    // the inside of the object), at most 1.5 times the median. On a flat region a point's
+    // Delaunay neighbours in the surface are its 2D Delaunay neighbours (6 on average, often 4 or
+    // 5), and its other shortest edges cross the empty inside (a cube's faces: the mean was 2.7
+    // times the true spacing at 10^5 points, and the peel dug through the faces). On a curved
+    // surface's sample the shortest edges stay within a few spacings, and the mean is kept.
     this->Spacing.assign(points, 0.0);
     for (int64_t v = 0; v < points; ++v)
     {
+      const double* l = &length[static_cast<size_t>(v) * k];
       double sum = 0.0;
       int n = 0;
       for (int m = 0; m < k && other[v * k + m] >= 0; ++m, ++n)
       {
-        sum += length[v * k + m];
+        sum += l[m];
       }
-      this->Spacing[v] = n > 0 ? sum / n : 0.0;
+      if (n > 0)
+      {
+        const double median = n % 2 ? l[n / 2] : 0.5 * (l[n / 2 - 1] + l[n / 2]);
+        this->Spacing[v] = l[n - 1] > 8.0 * median ? std::min(sum / n, 1.5 * median) : sum / n;
+      }
     }
     // Smoothed over the same neighbours: on a uniform random sample the spacing is then nearly
     // constant (the paper's absolute measure up to a factor), on a graded one it follows the

@@ -1057,6 +1057,24 @@ int vtkPerimeterPeelSurface::RequestData(
       ? 0.25 * std::sqrt(3.0) * side * side
       : (this->FacetMeasure == CIRCUMRADIUS ? side / std::sqrt(3.0) : this->CaveLimit);
   }
+  // The group start limit (rule 5 of the class docs), converted like the cave limit; -1 (off)
+  // without relative measures, without ManifoldOutput or when 0. Active once the peel has
+  // converged with GroupFactor x threshold over it; group removals then start at facets over
+  // the limit as well.
+  double groupStartLimit = -1.0;
+  if (relative && this->ManifoldOutput && this->GroupStartLimit > 0.0)
+  {
+    const double side = this->GroupStartLimit / 3.0;
+    groupStartLimit = this->FacetMeasure == AREA
+      ? 0.25 * std::sqrt(3.0) * side * side
+      : (this->FacetMeasure == CIRCUMRADIUS ? side / std::sqrt(3.0) : this->GroupStartLimit);
+  }
+  bool limitedStart = false;
+  auto groupStart = [&]()
+  {
+    return limitedStart ? std::min(threshold * groupFactor, groupStartLimit)
+                        : threshold * groupFactor;
+  };
   // Whether the inside cell c, whose exterior facets are `mask` and the largest of them m, may
   // not be removed now. With ManifoldOutput, a cell whose facet is not clearly too large for the
   // surface (at most GroupFactor x threshold) is not removed when it would show a facet more than
@@ -1097,8 +1115,9 @@ int vtkPerimeterPeelSurface::RequestData(
   // measure is no longer the cell's is stale: the cell was queued again with its new measure,
   // and that entry came first.
   std::priority_queue<Entry> queue;
-  // With ManifoldOutput, the cells refused with a facet over GroupFactor x threshold (group
-  // candidates; some may be listed twice or have gone since).
+  // With ManifoldOutput, the cells refused with a facet over the group start (GroupFactor x
+  // threshold, or the group start limit: rule 5) (group candidates; some may be listed twice or
+  // have gone since).
   std::vector<int64_t> refusedLarge;
   auto offer = [&](int64_t c, int mask, double m)
   {
@@ -1108,7 +1127,7 @@ int vtkPerimeterPeelSurface::RequestData(
     }
     if (refused(c, mask, m, false))
     {
-      if (manifold && m > threshold * groupFactor)
+      if (manifold && m > groupStart())
       {
         refusedLarge.push_back(c);
       }
@@ -1151,7 +1170,7 @@ int vtkPerimeterPeelSurface::RequestData(
       }
       if (refused(c, mask, m, true))
       {
-        if (manifold && m > threshold * groupFactor)
+        if (manifold && m > groupStart())
         {
           refusedLarge.push_back(c);
         }
@@ -1194,7 +1213,7 @@ int vtkPerimeterPeelSurface::RequestData(
       groups->Reset();
       for (bool more = true; more && !aborted;)
       {
-        // The cells with an exterior facet over GroupFactor x threshold, largest facet first.
+        // The cells with an exterior facet over the group start, largest facet first.
         // Every such cell was refused when last offered (its measure changes only when a
         // neighbour goes, which offers it), so refusedLarge lists them all.
         candidates.clear();
@@ -1203,7 +1222,7 @@ int vtkPerimeterPeelSurface::RequestData(
           if (solid.IsInside(c))
           {
             const double m = solid.LargestExteriorFacet(c);
-            if (m > threshold * groupFactor)
+            if (m > groupStart())
             {
               candidates.emplace_back(m, c);
             }
@@ -1252,6 +1271,14 @@ int vtkPerimeterPeelSurface::RequestData(
     const double updated = exteriorMean();
     if (updated == 0.0 || std::fabs(updated - mean) <= this->ConvergenceTolerance * mean)
     {
+      if (updated > 0.0 && !limitedStart && groupStartLimit > 0.0 &&
+        groupStartLimit < threshold * groupFactor)
+      {
+        // Converged with a group start over the limit (rule 5): go on, groups starting at the
+        // limit too (the threshold stays until the mean moves again).
+        limitedStart = true;
+        continue;
+      }
       break;
     }
     mean = updated;
@@ -1296,6 +1323,7 @@ void vtkPerimeterPeelSurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GroupFactor: " << this->GroupFactor << "\n";
   os << indent << "HandleFactor: " << this->HandleFactor << "\n";
   os << indent << "CaveLimit: " << this->CaveLimit << "\n";
+  os << indent << "GroupStartLimit: " << this->GroupStartLimit << "\n";
   os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
   os << indent << "Threshold: " << this->Threshold << "\n";
   os << indent << "FacetMeasure: " << this->FacetMeasure << "\n";

@@ -137,6 +137,9 @@ public:
   std::vector<double> Normals; // 3 per point (unoriented), for the projected crossing test
   std::vector<char> CrossingPoints; // the points whose edges it tests (empty: every point)
   double Spacing = 0.0;
+  // X = input coordinates x CoordinateScale, a power of two (1 unless the coordinates are
+  // extreme, see RequestData).
+  double CoordinateScale = 1.0;
   vtkSmartPointer<vtkStaticPointLocator> Locator;
   vtkSmartPointer<vtkPolyData> Cloud;
 
@@ -2819,7 +2822,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
     this->NumberOfBridges = r.Bridges;
     this->NumberOfHolesFilled = r.HolesFilled;
     this->NumberOfAddedPoints = r.Added;
-    this->MeanSpacing = r.Spacing;
+    this->MeanSpacing = r.Spacing / r.CoordinateScale;
     this->NumberOfUnusedPoints = 0;
     for (vtkIdType i = 0; i < numberOfPoints; ++i)
     {
@@ -2845,7 +2848,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
     pcs::AddFieldCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
     pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", duplicates);
     pcs::AddFieldCount(fd, "NumberOfSkippedPoints", skipped);
-    pcs::AddFieldValue(fd, "MeanSpacing", r.Spacing);
+    pcs::AddFieldValue(fd, "MeanSpacing", this->MeanSpacing);
     pcs::AddFieldValue(fd, "MedianUniformity", r.MedianUniformity);
     pcs::AddFieldCount(fd, "CrossingTestUsed", r.Normals.empty() ? 0 : 1);
     pcs::AddFieldCount(fd, "NumberOfPoints", numberOfPoints);
@@ -2902,6 +2905,31 @@ int vtkGreedySurfaceTriangulation::RequestData(
   if (skipped > 0)
   {
     vtkWarningMacro("Skipped " << skipped << " point(s) with NaN or infinite coordinates.");
+  }
+  // Coordinates far from 1 (beyond 2^60 or below 2^-60 in magnitude) are scaled by a power of
+  // two, which is exact and keeps every comparison: squared lengths, PCA covariances and the
+  // single-precision edge lengths of step 1 then neither overflow nor underflow. Added points
+  // and the reported spacing are scaled back.
+  {
+    double largest = 0.0;
+    for (int32_t i : order)
+    {
+      const double* p = &xyz[3 * static_cast<size_t>(i)];
+      largest = std::max({ largest, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
+    }
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    if (largest > 0.0 && (exponent > 60 || exponent < -60))
+    {
+      r.CoordinateScale = std::ldexp(1.0, -std::max(-1000, std::min(exponent, 1000)));
+      for (int32_t i : order)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          xyz[3 * static_cast<size_t>(i) + c] *= r.CoordinateScale;
+        }
+      }
+    }
   }
   vtkSMPTools::Sort(order.begin(), order.end(), [&xyz](int32_t a, int32_t b) {
     const double* pa = &xyz[3 * static_cast<size_t>(a)];
@@ -3134,7 +3162,8 @@ int vtkGreedySurfaceTriangulation::RequestData(
     for (vtkIdType k = 0; k < r.Added; ++k)
     {
       const double* x = &added[3 * k];
-      const vtkIdType id = outPoints->InsertNextPoint(x);
+      const vtkIdType id = outPoints->InsertNextPoint(x[0] / r.CoordinateScale,
+        x[1] / r.CoordinateScale, x[2] / r.CoordinateScale);
       const vtkIdType nearest = r.Locator->FindClosestPoint(x);
       if (nearest >= 0)
       {

@@ -113,13 +113,29 @@ bool Plane::Fit(const double* xyz, const int32_t* ids, size_t count)
   {
     return false;
   }
+  // The sums run on coordinates scaled by a power of two that brings the largest to [0.5, 1):
+  // the same values as unscaled in the usual range (the scaling is exact), and no overflow or
+  // underflow of the squares for coordinates near 1e300 or 1e-300.
+  double largest = 0.0;
+  for (size_t k = 0; k < count; ++k)
+  {
+    const double* p = xyz + 3 * static_cast<int64_t>(ids[k]);
+    largest = std::max({ largest, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
+  }
+  if (!std::isfinite(largest))
+  {
+    return false;
+  }
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  const double scale = std::ldexp(1.0, -std::max(-1000, std::min(exponent, 1000)));
   double centroid[3] = { 0, 0, 0 };
   for (size_t k = 0; k < count; ++k)
   {
     const double* p = xyz + 3 * static_cast<int64_t>(ids[k]);
-    centroid[0] += p[0];
-    centroid[1] += p[1];
-    centroid[2] += p[2];
+    centroid[0] += scale * p[0];
+    centroid[1] += scale * p[1];
+    centroid[2] += scale * p[2];
   }
   for (double& c : centroid)
   {
@@ -129,7 +145,8 @@ bool Plane::Fit(const double* xyz, const int32_t* ids, size_t count)
   for (size_t k = 0; k < count; ++k)
   {
     const double* p = xyz + 3 * static_cast<int64_t>(ids[k]);
-    const double d[3] = { p[0] - centroid[0], p[1] - centroid[1], p[2] - centroid[2] };
+    const double d[3] = { scale * p[0] - centroid[0], scale * p[1] - centroid[1],
+      scale * p[2] - centroid[2] };
     for (int i = 0; i < 3; ++i)
     {
       for (int j = 0; j < 3; ++j)
@@ -144,7 +161,7 @@ bool Plane::Fit(const double* xyz, const int32_t* ids, size_t count)
   vtkMath::Jacobi(rows, eigenvalues, vectors); // decreasing eigenvalues, eigenvectors in columns
   for (int i = 0; i < 3; ++i)
   {
-    this->Origin[i] = centroid[i];
+    this->Origin[i] = centroid[i] / scale;
     this->U[i] = vectors[i][0];
     this->V[i] = vectors[i][1];
   }
@@ -256,6 +273,24 @@ bool IsSimplePolygon(const std::vector<double>& uv)
   }
   return true;
 }
+
+namespace
+{
+// A projected position, compared exactly (lost points that coincide in projection are used once).
+struct ProjectedKey
+{
+  double U, V;
+  bool operator==(const ProjectedKey& other) const { return U == other.U && V == other.V; }
+};
+
+struct ProjectedKeyHash
+{
+  size_t operator()(const ProjectedKey& key) const
+  {
+    return std::hash<double>()(key.U) * 31 + std::hash<double>()(key.V); // +0 and -0 alike
+  }
+};
+} // namespace
 
 int PointInPolygon(const std::vector<double>& uv, const double* p)
 {
@@ -779,6 +814,8 @@ bool HoleFiller::FillPiece(const double* xyz, Piece& piece, std::vector<char>& t
   // coinciding in projection with another point.
   std::vector<int32_t> inside;
   std::vector<double> insideUV;
+  std::vector<double> insideHeight; // distance to the plane
+  std::unordered_set<ProjectedKey, ProjectedKeyHash> seen;
   for (size_t k = 0; k < candidates.size(); ++k)
   {
     if (taken[k])
@@ -786,7 +823,8 @@ bool HoleFiller::FillPiece(const double* xyz, Piece& piece, std::vector<char>& t
       continue;
     }
     const double* p = xyz + 3 * static_cast<int64_t>(candidates[k]);
-    if (!(std::fabs(plane.Distance(p)) <= 0.5 * radius))
+    const double height = std::fabs(plane.Distance(p));
+    if (!(height <= 0.5 * radius))
     {
       continue;
     }
@@ -796,21 +834,39 @@ bool HoleFiller::FillPiece(const double* xyz, Piece& piece, std::vector<char>& t
     {
       continue;
     }
-    bool distinct = true;
-    for (size_t s = 0; s < inside.size() && distinct; ++s)
-    {
-      distinct = !(insideUV[2 * s] == q[0] && insideUV[2 * s + 1] == q[1]);
-    }
-    if (distinct)
+    if (seen.insert({ q[0], q[1] }).second)
     {
       inside.push_back(static_cast<int32_t>(k));
       insideUV.insert(insideUV.end(), { q[0], q[1] });
+      insideHeight.push_back(height);
     }
   }
 
-  if (n + static_cast<int>(inside.size()) > std::max(this->MaximumGreedyPoints, 3) && n >= 4)
+  const int maximum = std::max(this->MaximumGreedyPoints, 3);
+  if (n + static_cast<int>(inside.size()) > maximum)
   {
-    return splitAndFill(&plane, &uv);
+    if (n >= 4)
+    {
+      return splitAndFill(&plane, &uv);
+    }
+    // A triangle cannot be split further: it keeps the points nearest its plane, up to the
+    // bound; the others stay lost (a dense cluster inside one triangle would otherwise make
+    // the quadratic triangulation below unbounded).
+    std::vector<size_t> order(inside.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+      [&insideHeight](size_t a, size_t b) { return insideHeight[a] < insideHeight[b]; });
+    order.resize(static_cast<size_t>(maximum - n));
+    std::sort(order.begin(), order.end());
+    std::vector<int32_t> keptInside;
+    std::vector<double> keptUV;
+    for (size_t s : order)
+    {
+      keptInside.push_back(inside[s]);
+      keptUV.insert(keptUV.end(), { insideUV[2 * s], insideUV[2 * s + 1] });
+    }
+    inside.swap(keptInside);
+    insideUV.swap(keptUV);
   }
 
   // Step 6: the greedy triangulation of the projected piece and its points.

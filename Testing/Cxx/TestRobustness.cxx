@@ -441,6 +441,26 @@ std::vector<InputCase> Inputs()
     cases.push_back({ "sphere with NaN and Inf coordinates", xyz, true });
   }
   cases.push_back({ "sphere", Sphere(2000, 6), false });
+  {
+    // A dense blob (3000 points, standard deviation 1e-4) on a 3000-point sphere: the blob's
+    // points fall into one hole piece of the greedy filter and one neighbourhood ball of the
+    // CDT front; both were unbounded (cubic in the blob size) before they were capped.
+    std::vector<double> xyz = Sphere(3000, 41);
+    std::mt19937_64 rng(42);
+    std::normal_distribution<double> g(0.0, 1e-4);
+    for (int i = 0; i < 3000; ++i)
+    {
+      xyz.insert(xyz.end(), { 1.0 + g(rng), g(rng), g(rng) });
+    }
+    cases.push_back({ "sphere with a dense cluster", xyz, false });
+  }
+  {
+    // Two scales: a unit sphere around a sphere of radius 1e-6.
+    std::vector<double> xyz = Sphere(2000, 43);
+    const std::vector<double> inner = Sphere(400, 44, 1e-6);
+    xyz.insert(xyz.end(), inner.begin(), inner.end());
+    cases.push_back({ "sphere around a 1e-6 sphere", xyz, false });
+  }
   // Normals (exact, outward on the unit sphere) with zero-length or NaN ones.
   for (int kind = 0; kind < 4; ++kind)
   {
@@ -715,6 +735,20 @@ bool RunEquivalences(const FilterEntry& filter)
   if (!run("float points", filter.Prepare(CloudWithArrays(xyz, true))))
   {
     return false;
+  }
+  // Extreme scales: the squares of the coordinates overflow or underflow a double.
+  for (double scale : { 1e300, 1e-300 })
+  {
+    std::vector<double> scaled(xyz);
+    for (double& c : scaled)
+    {
+      c *= scale;
+    }
+    if (!run(scale > 1 ? "coordinates x 1e300" : "coordinates x 1e-300",
+          filter.Prepare(CloudWithArrays(scaled, false))))
+    {
+      return false;
+    }
   }
   // A vtkUnstructuredGrid of vertices, float and double points.
   if (!filter.Info.ConsumesMesh)

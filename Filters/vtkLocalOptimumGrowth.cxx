@@ -1384,7 +1384,9 @@ bool Grower::FillNarrowLoop(const std::vector<Id>& frontLoop)
   {
     const Id* v = &triangles[t];
     const double* q[3] = { this->P3(v[0]), this->P3(v[1]), this->P3(v[2]) };
-    if (pcs::projected::Collinear(q[0], q[1], q[2]))
+    // Nor a mesh triangle reversed (the loop of a lone triangle: two coincident triangles).
+    if (pcs::projected::Collinear(q[0], q[1], q[2]) ||
+      this->Mesh.OppositeVertex(v[1], v[0]) == v[2])
     {
       return false;
     }

@@ -565,9 +565,12 @@ private:
 // The rules of paper 003 in one place: which triangles are valid, and the front that grows them.
 struct Parameters
 {
-  double Radius = 0;                 // II.A neighbourhood of a front edge's midpoint
-  double MinimumNormalDot = 0;       // II.C.2
-  double MaximumRay = 0;             // II.D
+  double Radius = 0;           // II.A neighbourhood of a front edge's midpoint
+  double MinimumNormalDot = 0; // II.C.2
+  double MaximumRay = 0;       // II.D
+  // II.D: MaximumRay scaled at each triangle by the largest local scale of its vertices
+  // (Front::Scale, at most 1).
+  bool LocalRay = false;
   double MinimumArea = 0;            // II.E
   int MaximumCandidates = 0;         // candidates submitted to the II.D tests per edge
   bool CloseTriangularHoles = false; // III.C: a 3-edge hole closes without II.C.2
@@ -583,12 +586,13 @@ struct Parameters
 class Front
 {
 public:
-  Front(vtkCDTAdvancingFront* self, const double* xyz, const double* normals,
+  Front(vtkCDTAdvancingFront* self, const double* xyz, const double* normals, const double* scale,
     const std::vector<uint8_t>& status, vtkStaticPointLocator* locator, const LocatorBins& bins,
     pcs::SurfaceMesh& mesh)
     : Self(self)
     , XYZ(xyz)
     , Normals(normals)
+    , Scale(scale)
     , Status(status)
     , Locator(locator)
     , Bins(bins)
@@ -754,6 +758,7 @@ private:
   vtkCDTAdvancingFront* Self;
   const double* XYZ;
   const double* Normals;
+  const double* Scale; // per point: its local spacing over the mean spacing, at most 1
   const std::vector<uint8_t>& Status;
   vtkStaticPointLocator* Locator;
   const LocatorBins& Bins;
@@ -1026,7 +1031,12 @@ bool Front::PassesProjectionTests(
   {
     reach = std::max(reach, std::sqrt(Distance2(this->P(i), centroid)));
   }
-  const double pointReach = reach + parameters.MaximumRay;
+  // The ray bound of this triangle: a function of its three vertices only (whatever edge it is
+  // built on), so that a triangle found blocked stays blocked (Blocked).
+  const double maximumRay = parameters.LocalRay ? parameters.MaximumRay *
+      std::max(this->Scale[e0], std::max(this->Scale[e1], this->Scale[third]))
+                                                : parameters.MaximumRay;
+  const double pointReach = reach + maximumRay;
   const double edgeReach =
     this->EdgeReach.Reach(centroid, 1.01 * pointReach, this->LongestEdge) * 1.000001;
   const double segmentReach2 = 1.0201 * pointReach * pointReach;
@@ -1056,7 +1066,7 @@ bool Front::PassesProjectionTests(
     // triangle: the exact test is skipped. Same decisions, fewer exact tests.
     double t;
     if (!pcs::projected::RayParameter(this->P(p), np, this->P(e0), normal, t) ||
-      !(std::fabs(t) <= parameters.MaximumRay))
+      !(std::fabs(t) <= maximumRay))
     {
       continue;
     }
@@ -1140,9 +1150,9 @@ bool Front::PassesProjectionTests(
       }
       // Projected end points (each computed once per triangle tested, most points end several
       // edges); a vertex of the triangle projects onto itself.
-      const double* pu = this->Project(u, uIsVertex, normal, this->P(e0), parameters.MaximumRay);
+      const double* pu = this->Project(u, uIsVertex, normal, this->P(e0), maximumRay);
       const double* pw =
-        pu ? this->Project(w, wIsVertex, normal, this->P(e0), parameters.MaximumRay) : nullptr;
+        pu ? this->Project(w, wIsVertex, normal, this->P(e0), maximumRay) : nullptr;
       // A projected segment that stays out of the triangle's ball (1 % of margin) cannot cross.
       if (pw && SegmentDistance2(pu, pw, centroid) <= triangleReach2 &&
         plane.SegmentCrosses(pu, pw))
@@ -1625,13 +1635,16 @@ int vtkCDTAdvancingFront::RequestData(
   // nearest neighbours (see the class docs for why), then all flipped if needed so that the normal
   // of the point farthest from the centroid (a point of the convex hull, where the outside is
   // known) points away from the centroid: outwards on a closed surface.
+  // The table of nearest neighbours (knnOthers per point), kept for the local spacing.
+  std::vector<int32_t> knn;
+  int knnOthers = 0;
   auto estimateNormals = [&](std::vector<double>& estimatedNormals)
   {
     estimatedNormals.assign(3 * static_cast<size_t>(local), 0.0);
     // The neighbourhood of a point: itself and its NormalSampleSize - 1 nearest other points (the
     // NormalSampleSize nearest points of vtkPCANormalEstimation, which include the point).
     const int others = std::min<int>(this->NormalSampleSize, local) - 1;
-    std::vector<int32_t> knn;
+    knnOthers = 0;
     if (!pcs::FindNearestNeighbors(locator, xyz.data(), static_cast<int32_t>(local), others, knn,
           [this](double fraction)
           {
@@ -1641,6 +1654,7 @@ int vtkCDTAdvancingFront::RequestData(
     {
       return;
     }
+    knnOthers = others;
     auto neighbor = [&](Id i, int j) { return knn[static_cast<size_t>(i) * others + j]; };
     // Normal of each point: the eigenvector of the smallest eigenvalue of the covariance matrix of
     // its neighbourhood (Hoppe et al.'s tangent plane), in parallel.
@@ -1905,10 +1919,27 @@ int vtkCDTAdvancingFront::RequestData(
     vtkWarningMacro("Ignored " << this->NumberOfDuplicatePoints
                                << " exact duplicate point(s) (the copy of smallest id is meshed).");
   }
+  // The table of nearest neighbours for the local spacing (the automatic MaximumRayDistance):
+  // LocalSpacingNeighbors per point (that of the normal estimation when it has that size).
+  constexpr int LocalSpacingNeighbors = 9;
+  const bool localRay = this->MaximumRayDistance <= 0.0;
+  const int localOthers = std::min<int>(LocalSpacingNeighbors, local - 1);
+  if (localRay && knnOthers != localOthers)
+  {
+    knnOthers = 0;
+    if (!pcs::FindNearestNeighbors(locator, xyz.data(), static_cast<int32_t>(local), localOthers,
+          knn, [this](double) { return !this->GetAbortExecute(); }))
+    {
+      return finish();
+    }
+    knnOthers = localOthers;
+  }
   std::vector<double> nearest(local, -1.0);
   {
-    // The smallest non-zero distance among the points within a radius, the radius doubled from
-    // the estimated spacing until one is found or the ball holds the whole cloud.
+    // The smallest non-zero distance to another point: from the table of nearest neighbours
+    // (nearest first) when one of them is distinct, else among the points within a radius, the
+    // radius doubled from the estimated spacing until one is found or the ball holds the whole
+    // cloud.
     double bounds[6];
     cloud->GetBounds(bounds);
     const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
@@ -1928,7 +1959,18 @@ int vtkCDTAdvancingFront::RequestData(
           {
             continue;
           }
-          for (double radius = first;; radius *= 2.0)
+          for (int j = 0; j < knnOthers; ++j)
+          {
+            const Id w = knn[static_cast<size_t>(k) * knnOthers + j];
+            const double d2 =
+              w >= 0 ? Distance2(&xyz[3 * static_cast<size_t>(w)], &xyz[3 * k]) : 0.0;
+            if (d2 > 0.0)
+            {
+              nearest[k] = std::sqrt(d2);
+              break;
+            }
+          }
+          for (double radius = first; nearest[k] < 0.0; radius *= 2.0)
           {
             bins.FindPointsWithinRadius(radius, &xyz[3 * k], ball, scratch);
             double best = -1.0;
@@ -1981,10 +2023,39 @@ int vtkCDTAdvancingFront::RequestData(
     return finish();
   }
 
+  // The local scale of each point for the automatic MaximumRayDistance: the local spacing (the
+  // mean of the nearest-point distances over the point and its LocalSpacingNeighbors nearest
+  // others) over the mean spacing, at most 1.
+  std::vector<double> scale(static_cast<size_t>(local), 1.0);
+  if (localRay)
+  {
+    const int others = knnOthers;
+    vtkSMPTools::For(0, local,
+      [&](Id begin, Id end)
+      {
+        for (Id i = begin; i < end; ++i)
+        {
+          double sum = nearest[i] > 0.0 ? nearest[i] : 0.0;
+          int count = nearest[i] > 0.0 ? 1 : 0;
+          for (int j = 0; j < others; ++j)
+          {
+            const Id w = knn[static_cast<size_t>(i) * others + j];
+            if (w >= 0 && nearest[w] > 0.0)
+            {
+              sum += nearest[w];
+              ++count;
+            }
+          }
+          scale[i] = count > 0 ? std::min(1.0, sum / count / meanSpacing) : 1.0;
+        }
+      });
+  }
+
   // The parameters in the (scaled) units of xyz.
   Parameters strict;
   strict.Radius = this->NeighborhoodRadius > 0.0 ? std::ldexp(this->NeighborhoodRadius, exponent)
                                                  : this->NeighborhoodRadiusFactor * meanSpacing;
+  strict.LocalRay = localRay;
   strict.MinimumNormalDot = this->MinimumNormalDot;
   strict.MaximumRay = this->MaximumRayDistance > 0.0
     ? std::ldexp(this->MaximumRayDistance, exponent)
@@ -1997,7 +2068,7 @@ int vtkCDTAdvancingFront::RequestData(
 
   // III.A and III.B: seeds in input order, each grown by the advancing front.
   pcs::SurfaceMesh mesh(local);
-  Front front(this, xyz.data(), normals.data(), status, locator, bins, mesh);
+  Front front(this, xyz.data(), normals.data(), scale.data(), status, locator, bins, mesh);
   front.SetEdgeReachCellSize(2.0 * strict.Radius);
   for (Id p = 0; p < local && !front.Aborted; ++p)
   {

@@ -124,11 +124,12 @@
  * @warning
  * Measured against CGAL's advancing front on the same clouds (Benchmarks/run_cdt_benchmark.py
  * and CPU times, 2026-11-23, loaded 2-core machine; the README gives the tables). CPU time: with
- * the meshes' vertex normals 1.45-1.73 times faster than CGAL on the 10^5-point samples and the
- * vertex sets of bunny00, armadillo and refined_elephant, but 1.3-1.4 times slower on the small
- * irregular vertex sets of the camel and the elephant (the II.D projection tests of the
- * triangles made are most of the time); with estimated normals 1.1-1.4 times faster on the
- * former, 1.6-2.4 times slower on the latter. Quality: 0 non-manifold edges and vertices and
+ * the meshes' vertex normals 1.36-1.56 times faster than CGAL on the 10^5-point samples and the
+ * vertex sets of bunny00, armadillo and refined_elephant, but 1.05 and 1.4 times slower on the
+ * small irregular vertex sets of the camel and the elephant (the II.D projection tests of the
+ * triangles made are most of the time; 1.7 and 1.5 times slower before the ray bound was made
+ * local); with estimated normals 1.1-1.4 times faster on the former, 1.6 and 2.5 times slower
+ * on the latter. Quality: 0 non-manifold edges and vertices and
  * coverage >= 99 % on every clean cloud; the Hausdorff distance exceeds 2 mean spacings on the
  * 10^5-point samples of the armadillo (2.04, a hole with edges of 7 spacings on a fold) and the
  * camel (2.36: a sharp tip of the mesh is 2.36 spacings from the nearest sample point, CGAL 2.38)
@@ -211,8 +212,13 @@ public:
   ///@{
   /**
    * Sections II.D.1-2: a neighbouring point or edge end point blocks a triangle only when its
-   * normal ray reaches the triangle's plane within this distance. Default 0: automatic, twice
-   * the mean spacing. Range [0, VTK_DOUBLE_MAX].
+   * normal ray reaches the triangle's plane within this distance. Default 0: automatic and
+   * local, twice the local spacing at the triangle: the largest, over its three vertices, of the
+   * mean nearest-point distance over the vertex and its 9 nearest other points, capped at the
+   * mean spacing (so at most twice the mean spacing, the bound used before it was made local).
+   * Where the sampling is denser than the mean (mesh vertices at details), the bound shrinks with
+   * the triangles and so does the neighbourhood each II.D test visits; sparser parts keep the
+   * global bound. A value > 0 is one global bound. Range [0, VTK_DOUBLE_MAX].
    */
   vtkSetClampMacro(MaximumRayDistance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumRayDistance, double);

@@ -67,6 +67,51 @@ void OutwardHullTriangle(const int32_t* v, int32_t triangle[3])
   }
 }
 
+// Voronoi vertex of a flat tetrahedron (zero volume in floating point: four coplanar points,
+// which in a Delaunay tetrahedralization lie on one circle, e.g. a ring of a scan): its
+// circumsphere is not unique (the centres fill the circle's axis), so the vertex is the centre
+// of the circle through its face of largest area, on that axis; the centroid when every face is
+// collinear in floating point. Returns the distance from the vertex to the cell's first point.
+double FlatCellCenter(const double* const p[4], double center[3])
+{
+  double best = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    center[i] = 0.25 * (p[0][i] + p[1][i] + p[2][i] + p[3][i]);
+  }
+  for (int skip = 0; skip < 4; ++skip)
+  {
+    const double* a = p[(skip + 1) & 3];
+    const double* b = p[(skip + 2) & 3];
+    const double* c = p[(skip + 3) & 3];
+    double ab[3], ac[3], n[3];
+    vtkMath::Subtract(b, a, ab);
+    vtkMath::Subtract(c, a, ac);
+    vtkMath::Cross(ab, ac, n);
+    const double n2 = vtkMath::Dot(n, n);
+    if (!(n2 > best) || !std::isfinite(n2))
+    {
+      continue;
+    }
+    // a + (|ac|^2 (n x ab) + |ab|^2 (ac x n)) / (2 |n|^2)
+    double nab[3], acn[3];
+    vtkMath::Cross(n, ab, nab);
+    vtkMath::Cross(ac, n, acn);
+    const double lab = vtkMath::Dot(ab, ab), lac = vtkMath::Dot(ac, ac);
+    double candidate[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      candidate[i] = a[i] + (lac * nab[i] + lab * acn[i]) / (2.0 * n2);
+    }
+    if (std::isfinite(candidate[0]) && std::isfinite(candidate[1]) && std::isfinite(candidate[2]))
+    {
+      best = n2;
+      std::copy(candidate, candidate + 3, center);
+    }
+  }
+  return std::sqrt(vtkMath::Distance2BetweenPoints(center, p[0]));
+}
+
 // Circumcentre of a triangle in 2D coordinates.
 bool TriangleCircumcenter2D(
   const double* a, const double* b, const double* c, double center[2], double& radius)
@@ -439,6 +484,12 @@ void BuildVoronoi3D(const double* xyz, const pcs::Delaunay3D& dt,
     double center[3];
     pcs::Delaunay3D::Circumsphere(P(dt.Vertex(c, 0)), P(dt.Vertex(c, 1)), P(dt.Vertex(c, 2)),
       P(dt.Vertex(c, 3)), center, radii[f]);
+    if (!std::isfinite(center[0]) || !std::isfinite(center[1]) || !std::isfinite(center[2]))
+    {
+      const double* corners[4] = { P(dt.Vertex(c, 0)), P(dt.Vertex(c, 1)), P(dt.Vertex(c, 2)),
+        P(dt.Vertex(c, 3)) };
+      radii[f] = FlatCellCenter(corners, center);
+    }
     vertices->SetPoint(f, center);
     for (int j = 0; j < 4; ++j)
     {

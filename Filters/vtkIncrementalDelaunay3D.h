@@ -47,7 +47,8 @@
  * - port 1 (vtkUnstructuredGrid): the tetrahedra (triangles in 2.5D) over the same points,
  *   positively oriented, with cell data `Circumradius`. Produced when GenerateTetrahedra is on.
  * - port 2 (vtkPolyData): the Voronoi diagram, dual of the triangulation (paper 002, section
- *   2.1): one vertex per Delaunay cell (its circumcentre, point data `Circumradius`), one line
+ *   2.1): one vertex per Delaunay cell (its circumcentre, point data `Circumradius`; for a flat
+ *   cell -- four cocircular points, e.g. of one scan ring -- the centre of their circle), one line
  *   per pair of adjacent cells (a Voronoi edge, dual of a Delaunay facet), and for every hull
  *   facet a ray, clipped at one bounding-box diagonal from its circumcentre and marked by the
  *   cell data `Unbounded` = 1. Produced when GenerateVoronoi is on.

@@ -461,6 +461,24 @@ std::vector<InputCase> Inputs()
     xyz.insert(xyz.end(), inner.begin(), inner.end());
     cases.push_back({ "sphere around a 1e-6 sphere", xyz, false });
   }
+  {
+    // A sphere scanned in 40 rings of 50 points (dense along a ring, sparse across): the points
+    // of a ring are exactly coplanar, so the tetrahedralization has flat cells (4 cocircular
+    // points) whose circumcentre is undefined; their Voronoi vertices were NaN.
+    std::vector<double> xyz;
+    const double pi = 3.14159265358979323846;
+    for (int ring = 0; ring < 40; ++ring)
+    {
+      const double t = 0.05 + (pi - 0.1) * ring / 39.0;
+      for (int k = 0; k < 50; ++k)
+      {
+        const double f = 2.0 * pi * k / 50.0;
+        xyz.insert(
+          xyz.end(), { std::sin(t) * std::cos(f), std::sin(t) * std::sin(f), std::cos(t) });
+      }
+    }
+    cases.push_back({ "sphere scanned in rings", xyz, false });
+  }
   // Normals (exact, outward on the unit sphere) with zero-length or NaN ones.
   for (int kind = 0; kind < 4; ++kind)
   {
@@ -623,6 +641,36 @@ bool CheckOutput(const FilterEntry& filter, const std::string& label, vtkPolyDat
   return true;
 }
 
+// vtkIncrementalDelaunay3D's Voronoi diagram (port 2): every vertex finite, every line's ids in
+// range.
+bool CheckVoronoi(const std::string& label, vtkPolyData* cloud)
+{
+  vtkNew<vtkIncrementalDelaunay3D> delaunay;
+  delaunay->GenerateVoronoiOn();
+  delaunay->SetInputData(cloud);
+  Update(delaunay);
+  vtkPolyData* voronoi = delaunay->GetVoronoiOutput();
+  for (vtkIdType i = 0; i < voronoi->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    voronoi->GetPoint(i, p);
+    PCS_CHECK(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]),
+      label << ": Voronoi vertex " << i << " is not finite");
+  }
+  for (vtkIdType c = 0; c < voronoi->GetNumberOfCells(); ++c)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    voronoi->GetCellPoints(c, npts, pts);
+    for (vtkIdType k = 0; k < npts; ++k)
+    {
+      PCS_CHECK(pts[k] >= 0 && pts[k] < voronoi->GetNumberOfPoints(),
+        label << ": Voronoi line " << c << " has point id " << pts[k]);
+    }
+  }
+  return true;
+}
+
 bool RunCase(const FilterEntry& filter, const InputCase& input)
 {
   const std::string label = filter.Info.Name + " / " + input.Name;
@@ -658,6 +706,10 @@ bool RunCase(const FilterEntry& filter, const InputCase& input)
     const vtkIdType used = pcstest::FieldCount(quality->GetOutput(), "NumberOfUsedPoints");
     PCS_CHECK(used == prepared->GetNumberOfPoints(),
       label << ": " << used << " of " << prepared->GetNumberOfPoints() << " points used");
+  }
+  if (filter.Info.Name == "vtkIncrementalDelaunay3D" && !CheckVoronoi(label, prepared))
+  {
+    return false;
   }
   return CheckOutput(filter, label, prepared, algorithm->GetOutput(), true);
 }

@@ -175,6 +175,8 @@ private:
 
   bool Expand(Id a, Id b, int level, bool mayReverse = true);
   bool OnFrontLoop(Id a, Id b, Id c) const;
+  bool ShortLoop(Id a, Id b);
+  double CloudSpacing();
   bool PlantSeed();
   bool TrySeed(Id p1, bool relaxed);
   void ProcessQueue();
@@ -910,9 +912,13 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
     // front closes around a torus's tube, but after the first stage it is refused: there it came
     // only from near-contacts of the front with itself, folding the mesh over (a handle on
     // random sphere and torus samples, and on CGAL's knot2 vertices).
-    if (stage > 0 && !this->OnFrontLoop(a, b, c) &&
-      this->TriangleLabel(this->Mesh.FindTriangle(c, nc)) ==
-        this->TriangleLabel(this->Mesh.FindTriangle(a, b)))
+    // At the first stage it is also refused when either loop is a hole (ShortLoop): a handle
+    // between a hole and the rest of the front does not close around a tube, it jumps across the
+    // surface (CGAL's armadillo vertices: loops of 3 and 5 edges; diplodocus: 9 and 13 edges,
+    // 4.1 and 19.8 mean spacings long); the hole is closed on its own (step 6).
+    if (this->TriangleLabel(this->Mesh.FindTriangle(c, nc)) ==
+        this->TriangleLabel(this->Mesh.FindTriangle(a, b)) &&
+      (stage > 0 || this->ShortLoop(a, b) || this->ShortLoop(c, nc)) && !this->OnFrontLoop(a, b, c))
     {
       continue;
     }
@@ -966,6 +972,58 @@ bool Grower::OnFrontLoop(Id a, Id b, Id c) const
     }
   }
   return false;
+}
+
+//------------------------------------------------------------------------------------------------
+// The front loop through the front edge a->b is a hole: it has at most max(3, MaximumHoleEdges)
+// edges, or a perimeter below 2 pi times 2 mean spacings (the loop around a tube of radius below
+// 2 spacings, which step 6 cannot tell from a sampling gap either).
+bool Grower::ShortLoop(Id a, Id b)
+{
+  const int bound = std::max(3, this->Par.MaxHoleEdges);
+  const double limit = 4.0 * vtkMath::Pi() * this->CloudSpacing();
+  double perimeter = 0.0;
+  Id s = a, e = b;
+  for (int edges = 1;; ++edges)
+  {
+    perimeter += std::sqrt(Distance2(this->P3(s), this->P3(e)));
+    if (edges > bound && !(perimeter < limit))
+    {
+      return false;
+    }
+    const Id next = this->Mesh.NextBoundaryVertex(s, e);
+    s = e;
+    e = next;
+    if (e < 0)
+    {
+      return false;
+    }
+    if (s == a && e == b)
+    {
+      return true;
+    }
+  }
+}
+
+// The cloud's mean nearest-neighbour distance (computed once).
+double Grower::CloudSpacing()
+{
+  if (this->MeanSpacing < 0.0)
+  {
+    double sum = 0.0;
+    int64_t count = 0;
+    for (Id v = 0; v < this->N; ++v)
+    {
+      const Id nearest = this->Neighbors(v)[0];
+      if (nearest >= 0)
+      {
+        sum += std::sqrt(Distance2(this->P3(v), this->P3(nearest)));
+        ++count;
+      }
+    }
+    this->MeanSpacing = count > 0 ? sum / static_cast<double>(count) : 0.0;
+  }
+  return this->MeanSpacing;
 }
 
 //------------------------------------------------------------------------------------------------
@@ -1323,22 +1381,7 @@ bool Grower::FillNarrowLoop(const std::vector<Id>& frontLoop)
   // anisotropically sampled thin feature the nearest neighbour is much closer than the mesh's
   // edges (the camel's ears: 0.26 mean spacings, edges 0.7-0.9), and the local value alone
   // refused fills that stay within 0.8 mean spacings of the points.
-  if (this->MeanSpacing < 0.0)
-  {
-    double sum = 0.0;
-    int64_t count = 0;
-    for (Id v = 0; v < this->N; ++v)
-    {
-      const Id nearest = this->Neighbors(v)[0];
-      if (nearest >= 0)
-      {
-        sum += std::sqrt(Distance2(this->P3(v), this->P3(nearest)));
-        ++count;
-      }
-    }
-    this->MeanSpacing = count > 0 ? sum / static_cast<double>(count) : 0.0;
-  }
-  spacing = std::max(spacing, this->MeanSpacing);
+  spacing = std::max(spacing, this->CloudSpacing());
   const double reach = 2.0 * spacing;
   // A flat region bounded by the loop whose points all lie within `reach` of the loop has at
   // most perimeter x reach of area: a wide open border is refused before the cubic fill.

@@ -101,6 +101,15 @@
  *    MaximumNormalAngle of both triangles it closes between. A bridge made after the first
  *    stage may not join two different front loops of one part (that would add a handle: there
  *    it came only from near-contacts of the front with itself, which folded the mesh over).
+ *    At the first stage such a bridge closes the front around a tube (a torus), but not when
+ *    either loop is a hole: at most max(3, MaximumHoleEdges) edges, or shorter than 4 pi mean
+ *    spacings (the loop around a tube of radius below 2 spacings, which step 6 cannot tell from
+ *    a sampling gap either). A handle to a hole jumps across the surface; the hole is closed on
+ *    its own instead. On CGAL's mesh vertex sets each handle of a wrong genus came from such a
+ *    first-stage bridge, made between two loops 1-3 spacings apart in space (temporary trace):
+ *    armadillo loops of 3 and 5 edges (8.7 and 14 spacings long), diplodocus 9 and 13 edges
+ *    (4.1 and 19.8 spacings), camel three (the shortest loops 4, 5 and 14 edges). The
+ *    true handles of the elephant join loops of 14 to 64 edges, 21 spacings long or more.
  *    Constraint 4 and the overlap tests are never relaxed. Measured with
  *    Benchmarks/run_local_optimum_closure.py on random (Poisson) samples of 2,000, 5,000, 10,000
  *    and 20,000 points, 30 seeds each, counting the runs not closed over every point with the
@@ -138,11 +147,9 @@
  *    elephant 30 -> 0 (the three closed, genus 1, 1 and 3; the elephant's is its mesh's), 10^5
  *    samples of the camel 264 -> 95, of the elephant 24 -> 0 (closed, genus 3), of the armadillo 29
  *    -> 20; random tori not closed over every point 1 of 120 -> 0; Hausdorff distances unchanged
- *    (Benchmarks/results/local_optimum.md). Filling a loop never changes the genus: the camel's
- *    mesh has genus 3 with its loops open or closed, from triangles made during the growth across
- *    the gap between its hind legs, whose surfaces come within 0.16 mean spacings of each other
- *    (closer than the sampling resolves); the armadillo's and diplodocus's handles are made during
- *    the growth as well.
+ *    (Benchmarks/results/local_optimum.md). Filling a loop never changes the genus: the handles
+ *    are made by bridges during the growth (step 4; the armadillo and the diplodocus are genus 0
+ *    now, the camel keeps one handle of three, its loops open or closed).
  * 7. Folds (added): an edge whose two triangles bend by more than MaximumNormalAngle (the
  *    bound of constraint 1) is flipped when the other diagonal of its quadrilateral is shorter
  *    and not in the mesh, and the flip raises the smallest normal dot product among the five

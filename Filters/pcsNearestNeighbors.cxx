@@ -72,35 +72,77 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
   locator->GetDivisions(divisions);
   const vtkIdType numberOfBuckets = locator->GetNumberOfBuckets();
   std::vector<int32_t> bucketStart(static_cast<size_t>(numberOfBuckets) + 1, 0);
-  std::vector<int32_t> bucketIds;
-  bucketIds.reserve(static_cast<size_t>(n));
+  // Exact duplicates share one entry: the points of a bucket are sorted by coordinates (then id)
+  // and each run of equal points becomes one entry with its member ids in ascending order. A
+  // query meets a pile of d copies as one candidate position and takes at most k of its members
+  // (the smallest ids: ties are broken by id), so a cloud with 10^6 copies of one point costs
+  // O(n k), not O(d^2). Non-finite points stay single entries, in id order.
+  std::vector<int32_t> entryStart; // members of entry e: members[entryStart[e], entryStart[e+1])
+  std::vector<int32_t> members;
+  std::vector<double> entryXYZ;
+  members.reserve(static_cast<size_t>(n));
   {
     vtkNew<vtkIdList> list;
+    std::vector<int32_t> ids;
+    auto finite = [xyz](int32_t id)
+    {
+      const double* q = xyz + 3 * static_cast<size_t>(id);
+      return std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2]);
+    };
+    auto before = [xyz, &finite](int32_t a, int32_t b)
+    {
+      const bool fa = finite(a), fb = finite(b);
+      if (fa != fb || !fa)
+      {
+        return fa != fb ? fa : a < b;
+      }
+      const double* qa = xyz + 3 * static_cast<size_t>(a);
+      const double* qb = xyz + 3 * static_cast<size_t>(b);
+      for (int c = 0; c < 3; ++c)
+      {
+        if (qa[c] != qb[c])
+        {
+          return qa[c] < qb[c];
+        }
+      }
+      return a < b;
+    };
     for (vtkIdType b = 0; b < numberOfBuckets; ++b)
     {
       if (locator->GetNumberOfPointsInBucket(b) > 0)
       {
         locator->GetBucketIds(b, list);
+        ids.clear();
         for (vtkIdType j = 0; j < list->GetNumberOfIds(); ++j)
         {
-          bucketIds.push_back(static_cast<int32_t>(list->GetId(j)));
+          ids.push_back(static_cast<int32_t>(list->GetId(j)));
+        }
+        if (ids.size() > 1)
+        {
+          std::sort(ids.begin(), ids.end(), before);
+        }
+        for (size_t j = 0; j < ids.size(); ++j)
+        {
+          const double* q = xyz + 3 * static_cast<size_t>(ids[j]);
+          const bool same = j > 0 && finite(ids[j]) && finite(ids[j - 1]) &&
+            std::equal(q, q + 3, xyz + 3 * static_cast<size_t>(ids[j - 1]));
+          if (!same)
+          {
+            entryStart.push_back(static_cast<int32_t>(members.size()));
+            entryXYZ.insert(entryXYZ.end(), q, q + 3);
+          }
+          members.push_back(ids[j]);
         }
       }
-      bucketStart[b + 1] = static_cast<int32_t>(bucketIds.size());
+      bucketStart[b + 1] = static_cast<int32_t>(entryStart.size());
     }
+    entryStart.push_back(static_cast<int32_t>(members.size()));
   }
-  // The coordinates in the same bucket order, so that a query reads its candidates' coordinates
-  // contiguously (the same doubles, hence the same distances).
-  const int32_t bucketed = static_cast<int32_t>(bucketIds.size());
-  std::vector<double> bucketXYZ(3 * static_cast<size_t>(bucketed));
-  for (int32_t j = 0; j < bucketed; ++j)
-  {
-    std::copy_n(
-      xyz + 3 * static_cast<size_t>(bucketIds[j]), 3, &bucketXYZ[3 * static_cast<size_t>(j)]);
-  }
-  // The queries run in bucket order when the buckets hold every point once (always, for a
-  // locator built on these points): consecutive queries are then close in space, which keeps the
-  // carried radius apt and the buckets they read in cache. The order does not change the result.
+  // The queries run in bucket order (entry by entry) when the buckets hold every point once
+  // (always, for a locator built on these points): consecutive queries are then close in space,
+  // which keeps the carried radius apt and the buckets they read in cache. The order does not
+  // change the result.
+  const int32_t bucketed = static_cast<int32_t>(members.size());
   bool bucketOrder = false;
   if (bucketed == n)
   {
@@ -108,7 +150,7 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
     bool permutation = true;
     for (int32_t j = 0; j < n && permutation; ++j)
     {
-      const int32_t id = bucketIds[j];
+      const int32_t id = members[j];
       permutation = id >= 0 && id < n && !seen[id];
       if (permutation)
       {
@@ -150,7 +192,7 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
       std::vector<std::pair<double, int32_t>> found;
       for (int32_t position = begin; position < end; ++position)
       {
-        const int32_t i = bucketOrder ? bucketIds[position] : position;
+        const int32_t i = bucketOrder ? members[position] : position;
         const double* p = xyz + 3 * static_cast<size_t>(i);
         // Only the candidates inside the ball are kept: once the ball holds more than k points,
         // the k nearest others are inside it, ties at its radius included. After the last
@@ -175,16 +217,20 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
               {
                 const vtkIdType bucket =
                   bx + divisions[0] * (by + static_cast<vtkIdType>(divisions[1]) * bz);
-                for (int32_t j = bucketStart[bucket]; j < bucketStart[bucket + 1]; ++j)
+                for (int32_t e = bucketStart[bucket]; e < bucketStart[bucket + 1]; ++e)
                 {
-                  const double d2 = Distance2(p, &bucketXYZ[3 * static_cast<size_t>(j)]);
+                  const double d2 = Distance2(p, &entryXYZ[3 * static_cast<size_t>(e)]);
                   if (d2 <= r2 || all)
                   {
-                    inside += d2 <= r2 ? 1 : 0;
-                    const int32_t id = bucketIds[j];
-                    if (id != i)
+                    inside += d2 <= r2 ? entryStart[e + 1] - entryStart[e] : 0;
+                    int taken = 0;
+                    for (int32_t m = entryStart[e]; m < entryStart[e + 1] && taken < k; ++m)
                     {
-                      found.emplace_back(d2, id);
+                      if (members[m] != i)
+                      {
+                        found.emplace_back(d2, members[m]);
+                        ++taken;
+                      }
                     }
                   }
                 }

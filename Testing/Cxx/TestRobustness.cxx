@@ -1,6 +1,6 @@
 // Table-driven robustness test (issue 9): every filter of the module against every bad or
 // degenerate input of the table. For each (filter, input):
-// - Update() returns (no crash; a hang is caught by the ctest timeout);
+// - Update() returns (no crash; a hang is caught by the ctest timeout, 300 s);
 // - a warning or an error is reported where the input is unusable (no input, no points, one or
 //   two points, all points identical, collinear points);
 // - the output is valid: a vtkPolyData with all the input points (filters pass every point
@@ -478,6 +478,19 @@ std::vector<InputCase> Inputs()
       }
     }
     cases.push_back({ "sphere scanned in rings", xyz, false });
+  }
+  {
+    // 300,000 copies of one point and 3 other points: every copy's nearest-neighbour query met
+    // the whole pile (quadratic: vtkCDTAdvancingFront's estimated normals took 46 s CPU for 10^5
+    // copies, far more than the test's timeout for these).
+    std::vector<double> xyz;
+    xyz.reserve(3 * 300003);
+    for (int i = 0; i < 300000; ++i)
+    {
+      xyz.insert(xyz.end(), { 0.3, 0.3, 0.3 });
+    }
+    xyz.insert(xyz.end(), { 1, 0, 0, 0, 1, 0, 0, 0, 1 });
+    cases.push_back({ "300,000 identical points plus 3 others", xyz, false });
   }
   // Normals (exact, outward on the unit sphere) with zero-length or NaN ones.
   for (int kind = 0; kind < 4; ++kind)

@@ -3217,6 +3217,19 @@ int vtkGreedySurfaceTriangulation::RequestData(
       status->SetValue(i, r.Status[localOf[i]]);
     }
   }
+  // Lost points left unused (Status 2): without a warning a cloud the filter cannot read (scan
+  // lines 12 times denser along than across: every point's K neighbours on its own line) gave
+  // 2 triangles for 20,000 points silently.
+  vtkIdType lostUnused = 0;
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    lostUnused += status->GetValue(i) == LOST && !used->GetValue(i) ? 1 : 0;
+  }
+  if (lostUnused > 0 && !connectivity.empty())
+  {
+    vtkWarningMacro(<< lostUnused << " of " << numberOfPoints
+                    << " point(s) are not used by any triangle (Status 2, point data Used = 0).");
+  }
   if (connectivity.empty())
   {
     vtkWarningMacro("No triangle could be made from the " << r.N

@@ -216,8 +216,9 @@
  * the hole beside it is closed without it, and its own open end is capped (CapOpenEnds). Lost
  * points farther from every
  * triangle than the triangle's longest edge, or whose insertion would fold the mesh, stay
- * unused (Status 2, counted in NumberOfUnusedPoints): on the thin legs of CGAL's camel 186 of
- * its 9,770 vertices (1.9 %).
+ * unused (Status 2, counted in NumberOfUnusedPoints, with a warning): on the thin legs of CGAL's
+ * camel 186 of its 9,770 vertices (1.9 %). Scan lines much denser along than across (every point's
+ * NumberOfNeighbors nearest neighbours on its own line) leave almost every point unused.
  *
  * @sa
  * vtkIncrementalDelaunay3D vtkLocalOptimumGrowth vtkCDTAdvancingFront vtkReconstructionQuality

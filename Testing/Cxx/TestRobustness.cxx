@@ -492,6 +492,21 @@ std::vector<InputCase> Inputs()
     xyz.insert(xyz.end(), { 1, 0, 0, 0, 1, 0, 0, 0, 1 });
     cases.push_back({ "300,000 identical points plus 3 others", xyz, false });
   }
+  {
+    // A plane scanned in 40 lines of 500 points, 12.5 times denser along a line than across:
+    // the K nearest neighbours of a point all lie on its own line. vtkGreedySurfaceTriangulation
+    // made 2 triangles and left 19,996 points unused without a warning.
+    std::vector<double> xyz;
+    for (int line = 0; line < 40; ++line)
+    {
+      for (int k = 0; k < 500; ++k)
+      {
+        const double x = k / 499.0;
+        xyz.insert(xyz.end(), { x, line / 39.0, 0.01 * std::sin(7.0 * x) });
+      }
+    }
+    cases.push_back({ "plane scanned in lines", xyz, false });
+  }
   // Normals (exact, outward on the unit sphere) with zero-length or NaN ones.
   for (int kind = 0; kind < 4; ++kind)
   {
@@ -719,6 +734,22 @@ bool RunCase(const FilterEntry& filter, const InputCase& input)
     const vtkIdType used = pcstest::FieldCount(quality->GetOutput(), "NumberOfUsedPoints");
     PCS_CHECK(used == prepared->GetNumberOfPoints(),
       label << ": " << used << " of " << prepared->GetNumberOfPoints() << " points used");
+  }
+  // A reconstruction that leaves input points out of every triangle says so (the convex hull
+  // of vtkIncrementalDelaunay3D leaves the inner points out by definition).
+  if (filter.Info.Reconstructs && filter.Info.Name != "vtkIncrementalDelaunay3D" &&
+    algorithm->GetOutput()->GetNumberOfPolys() > 0)
+  {
+    vtkNew<vtkReconstructionQuality> quality;
+    quality->SetInputData(algorithm->GetOutput());
+    quality->ComputeDistancesOff();
+    vtkNew<vtkCallbackCommand> silence;
+    quality->AddObserver(vtkCommand::WarningEvent, silence);
+    quality->Update();
+    const vtkIdType used = pcstest::FieldCount(quality->GetOutput(), "NumberOfUsedPoints");
+    PCS_CHECK(used == algorithm->GetOutput()->GetNumberOfPoints() || messages.Warnings > 0,
+      label << ": " << algorithm->GetOutput()->GetNumberOfPoints() - used
+            << " point(s) unused without a warning");
   }
   if (filter.Info.Name == "vtkIncrementalDelaunay3D" && !CheckVoronoi(label, prepared))
   {

@@ -571,7 +571,8 @@ struct Parameters
   // II.D: MaximumRay scaled at each triangle by the largest local scale of its vertices
   // (Front::Scale, at most 1).
   bool LocalRay = false;
-  double MinimumArea = 0;            // II.E
+  double MinimumArea = 0;            // II.E, when positive
+  double MinimumAreaRatio = 0;       // II.E otherwise: area / (longest edge)^2
   int MaximumCandidates = 0;         // candidates submitted to the II.D tests per edge
   bool CloseTriangularHoles = false; // III.C: a 3-edge hole closes without II.C.2
   // III.C: II.C.1 is not required of a triangle whose two edges at its third vertex are at most
@@ -944,6 +945,15 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
   {
     return false;
   }
+  if (parameters.MinimumAreaRatio > 0.0)
+  {
+    const double longest2 = std::max({ Distance2(this->P(e0), this->P(e1)),
+      Distance2(this->P(e1), this->P(third)), Distance2(this->P(third), this->P(e0)) });
+    if (!(0.5 * length >= parameters.MinimumAreaRatio * longest2))
+    {
+      return false;
+    }
+  }
   // Orientation agrees with the vertex normals (the mesh is oriented like the normals).
   const double sum[3] = { n0[0] + n1[0] + n2[0], n0[1] + n1[1] + n2[1], n0[2] + n1[2] + n2[2] };
   if (Dot(normal, sum) <= 0.0)
@@ -1178,6 +1188,12 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
   const double radii[rings] = { 0.25 * parameters.Radius, 0.5 * parameters.Radius,
     parameters.Radius };
   this->ProjectionTests = 0;
+  // Besides the projection tests, a bound on the candidates examined (the cheap tests reject
+  // without counting one): a dense cluster puts thousands of points in every ring, and sorting
+  // and examining them all for each front edge made it quadratic. Only the nearest candidates
+  // within the bound are sorted.
+  const size_t examinedBudget = 50 * static_cast<size_t>(parameters.MaximumCandidates);
+  size_t examined = 0;
   for (int ring = 0; ring < rings; ++ring)
   {
     this->FindPoints(radii[ring], midpoint, this->Near);
@@ -1221,11 +1237,22 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
         }
       }
     }
+    const size_t remaining = examinedBudget - examined;
+    if (this->Candidates.size() > remaining)
+    {
+      std::nth_element(this->Candidates.begin(), this->Candidates.begin() + remaining,
+        this->Candidates.end());
+      this->Candidates.resize(remaining);
+    }
     std::sort(this->Candidates.begin(), this->Candidates.end());
     this->Candidates.erase(
       std::unique(this->Candidates.begin(), this->Candidates.end()), this->Candidates.end());
     for (const auto& candidate : this->Candidates)
     {
+      if (++examined > examinedBudget)
+      {
+        return None;
+      }
       if (this->IsValid(e0, e1, candidate.second, opposite, parameters))
       {
         return candidate.second;
@@ -1336,12 +1363,25 @@ bool Front::Seed(Id p, const Parameters& parameters)
       firsts.emplace_back(Distance2(this->P(p), this->P(q)), q);
     }
   }
-  std::sort(firsts.begin(), firsts.end());
-  // One budget of projection tests for the seed point (over all its first edges).
+  // One budget of projection tests for the seed point (over all its first edges), and one of
+  // examined triangles (the cheap tests reject without counting a projection test: without it a
+  // dense cluster in a large ball costs the cube of its size). Only the nearest points within
+  // the budgets are sorted.
+  const size_t examinedBudget = 10 * static_cast<size_t>(parameters.MaximumCandidates);
+  size_t examined = 0;
+  auto sortNearest = [](std::vector<std::pair<double, Id>>& list, size_t count) {
+    if (list.size() > count)
+    {
+      std::nth_element(list.begin(), list.begin() + count, list.end());
+      list.resize(count);
+    }
+    std::sort(list.begin(), list.end());
+  };
+  sortNearest(firsts, examinedBudget);
   this->ProjectionTests = 0;
   for (const auto& first : firsts)
   {
-    if (this->ProjectionTests >= parameters.MaximumCandidates)
+    if (this->ProjectionTests >= parameters.MaximumCandidates || examined >= examinedBudget)
     {
       break;
     }
@@ -1360,13 +1400,14 @@ bool Front::Seed(Id p, const Parameters& parameters)
         this->Candidates.emplace_back(Distance2(this->P(x), midpoint), x);
       }
     }
-    std::sort(this->Candidates.begin(), this->Candidates.end());
+    sortNearest(this->Candidates, examinedBudget - examined);
     for (const auto& candidate : this->Candidates)
     {
-      if (this->ProjectionTests >= parameters.MaximumCandidates)
+      if (this->ProjectionTests >= parameters.MaximumCandidates || examined >= examinedBudget)
       {
         break;
       }
+      ++examined;
       const Id x = candidate.second;
       if (this->IsValid(p, q, x, None, parameters))
       {
@@ -1635,17 +1676,20 @@ int vtkCDTAdvancingFront::RequestData(
   // nearest neighbours (see the class docs for why), then all flipped if needed so that the normal
   // of the point farthest from the centroid (a point of the convex hull, where the outside is
   // known) points away from the centroid: outwards on a closed surface.
-  // The table of nearest neighbours (knnOthers per point), kept for the local spacing.
+  // The table of nearest neighbours (knnOthers per point), kept for the local spacing when it is
+  // the table of all the points.
   std::vector<int32_t> knn;
   int knnOthers = 0;
-  auto estimateNormals = [&](std::vector<double>& estimatedNormals)
+  auto estimateNormalsOn = [&](const double* pts, Id count, vtkStaticPointLocator* loc,
+                             std::vector<double>& estimatedNormals, std::vector<int32_t>& table,
+                             int& tableOthers)
   {
-    estimatedNormals.assign(3 * static_cast<size_t>(local), 0.0);
+    estimatedNormals.assign(3 * static_cast<size_t>(count), 0.0);
     // The neighbourhood of a point: itself and its NormalSampleSize - 1 nearest other points (the
     // NormalSampleSize nearest points of vtkPCANormalEstimation, which include the point).
-    const int others = std::min<int>(this->NormalSampleSize, local) - 1;
-    knnOthers = 0;
-    if (!pcs::FindNearestNeighbors(locator, xyz.data(), static_cast<int32_t>(local), others, knn,
+    const int others = std::min<int>(this->NormalSampleSize, count) - 1;
+    tableOthers = 0;
+    if (!pcs::FindNearestNeighbors(loc, pts, static_cast<int32_t>(count), others, table,
           [this](double fraction)
           {
             this->UpdateProgress(0.02 + 0.06 * fraction);
@@ -1654,11 +1698,11 @@ int vtkCDTAdvancingFront::RequestData(
     {
       return;
     }
-    knnOthers = others;
-    auto neighbor = [&](Id i, int j) { return knn[static_cast<size_t>(i) * others + j]; };
+    tableOthers = others;
+    auto neighbor = [&](Id i, int j) { return table[static_cast<size_t>(i) * others + j]; };
     // Normal of each point: the eigenvector of the smallest eigenvalue of the covariance matrix of
     // its neighbourhood (Hoppe et al.'s tangent plane), in parallel.
-    vtkSMPTools::For(0, local,
+    vtkSMPTools::For(0, count,
       [&](Id begin, Id end)
       {
         std::vector<Id> hood;
@@ -1677,7 +1721,7 @@ int vtkCDTAdvancingFront::RequestData(
           {
             for (int c = 0; c < 3; ++c)
             {
-              mean[c] += xyz[3 * static_cast<size_t>(h) + c];
+              mean[c] += pts[3 * static_cast<size_t>(h) + c];
             }
           }
           const double count = static_cast<double>(hood.size());
@@ -1690,9 +1734,9 @@ int vtkCDTAdvancingFront::RequestData(
           double* covariance[3] = { row0, row1, row2 };
           for (Id h : hood)
           {
-            const double d[3] = { xyz[3 * static_cast<size_t>(h)] - mean[0],
-              xyz[3 * static_cast<size_t>(h) + 1] - mean[1],
-              xyz[3 * static_cast<size_t>(h) + 2] - mean[2] };
+            const double d[3] = { pts[3 * static_cast<size_t>(h)] - mean[0],
+              pts[3 * static_cast<size_t>(h) + 1] - mean[1],
+              pts[3 * static_cast<size_t>(h) + 2] - mean[2] };
             for (int r = 0; r < 3; ++r)
             {
               for (int c = 0; c < 3; ++c)
@@ -1724,10 +1768,10 @@ int vtkCDTAdvancingFront::RequestData(
     // Consistent orientation by the graph traversal of vtkPCANormalEstimation: breadth first from
     // the lowest unvisited id, each newly reached neighbour flipped to agree with the point it
     // is reached from.
-    std::vector<uint8_t> visited(static_cast<size_t>(local), 0);
+    std::vector<uint8_t> visited(static_cast<size_t>(count), 0);
     std::vector<Id> queue;
-    queue.reserve(static_cast<size_t>(local));
-    for (Id seed = 0; seed < local; ++seed)
+    queue.reserve(static_cast<size_t>(count));
+    for (Id seed = 0; seed < count; ++seed)
     {
       if (visited[seed])
       {
@@ -1759,31 +1803,87 @@ int vtkCDTAdvancingFront::RequestData(
       }
     }
     double centroid[3] = { 0.0, 0.0, 0.0 };
-    for (Id k = 0; k < local; ++k)
+    for (Id k = 0; k < count; ++k)
     {
       for (int c = 0; c < 3; ++c)
       {
-        centroid[c] += xyz[3 * static_cast<size_t>(k) + c] / local;
+        centroid[c] += pts[3 * static_cast<size_t>(k) + c] / count;
       }
     }
     Id farthest = 0;
-    for (Id k = 1; k < local; ++k)
+    for (Id k = 1; k < count; ++k)
     {
-      if (Distance2(&xyz[3 * static_cast<size_t>(k)], centroid) >
-        Distance2(&xyz[3 * static_cast<size_t>(farthest)], centroid))
+      if (Distance2(&pts[3 * static_cast<size_t>(k)], centroid) >
+        Distance2(&pts[3 * static_cast<size_t>(farthest)], centroid))
       {
         farthest = k;
       }
     }
-    const double away[3] = { xyz[3 * static_cast<size_t>(farthest)] - centroid[0],
-      xyz[3 * static_cast<size_t>(farthest) + 1] - centroid[1],
-      xyz[3 * static_cast<size_t>(farthest) + 2] - centroid[2] };
+    const double away[3] = { pts[3 * static_cast<size_t>(farthest)] - centroid[0],
+      pts[3 * static_cast<size_t>(farthest) + 1] - centroid[1],
+      pts[3 * static_cast<size_t>(farthest) + 2] - centroid[2] };
     if (Dot(away, &estimatedNormals[3 * static_cast<size_t>(farthest)]) < 0.0)
     {
       for (double& c : estimatedNormals)
       {
         c = -c;
       }
+    }
+  };
+  // Exact duplicates would fill a neighbourhood with copies of one point (a zero covariance):
+  // with duplicates, the normals are estimated on the distinct points and copied to the others.
+  auto estimateNormals = [&](std::vector<double>& estimatedNormals)
+  {
+    std::vector<vtkIdType> merged(static_cast<size_t>(local));
+    locator->MergePoints(0.0, merged.data());
+    std::vector<Id> distinct;
+    std::vector<Id> slot(static_cast<size_t>(local), None);
+    for (Id k = 0; k < local; ++k)
+    {
+      const vtkIdType target = merged[k];
+      if (target == k || target < 0 || target >= local || merged[target] != target)
+      {
+        slot[k] = static_cast<Id>(distinct.size());
+        distinct.push_back(k);
+      }
+    }
+    if (static_cast<Id>(distinct.size()) == local)
+    {
+      estimateNormalsOn(xyz.data(), local, locator, estimatedNormals, knn, knnOthers);
+      return;
+    }
+    std::vector<double> distinctXYZ(3 * distinct.size());
+    for (size_t d = 0; d < distinct.size(); ++d)
+    {
+      std::copy_n(&xyz[3 * static_cast<size_t>(distinct[d])], 3, &distinctXYZ[3 * d]);
+    }
+    const Id distinctCount = static_cast<Id>(distinct.size());
+    vtkNew<vtkDoubleArray> distinctCoordinates;
+    distinctCoordinates->SetNumberOfComponents(3);
+    distinctCoordinates->SetArray(distinctXYZ.data(), 3 * static_cast<vtkIdType>(distinctCount), 1);
+    vtkNew<vtkPoints> distinctPoints;
+    distinctPoints->SetData(distinctCoordinates);
+    vtkNew<vtkPolyData> distinctCloud;
+    distinctCloud->SetPoints(distinctPoints);
+    vtkNew<vtkStaticPointLocator> distinctLocator;
+    distinctLocator->SetDataSet(distinctCloud);
+    distinctLocator->BuildLocator();
+    ResizeBins(distinctLocator, distinctXYZ.data(), distinctCount);
+    std::vector<double> distinctNormals;
+    std::vector<int32_t> distinctTable; // not the table of all the points
+    int distinctOthers = 0;
+    estimateNormalsOn(distinctXYZ.data(), distinctCount, distinctLocator, distinctNormals,
+      distinctTable, distinctOthers);
+    estimatedNormals.assign(3 * static_cast<size_t>(local), 0.0);
+    if (distinctNormals.size() != 3 * distinct.size())
+    {
+      return; // aborted
+    }
+    for (Id k = 0; k < local; ++k)
+    {
+      const Id d = slot[k] != None ? slot[k] : slot[merged[k]];
+      std::copy_n(&distinctNormals[3 * static_cast<size_t>(d)], 3,
+        &estimatedNormals[3 * static_cast<size_t>(k)]);
     }
   };
   // The normals used, passed to the output when some were estimated ("Normals", or
@@ -2061,9 +2161,12 @@ int vtkCDTAdvancingFront::RequestData(
     ? std::ldexp(this->MaximumRayDistance, exponent)
     : 2.0 * meanSpacing;
   strict.MaximumCandidates = this->MaximumNumberOfCandidates;
-  strict.MinimumArea = this->MinimumTriangleArea > 0.0
-    ? std::ldexp(this->MinimumTriangleArea, 2 * exponent)
-    : 1e-6 * meanSpacing * meanSpacing;
+  // II.E: an explicit smallest area, or by default a shape bound that holds at every scale of a
+  // cloud of mixed density (area at least 1e-6 times the squared longest edge: a height of at
+  // least 2e-6 times that edge).
+  strict.MinimumArea =
+    this->MinimumTriangleArea > 0.0 ? std::ldexp(this->MinimumTriangleArea, 2 * exponent) : 0.0;
+  strict.MinimumAreaRatio = this->MinimumTriangleArea > 0.0 ? 0.0 : 1e-6;
   this->NeighborhoodRadiusUsed = std::ldexp(strict.Radius, -exponent);
 
   // III.A and III.B: seeds in input order, each grown by the advancing front.

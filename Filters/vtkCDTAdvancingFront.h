@@ -40,7 +40,8 @@
  *   the triangle's plane (each within MaximumRayDistance), crosses the open triangle; the crossing
  *   is the case analysis of section II.B (Fig. 1a-g), decided with exact orientation signs on the
  *   projected end points (pcsProjectedTests).
- * - II.E: the vertices are not collinear (exact) and the area is at least MinimumTriangleArea.
+ * - II.E: the vertices are not collinear (exact) and the area is at least MinimumTriangleArea
+ *   (default: 1e-6 times the squared longest edge).
  * Two further conditions, implied by the paper's intent, are written down here: the triangle's
  * orientation (inherited from the triangle across the front edge, so that the mesh is
  * consistently oriented) must agree with its vertex normals (N . (n1 + n2 + n3) > 0), and the
@@ -245,8 +246,9 @@ public:
 
   ///@{
   /**
-   * Section II.E: smallest area of a triangle. Default 0: automatic, 1e-6 times the squared mean
-   * spacing. Exactly collinear vertices are always rejected. Range [0, VTK_DOUBLE_MAX].
+   * Section II.E: smallest area of a triangle. Default 0: automatic, 1e-6 times the squared
+   * longest edge of the triangle (a shape bound, the same at every scale of a cloud of mixed
+   * density). Exactly collinear vertices are always rejected. Range [0, VTK_DOUBLE_MAX].
    */
   vtkSetClampMacro(MinimumTriangleArea, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MinimumTriangleArea, double);

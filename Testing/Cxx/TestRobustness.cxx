@@ -846,6 +846,20 @@ bool RunEquivalences(const FilterEntry& filter)
       return false;
     }
   }
+  // Every point 8 times (exact duplicates): the neighbourhoods of the normal estimation, the
+  // spacing and the growing filters' neighbour lists must look through the copies.
+  if (!filter.Info.ConsumesMesh)
+  {
+    std::vector<double> repeated;
+    for (int copy = 0; copy < 8; ++copy)
+    {
+      repeated.insert(repeated.end(), xyz.begin(), xyz.end());
+    }
+    if (!run("every point 8 times", filter.Prepare(CloudWithArrays(repeated, false))))
+    {
+      return false;
+    }
+  }
   // A vtkUnstructuredGrid of vertices, float and double points.
   if (!filter.Info.ConsumesMesh)
   {

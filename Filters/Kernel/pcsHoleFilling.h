@@ -16,7 +16,8 @@
 //   already and leave at least three vertices on each side. A chord end point is shared by the
 //   two pieces (the paper's duplicated points A, A', merged back in its step 7). A piece with
 //   more points than MaximumGreedyPoints is split the same way by a diagonal of its projection,
-//   so the quadratic greedy triangulation below stays cheap.
+//   so the quadratic greedy triangulation below stays cheap; a triangle, which cannot be split,
+//   keeps the lost points nearest its plane up to that bound (the others stay lost).
 // - step 6: each piece is triangulated with the lost points that project strictly inside it
 //   (and lie within half the piece's radius of its plane) by the 2D greedy triangulation of
 //   Bern & Eppstein (the paper's [BE95]): every pair of points is a candidate edge, candidates

@@ -731,17 +731,25 @@ struct DistanceFunctor
 };
 
 // Distance from every point of `cloud` to its nearest other point at a non-zero distance (NaN
-// when all the points coincide with it).
+// when all the points coincide with it). One query per distinct position (Queries[q], with
+// Copies[q] points at that position): its copies share the result, and the first query asks for
+// the copies plus one, so a pile of d copies costs one query of d + 1 points instead of d
+// queries of about d points each.
 struct SpacingFunctor
 {
   vtkPolyData* Cloud;
   vtkStaticPointLocator* Locator;
+  const vtkIdType* Queries;
+  const vtkIdType* Copies;
   double* Spacing;
   vtkSMPThreadLocalObject<vtkIdList> Ids;
 
-  SpacingFunctor(vtkPolyData* cloud, vtkStaticPointLocator* locator, double* spacing)
+  SpacingFunctor(vtkPolyData* cloud, vtkStaticPointLocator* locator, const vtkIdType* queries,
+    const vtkIdType* copies, double* spacing)
     : Cloud(cloud)
     , Locator(locator)
+    , Queries(queries)
+    , Copies(copies)
     , Spacing(spacing)
   {}
 
@@ -752,12 +760,13 @@ struct SpacingFunctor
     vtkIdList* ids = this->Ids.Local();
     const vtkIdType n = this->Cloud->GetNumberOfPoints();
     double x[3], y[3];
-    for (vtkIdType i = begin; i < end; ++i)
+    for (vtkIdType q = begin; q < end; ++q)
     {
+      const vtkIdType i = this->Queries[q];
       this->Cloud->GetPoint(i, x);
       double best = NaN;
       // Exact duplicates (distance 0) come first: widen the query until a distinct point shows.
-      for (vtkIdType k = 2;; k *= 2)
+      for (vtkIdType k = std::max<vtkIdType>(2, this->Copies[q] + 1);; k *= 2)
       {
         const vtkIdType count = std::min(k, n);
         this->Locator->FindClosestNPoints(static_cast<int>(count), x, ids);
@@ -1288,8 +1297,61 @@ int vtkReconstructionQuality::RequestData(
       locator->SetDataSet(cloud);
       locator->BuildLocator();
       std::vector<double> spacing(cloud->GetNumberOfPoints(), NaN);
-      SpacingFunctor nearest(cloud, locator, spacing.data());
-      vtkSMPTools::For(0, cloud->GetNumberOfPoints(), nearest);
+      // Exact duplicates grouped by sorting on the coordinates (non-finite points stay single).
+      const vtkIdType n = cloud->GetNumberOfPoints();
+      std::vector<double> xyz(3 * static_cast<size_t>(n));
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        cloud->GetPoint(i, &xyz[3 * i]);
+      }
+      auto finite = [&xyz](vtkIdType i)
+      {
+        return std::isfinite(xyz[3 * i]) && std::isfinite(xyz[3 * i + 1]) &&
+          std::isfinite(xyz[3 * i + 2]);
+      };
+      std::vector<vtkIdType> order(n);
+      std::iota(order.begin(), order.end(), 0);
+      std::sort(order.begin(), order.end(),
+        [&xyz, &finite](vtkIdType a, vtkIdType b)
+        {
+          const bool fa = finite(a), fb = finite(b);
+          if (fa != fb || !fa)
+          {
+            return fa != fb ? fa : a < b;
+          }
+          for (int c = 0; c < 3; ++c)
+          {
+            if (xyz[3 * a + c] != xyz[3 * b + c])
+            {
+              return xyz[3 * a + c] < xyz[3 * b + c];
+            }
+          }
+          return a < b;
+        });
+      std::vector<vtkIdType> queries, copies, groupStart;
+      for (vtkIdType j = 0; j < n; ++j)
+      {
+        const vtkIdType a = order[j];
+        const bool same = j > 0 && finite(a) && finite(order[j - 1]) &&
+          std::equal(&xyz[3 * a], &xyz[3 * a] + 3, &xyz[3 * order[j - 1]]);
+        if (!same)
+        {
+          queries.push_back(a);
+          copies.push_back(0);
+          groupStart.push_back(j);
+        }
+        ++copies.back();
+      }
+      groupStart.push_back(n);
+      SpacingFunctor nearest(cloud, locator, queries.data(), copies.data(), spacing.data());
+      vtkSMPTools::For(0, static_cast<vtkIdType>(queries.size()), nearest);
+      for (size_t g = 0; g < queries.size(); ++g)
+      {
+        for (vtkIdType j = groupStart[g]; j < groupStart[g + 1]; ++j)
+        {
+          spacing[order[j]] = spacing[queries[g]];
+        }
+      }
       meanSpacing = MeanOfDefined(spacing);
     }
   }

@@ -69,7 +69,8 @@
  * - `Hausdorff`: max(AccuracyMax, CompletenessMax), the sampled symmetric Hausdorff distance.
  * - `MeanSpacing`: mean nearest-neighbour distance of the cloud: the mesh's used points when the
  *   reference is a surface, the reference's points when it is a cloud (exact duplicates are
- *   skipped when looking for the nearest neighbour).
+ *   skipped when looking for the nearest neighbour; the copies of a point share one query, so
+ *   a pile of copies costs about its size, not its square).
  * - `AccuracyMeanOverSpacing`, `AccuracyMaxOverSpacing`, `CompletenessMeanOverSpacing`,
  *   `CompletenessMaxOverSpacing`, `HausdorffOverSpacing`: the distances divided by MeanSpacing
  *   (NaN when the spacing is 0 or undefined).

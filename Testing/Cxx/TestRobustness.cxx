@@ -907,6 +907,29 @@ bool RunExtremes(const FilterEntry& filter)
   return true;
 }
 
+// vtkReconstructionQuality against a reference cloud holding a pile of 20,000 copies of one
+// point: its MeanSpacing looked for each copy's nearest distinct point with queries doubling past
+// the whole pile (82 s CPU for 10,000 copies, beyond the test's timeout for these). The pile's
+// copies are 0.5 from the unit sphere, so the mean spacing lies between the sphere's and 0.5.
+bool RunQualityReferencePile()
+{
+  std::vector<double> xyz = Sphere(2000, 51);
+  auto hull = HullOf(pcstest::MakeCloud(xyz));
+  for (int i = 0; i < 20000; ++i)
+  {
+    xyz.insert(xyz.end(), { 0.5, 0.0, 0.0 });
+  }
+  vtkNew<vtkReconstructionQuality> quality;
+  quality->SetInputData(hull);
+  quality->SetInputData(1, pcstest::MakeCloud(xyz));
+  Update(quality);
+  const double spacing =
+    quality->GetOutput()->GetFieldData()->GetArray("MeanSpacing")->GetTuple1(0);
+  PCS_CHECK(spacing > 0.04 && spacing < 0.5,
+    "vtkReconstructionQuality / reference with a pile of 20,000 copies: MeanSpacing " << spacing);
+  return true;
+}
+
 bool RunWithoutInput(const FilterEntry& filter)
 {
   Algorithm algorithm = filter.Info.Make();
@@ -934,6 +957,7 @@ int TestRobustness(int, char*[])
     std::cout << filter.Info.Name << ": " << cases << " inputs, " << filter.Extremes.size()
               << " parameter limits" << std::endl;
   }
+  failures += RunQualityReferencePile() ? 0 : 1;
   std::cout << failures << " failure(s)" << std::endl;
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

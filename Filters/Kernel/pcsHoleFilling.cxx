@@ -292,6 +292,25 @@ struct ProjectedKeyHash
 };
 } // namespace
 
+namespace
+{
+// True when p lies strictly inside the segment a b in space (exact: the coordinates between
+// those of a and b, p distinct from both, and the three points collinear).
+bool OnOpenSegment3D(const double* a, const double* b, const double* p)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (p[c] < std::min(a[c], b[c]) || p[c] > std::max(a[c], b[c]))
+    {
+      return false;
+    }
+  }
+  const bool atA = p[0] == a[0] && p[1] == a[1] && p[2] == a[2];
+  const bool atB = p[0] == b[0] && p[1] == b[1] && p[2] == b[2];
+  return !atA && !atB && pcs::projected::Collinear(a, b, p);
+}
+} // namespace
+
 int PointInPolygon(const std::vector<double>& uv, const double* p)
 {
   const size_t n = uv.size() / 2;
@@ -398,12 +417,20 @@ bool GreedyTriangulation2D(const std::vector<double>& uv, const std::vector<doub
     const double minU = std::min(a[0], b[0]), maxU = std::max(a[0], b[0]);
     const double minV = std::min(a[1], b[1]), maxV = std::max(a[1], b[1]);
     bool compatible = true;
+    const double* a3 = &xyz[3 * static_cast<size_t>(c.I)];
+    const double* b3 = &xyz[3 * static_cast<size_t>(c.J)];
     for (int k = 0; k < count && compatible; ++k)
     {
       if (k != c.I && k != c.J && P(k)[0] >= minU && P(k)[0] <= maxU && P(k)[1] >= minV &&
         P(k)[1] <= maxV && OnOpenSegment(a, b, P(k)))
       {
         compatible = false; // passes through a point
+      }
+      else if (k != c.I && k != c.J && OnOpenSegment3D(a3, b3, &xyz[3 * static_cast<size_t>(k)]))
+      {
+        // Through a point in space: its rounded projection may miss the segment, and the edge
+        // would close a zero-area triangle (points on a grid, quantised coordinates).
+        compatible = false;
       }
     }
     for (size_t e = 0; e < accepted.size() && compatible; ++e)
@@ -724,6 +751,13 @@ bool HoleFiller::FillPiece(const double* xyz, Piece& piece, std::vector<char>& t
   if (n < 3)
   {
     return true; // a slit or a point: nothing to fill
+  }
+  if (n == 3 &&
+    pcs::projected::Collinear(xyz + 3 * static_cast<int64_t>(loop[0]),
+      xyz + 3 * static_cast<int64_t>(loop[1]), xyz + 3 * static_cast<int64_t>(loop[2])))
+  {
+    ++result.NumberOfFailedPieces; // three collinear points: only a zero-area triangle would fill
+    return false;
   }
   if (depth > 4 * n + 64)
   {

@@ -7,6 +7,7 @@
 // from.
 #include "pcsHoleFilling.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -545,12 +546,120 @@ void TestLeastDihedralFill()
     "two vertices: no triangulation");
 }
 
+// The zero-area triangles of a fill of the hole bounded by the border of the integer grid
+// (i, j, p i + q j), 0 <= i, j <= 6, with its 25 inner points inside (boundary vectors outwards;
+// `reversed`: the same hole seen from the other side). Whole rows of the grid are collinear in
+// space, and the rounded projection on the fitted plane may put a row's middle point off the
+// segment of its ends. Integer coordinates: the cross products are exact.
+int ZeroAreaTrianglesOfGridFill(int p, int q, bool reversed, int& triangles)
+{
+  std::vector<double> xyz;
+  auto id = [](int i, int j) { return 7 * i + j; };
+  for (int i = 0; i <= 6; ++i)
+  {
+    for (int j = 0; j <= 6; ++j)
+    {
+      xyz.insert(xyz.end(), { double(i), double(j), double(p * i + q * j) });
+    }
+  }
+  std::vector<int32_t> loop, inside;
+  std::vector<double> vectors;
+  auto border = [&](int i, int j, double di, double dj) {
+    loop.push_back(id(i, j));
+    vectors.insert(vectors.end(), { di, dj, p * di + q * dj });
+  };
+  for (int j = 0; j < 6; ++j)
+  {
+    border(0, j, -1, 0);
+  }
+  for (int i = 0; i < 6; ++i)
+  {
+    border(i, 6, 0, 1);
+  }
+  for (int j = 6; j > 0; --j)
+  {
+    border(6, j, 1, 0);
+  }
+  for (int i = 6; i > 0; --i)
+  {
+    border(i, 0, 0, -1);
+  }
+  for (int i = 1; i < 6; ++i)
+  {
+    for (int j = 1; j < 6; ++j)
+    {
+      inside.push_back(id(i, j));
+    }
+  }
+  if (reversed)
+  {
+    std::reverse(loop.begin(), loop.end());
+    for (size_t k = 0; k < loop.size() / 2; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        std::swap(vectors[3 * k + c], vectors[3 * (loop.size() - 1 - k) + c]);
+      }
+    }
+  }
+  pcs::holes::HoleFiller filler;
+  pcs::holes::FillResult result;
+  filler.Fill(xyz.data(), loop, vectors, inside, result);
+  triangles = static_cast<int>(result.Triangles.size() / 3);
+  int degenerate = 0;
+  for (size_t t = 0; t < result.Triangles.size(); t += 3)
+  {
+    const double* a = &xyz[3 * static_cast<size_t>(result.Triangles[t])];
+    const double* b = &xyz[3 * static_cast<size_t>(result.Triangles[t + 1])];
+    const double* c = &xyz[3 * static_cast<size_t>(result.Triangles[t + 2])];
+    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double w[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+    const bool zero = u[1] * w[2] - u[2] * w[1] == 0 && u[2] * w[0] - u[0] * w[2] == 0 &&
+      u[0] * w[1] - u[1] * w[0] == 0;
+    degenerate += zero ? 1 : 0;
+  }
+  return degenerate;
+}
+
+// Fills that would need a zero-area triangle: three collinear loop vertices (a slit), and grid
+// holes on 48 tilted planes (before the 3D segment test, 8 of the 96 fills had such triangles).
+void TestDegenerateFills()
+{
+  {
+    pcs::holes::HoleFiller filler;
+    const std::vector<double> xyz = { 0, 0, 0, 1, 1, 1, 2, 2, 2 };
+    pcs::holes::FillResult result;
+    filler.Fill(xyz.data(), { 0, 1, 2 }, std::vector<double>(9, 0.0), {}, result);
+    CHECK(result.Triangles.empty(), "collinear loop: %d triangle(s), none has an area",
+      static_cast<int>(result.Triangles.size() / 3));
+  }
+  for (int p = -3; p <= 3; ++p)
+  {
+    for (int q = -3; q <= 3; ++q)
+    {
+      for (bool reversed : { false, true })
+      {
+        if (p == 0 && q == 0)
+        {
+          continue;
+        }
+        int triangles = 0;
+        const int degenerate = ZeroAreaTrianglesOfGridFill(p, q, reversed, triangles);
+        CHECK(triangles > 0, "grid p %d q %d: no triangle", p, q);
+        CHECK(degenerate == 0, "grid p %d q %d%s: %d zero-area triangle(s) of %d", p, q,
+          reversed ? " reversed" : "", degenerate, triangles);
+      }
+    }
+  }
+}
+
 int main()
 {
   TestPolygonPredicates();
   TestGreedy2D();
   TestHoleFiller();
   TestLeastDihedralFill();
+  TestDegenerateFills();
   std::printf("%d failure(s)\n", Failures);
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -214,6 +214,7 @@ private:
     const std::vector<int32_t>& vertexTriangles, const std::vector<char>& alive) const;
   bool IsHole(const std::vector<int32_t>& vertices) const;
   void ComputeComponents();
+  std::vector<int32_t> VertexPieces() const;
 };
 
 //------------------------------------------------------------------------------------------------
@@ -1015,6 +1016,37 @@ void Reconstruction::Step2Umbrella(double begin, double end)
   }
 }
 
+// Connected pieces of the mesh through shared vertices (a pinch joins two pieces): per vertex,
+// the id of a vertex of its piece (the vertex itself when it has no triangle).
+std::vector<int32_t> Reconstruction::VertexPieces() const
+{
+  std::vector<int32_t> parent(static_cast<size_t>(this->N));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&parent](int32_t x) {
+    while (parent[x] != x)
+    {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  };
+  const int64_t ids = this->Mesh.GetNumberOfTriangleIds();
+  for (int64_t t = 0; t < ids; ++t)
+  {
+    if (!this->Mesh.IsTriangleRemoved(t))
+    {
+      const int32_t* tri = this->Mesh.GetTriangle(t);
+      parent[find(tri[1])] = find(tri[0]);
+      parent[find(tri[2])] = find(tri[0]);
+    }
+  }
+  for (int32_t v = 0; v < this->N; ++v)
+  {
+    parent[v] = find(v);
+  }
+  return parent;
+}
+
 // Connected components of the mesh triangles (through shared edges), per vertex.
 void Reconstruction::ComputeComponents()
 {
@@ -1797,26 +1829,7 @@ void Reconstruction::CloseSmallLoops()
     return;
   }
   // Connected pieces of the mesh (through shared vertices) and their bounding boxes.
-  std::vector<int32_t> parent(static_cast<size_t>(this->N));
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&parent](int32_t x) {
-    while (parent[x] != x)
-    {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  };
-  const int64_t ids = this->Mesh.GetNumberOfTriangleIds();
-  for (int64_t t = 0; t < ids; ++t)
-  {
-    if (!this->Mesh.IsTriangleRemoved(t))
-    {
-      const int32_t* tri = this->Mesh.GetTriangle(t);
-      parent[find(tri[1])] = find(tri[0]);
-      parent[find(tri[2])] = find(tri[0]);
-    }
-  }
+  const std::vector<int32_t> piece = this->VertexPieces();
   std::vector<double> box(6 * static_cast<size_t>(this->N), 0.0);
   std::vector<char> seen(static_cast<size_t>(this->N), 0);
   for (int32_t v = 0; v < this->N; ++v)
@@ -1825,7 +1838,7 @@ void Reconstruction::CloseSmallLoops()
     {
       continue;
     }
-    const int32_t r = find(v);
+    const int32_t r = piece[v];
     double* b = &box[6 * static_cast<size_t>(r)];
     for (int j = 0; j < 3; ++j)
     {
@@ -1859,7 +1872,7 @@ void Reconstruction::CloseSmallLoops()
     {
       radius = std::max(radius, Distance(centre, this->P(v)));
     }
-    const double* b = &box[6 * static_cast<size_t>(find(loop[0]))];
+    const double* b = &box[6 * static_cast<size_t>(piece[loop[0]])];
     const double extent = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
       (b[5] - b[4]) * (b[5] - b[4]));
     if (2 * radius > diameterLimit || extent <= 4 * radius)
@@ -1980,26 +1993,8 @@ void Reconstruction::CapOpenEnds()
     return;
   }
   // Connected pieces of the mesh (through shared vertices) and their areas.
-  std::vector<int32_t> parent(static_cast<size_t>(this->N));
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&parent](int32_t x) {
-    while (parent[x] != x)
-    {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  };
+  const std::vector<int32_t> piece = this->VertexPieces();
   const int64_t ids = this->Mesh.GetNumberOfTriangleIds();
-  for (int64_t t = 0; t < ids; ++t)
-  {
-    if (!this->Mesh.IsTriangleRemoved(t))
-    {
-      const int32_t* tri = this->Mesh.GetTriangle(t);
-      parent[find(tri[1])] = find(tri[0]);
-      parent[find(tri[2])] = find(tri[0]);
-    }
-  }
   std::vector<double> area(static_cast<size_t>(this->N), 0.0);
   for (int64_t t = 0; t < ids; ++t)
   {
@@ -2010,7 +2005,7 @@ void Reconstruction::CapOpenEnds()
       vtkMath::Subtract(this->P(tri[1]), this->P(tri[0]), u);
       vtkMath::Subtract(this->P(tri[2]), this->P(tri[0]), v);
       vtkMath::Cross(u, v, n);
-      area[find(tri[0])] += 0.5 * vtkMath::Norm(n);
+      area[piece[tri[0]]] += 0.5 * vtkMath::Norm(n);
     }
   }
   pcs::holes::HoleFiller filler;
@@ -2050,7 +2045,7 @@ void Reconstruction::CapOpenEnds()
       vtkMath::Add(spanned, c, spanned);
     }
     if (2 * radius > diameterLimit ||
-      !(area[find(loop[0])] >= CapAreaRatio * 0.5 * vtkMath::Norm(spanned)))
+      !(area[piece[loop[0]]] >= CapAreaRatio * 0.5 * vtkMath::Norm(spanned)))
     {
       continue;
     }

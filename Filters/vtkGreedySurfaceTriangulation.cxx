@@ -1,5 +1,6 @@
 #include "vtkGreedySurfaceTriangulation.h"
 
+#include "pcsCoordinateScaling.h"
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 #include "pcsHoleFilling.h"
@@ -137,9 +138,9 @@ public:
   std::vector<double> Normals; // 3 per point (unoriented), for the projected crossing test
   std::vector<char> CrossingPoints; // the points whose edges it tests (empty: every point)
   double Spacing = 0.0;
-  // X = input coordinates x CoordinateScale, a power of two (1 unless the coordinates are
-  // extreme, see RequestData).
-  double CoordinateScale = 1.0;
+  // X = input coordinates x 2^CoordinateExponent (0 unless the coordinates are extreme, see
+  // RequestData and pcsCoordinateScaling.h).
+  int CoordinateExponent = 0;
   vtkSmartPointer<vtkStaticPointLocator> Locator;
   vtkSmartPointer<vtkPolyData> Cloud;
 
@@ -2817,7 +2818,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
     this->NumberOfBridges = r.Bridges;
     this->NumberOfHolesFilled = r.HolesFilled;
     this->NumberOfAddedPoints = r.Added;
-    this->MeanSpacing = r.Spacing / r.CoordinateScale;
+    this->MeanSpacing = std::ldexp(r.Spacing, -r.CoordinateExponent);
     this->NumberOfUnusedPoints = 0;
     for (vtkIdType i = 0; i < numberOfPoints; ++i)
     {
@@ -2906,22 +2907,15 @@ int vtkGreedySurfaceTriangulation::RequestData(
   // single-precision edge lengths of step 1 then neither overflow nor underflow. Added points
   // and the reported spacing are scaled back.
   {
-    double largest = 0.0;
-    for (int32_t i : order)
+    r.CoordinateExponent = pcs::PredicateSafeExponent(xyz.data(), 3, order);
+    if (r.CoordinateExponent != 0)
     {
-      const double* p = &xyz[3 * static_cast<size_t>(i)];
-      largest = std::max({ largest, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
-    }
-    int exponent = 0;
-    std::frexp(largest, &exponent);
-    if (largest > 0.0 && (exponent > 60 || exponent < -60))
-    {
-      r.CoordinateScale = std::ldexp(1.0, -std::max(-1000, std::min(exponent, 1000)));
       for (int32_t i : order)
       {
         for (int c = 0; c < 3; ++c)
         {
-          xyz[3 * static_cast<size_t>(i) + c] *= r.CoordinateScale;
+          xyz[3 * static_cast<size_t>(i) + c] =
+            std::ldexp(xyz[3 * static_cast<size_t>(i) + c], r.CoordinateExponent);
         }
       }
     }
@@ -3157,8 +3151,8 @@ int vtkGreedySurfaceTriangulation::RequestData(
     for (vtkIdType k = 0; k < r.Added; ++k)
     {
       const double* x = &added[3 * k];
-      const vtkIdType id = outPoints->InsertNextPoint(x[0] / r.CoordinateScale,
-        x[1] / r.CoordinateScale, x[2] / r.CoordinateScale);
+      const vtkIdType id = outPoints->InsertNextPoint(std::ldexp(x[0], -r.CoordinateExponent),
+        std::ldexp(x[1], -r.CoordinateExponent), std::ldexp(x[2], -r.CoordinateExponent));
       const vtkIdType nearest = r.Locator->FindClosestPoint(x);
       if (nearest >= 0)
       {

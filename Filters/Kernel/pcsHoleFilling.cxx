@@ -1,5 +1,6 @@
 #include "pcsHoleFilling.h"
 
+#include "pcsCoordinateScaling.h"
 #include "pcsPredicates.h"
 #include "pcsProjectedTests.h"
 
@@ -113,22 +114,11 @@ bool Plane::Fit(const double* xyz, const int32_t* ids, size_t count)
   {
     return false;
   }
-  // The sums run on coordinates scaled by a power of two that brings the largest to [0.5, 1):
-  // the same values as unscaled in the usual range (the scaling is exact), and no overflow or
-  // underflow of the squares for coordinates near 1e300 or 1e-300.
-  double largest = 0.0;
-  for (size_t k = 0; k < count; ++k)
-  {
-    const double* p = xyz + 3 * static_cast<int64_t>(ids[k]);
-    largest = std::max({ largest, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
-  }
-  if (!std::isfinite(largest))
-  {
-    return false;
-  }
-  int exponent = 0;
-  std::frexp(largest, &exponent);
-  const double scale = std::ldexp(1.0, -std::max(-1000, std::min(exponent, 1000)));
+  // The sums run on coordinates scaled by a power of two when they are extreme (see
+  // pcsCoordinateScaling.h; exact, 1 in the usual range): the squares of coordinates near 1e300
+  // or 1e-300 would overflow or underflow.
+  const double scale =
+    std::ldexp(1.0, pcs::PredicateSafeExponent(xyz, 3, std::vector<int32_t>(ids, ids + count)));
   double centroid[3] = { 0, 0, 0 };
   for (size_t k = 0; k < count; ++k)
   {

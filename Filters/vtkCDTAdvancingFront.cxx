@@ -61,6 +61,18 @@ enum PointStatus : uint8_t
   Duplicate = 3  // same coordinates as a usable point of smaller id
 };
 
+// The `count` smallest (distance, point) pairs of `list`, sorted; the others dropped (the
+// candidate budgets of Front::Seed and Front::BestThirdPoint: only what can be examined is sorted).
+void SortNearest(std::vector<std::pair<double, Id>>& list, size_t count)
+{
+  if (list.size() > count)
+  {
+    std::nth_element(list.begin(), list.begin() + count, list.end());
+    list.resize(count);
+  }
+  std::sort(list.begin(), list.end());
+}
+
 inline double Dot(const double* a, const double* b)
 {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -1237,14 +1249,7 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
         }
       }
     }
-    const size_t remaining = examinedBudget - examined;
-    if (this->Candidates.size() > remaining)
-    {
-      std::nth_element(this->Candidates.begin(), this->Candidates.begin() + remaining,
-        this->Candidates.end());
-      this->Candidates.resize(remaining);
-    }
-    std::sort(this->Candidates.begin(), this->Candidates.end());
+    SortNearest(this->Candidates, examinedBudget - examined);
     this->Candidates.erase(
       std::unique(this->Candidates.begin(), this->Candidates.end()), this->Candidates.end());
     for (const auto& candidate : this->Candidates)
@@ -1369,15 +1374,7 @@ bool Front::Seed(Id p, const Parameters& parameters)
   // the budgets are sorted.
   const size_t examinedBudget = 10 * static_cast<size_t>(parameters.MaximumCandidates);
   size_t examined = 0;
-  auto sortNearest = [](std::vector<std::pair<double, Id>>& list, size_t count) {
-    if (list.size() > count)
-    {
-      std::nth_element(list.begin(), list.begin() + count, list.end());
-      list.resize(count);
-    }
-    std::sort(list.begin(), list.end());
-  };
-  sortNearest(firsts, examinedBudget);
+  SortNearest(firsts, examinedBudget);
   this->ProjectionTests = 0;
   for (const auto& first : firsts)
   {
@@ -1400,7 +1397,7 @@ bool Front::Seed(Id p, const Parameters& parameters)
         this->Candidates.emplace_back(Distance2(this->P(x), midpoint), x);
       }
     }
-    sortNearest(this->Candidates, examinedBudget - examined);
+    SortNearest(this->Candidates, examinedBudget - examined);
     for (const auto& candidate : this->Candidates)
     {
       if (this->ProjectionTests >= parameters.MaximumCandidates || examined >= examinedBudget)

@@ -1604,12 +1604,36 @@ bool Grower::InsertOrphan(Id q)
       }
     }
   }
+  // q exactly on an edge in space (points on lattice lines): that edge must be split, as any
+  // triangle joining q to it would have zero area.
+  bool onEdge = false;
+  for (int e = 0; e < 3 && !onEdge; ++e)
+  {
+    if (pcs::projected::OnOpenSegment3D(this->P3(t3[e]), this->P3(t3[(e + 1) % 3]), x))
+    {
+      onEdge = true;
+      bestEdge = e;
+    }
+  }
   std::vector<std::array<Id, 3>> added;
   if (bestEdge >= 0)
   {
     const Id u = t3[bestEdge], w = t3[(bestEdge + 1) % 3], z = t3[(bestEdge + 2) % 3];
     const int64_t other = this->Mesh.FindTriangle(w, u);
     const Id zo = other >= 0 ? this->Mesh.OppositeVertex(w, u) : -1;
+    if (zo < 0 && onEdge)
+    {
+      // On a boundary edge: the triangle is split in two and the boundary runs u -> q -> w.
+      if (pcs::projected::Collinear(this->P3(w), this->P3(z), x) ||
+        pcs::projected::Collinear(this->P3(z), this->P3(u), x))
+      {
+        return false;
+      }
+      this->Mesh.RemoveTriangle(best);
+      this->Commit(w, z, q);
+      this->Commit(z, u, q);
+      return true;
+    }
     if (zo >= 0)
     {
       added = { { { w, z, q } }, { { z, u, q } }, { { u, zo, q } }, { { zo, w, q } } };
@@ -1646,12 +1670,19 @@ bool Grower::InsertOrphan(Id q)
   }
   if (added.empty())
   {
-    if (!bestInside)
+    if (!bestInside || onEdge)
     {
       return false;
     }
-    this->Mesh.RemoveTriangle(best);
     added = { { { t3[0], t3[1], q } }, { { t3[1], t3[2], q } }, { { t3[2], t3[0], q } } };
+    for (const auto& t : added)
+    {
+      if (pcs::projected::Collinear(this->P3(t[0]), this->P3(t[1]), this->P3(t[2])))
+      {
+        return false;
+      }
+    }
+    this->Mesh.RemoveTriangle(best);
   }
   for (const auto& t : added)
   {

@@ -120,9 +120,11 @@
  *    of a triangle of its neighbourhood, or near one of its edges, and closer to its plane than
  *    its longest edge) is inserted by splitting that triangle into three, or the two triangles
  *    of the nearest edge into four; beside a boundary edge (its projection falls just across
- *    it), by making the triangle that edge lacks. A lone triangle (a seed that could not grow)
- *    is taken out first and its points inserted the same way; it is restored when none of them
- *    could be.
+ *    it), by making the triangle that edge lacks. A point exactly on an edge in space (decided
+ *    exactly; points on lattice lines) splits that edge: the two triangles into four, or, on a
+ *    boundary edge, its triangle into two; no new triangle may have zero area (a point that
+ *    would need one stays unused). A lone triangle (a seed that could not grow) is taken out
+ *    first and its points inserted the same way; it is restored when none of them could be.
  * 6. Holes (added): the boundary loops of at most MaximumHoleEdges edges are closed with the
  *    project's shared hole triangulation (paper 001 steps 5-6: projection on the loop's mean plane,
  *    chord splitting, 2D greedy triangulation, free points inside used), kept only when every

@@ -3,7 +3,8 @@
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 
-#include "pcsPredicates.h"
+#include "pcsCoordinateScaling.h"
+#include "pcsProjectedTests.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCellArray.h"
@@ -155,23 +156,20 @@ bool IsCollapsed(const Triangle& t)
   return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
 }
 
-// Exact zero-area test: the three points are collinear iff the three coordinate components of
-// (b - a) x (c - a), i.e. the orientations of the projections on the coordinate planes, are all
-// exactly zero.
+// Exact zero-area test: the three points are collinear (pcs::projected::Collinear), decided on
+// the points scaled by a power of two (exact) when their coordinates are so small or large that
+// the orientation products would underflow or overflow (a surface at 1e-300).
 bool HasZeroArea(const double a[3], const double b[3], const double c[3])
 {
-  for (int i = 0; i < 3; ++i)
+  const double points[9] = { a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2] };
+  static const std::vector<int32_t> ids = { 0, 1, 2 };
+  const int exponent = pcs::PredicateSafeExponent(points, 3, ids);
+  if (exponent == 0)
   {
-    const int j = (i + 1) % 3;
-    const double pa[2] = { a[i], a[j] };
-    const double pb[2] = { b[i], b[j] };
-    const double pc[2] = { c[i], c[j] };
-    if (pcs::predicates::Orient2D(pa, pb, pc) != 0)
-    {
-      return false;
-    }
+    return pcs::projected::Collinear(a, b, c);
   }
-  return true;
+  const std::vector<double> scaled = pcs::ScaledCopy(points, 9, exponent);
+  return pcs::projected::Collinear(&scaled[0], &scaled[3], &scaled[6]);
 }
 
 // Smallest interior angle in degrees; atan2(|u x v|, u . v) is accurate for small and large

@@ -48,7 +48,8 @@
  * - `OrientationConsistency`: fraction of the valence-2 edges whose two triangles traverse the
  *   edge in opposite directions (1 when the mesh has no valence-2 edge).
  * - `NumberOfDegenerateTriangles`: triangles with a repeated point id or zero area (decided
- *   exactly: the three points are collinear, by exact orientation predicates).
+ *   exactly at any scale: the three points are collinear, by exact orientation predicates on
+ *   the points scaled by a power of two when their coordinates are tiny or huge).
  * - `NumberOfDuplicateTriangles`: triangles with the same point-id set as an earlier triangle
  *   (a pair counts 1).
  * - `MinAngleP1`: 1st percentile (nearest rank) of the per-triangle MinAngle (NaN without

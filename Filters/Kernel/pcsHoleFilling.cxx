@@ -284,20 +284,20 @@ struct ProjectedKeyHash
 
 namespace
 {
-// True when p lies strictly inside the segment a b in space (exact: the coordinates between
-// those of a and b, p distinct from both, and the three points collinear).
-bool OnOpenSegment3D(const double* a, const double* b, const double* p)
+// p lies strictly inside an edge of the closed loop in space (exact).
+bool OnLoopEdge3D(const double* xyz, const std::vector<int32_t>& loop, const double* p)
 {
-  for (int c = 0; c < 3; ++c)
+  const size_t n = loop.size();
+  for (size_t i = 0; i < n; ++i)
   {
-    if (p[c] < std::min(a[c], b[c]) || p[c] > std::max(a[c], b[c]))
+    if (pcs::projected::OnOpenSegment3D(xyz + 3 * static_cast<int64_t>(loop[i]),
+          xyz + 3 * static_cast<int64_t>(loop[(i + 1) % n]),
+          p))
     {
-      return false;
+      return true;
     }
   }
-  const bool atA = p[0] == a[0] && p[1] == a[1] && p[2] == a[2];
-  const bool atB = p[0] == b[0] && p[1] == b[1] && p[2] == b[2];
-  return !atA && !atB && pcs::projected::Collinear(a, b, p);
+  return false;
 }
 } // namespace
 
@@ -416,7 +416,8 @@ bool GreedyTriangulation2D(const std::vector<double>& uv, const std::vector<doub
       {
         compatible = false; // passes through a point
       }
-      else if (k != c.I && k != c.J && OnOpenSegment3D(a3, b3, &xyz[3 * static_cast<size_t>(k)]))
+      else if (k != c.I && k != c.J &&
+        pcs::projected::OnOpenSegment3D(a3, b3, &xyz[3 * static_cast<size_t>(k)]))
       {
         // Through a point in space: its rounded projection may miss the segment, and the edge
         // would close a zero-area triangle (points on a grid, quantised coordinates).
@@ -476,9 +477,12 @@ bool GreedyTriangulation2D(const std::vector<double>& uv, const std::vector<doub
           continue;
         }
         const int o = Orient2D(P(u), P(v), P(w));
-        if (o == 0)
+        if (o == 0 ||
+          pcs::projected::Collinear(&xyz[3 * static_cast<size_t>(u)],
+            &xyz[3 * static_cast<size_t>(v)],
+            &xyz[3 * static_cast<size_t>(w)]))
         {
-          continue;
+          continue; // zero area in space, whatever its rounded projection
         }
         const int t[3] = { u, o > 0 ? v : w, o > 0 ? w : v };
         bool empty = true;
@@ -857,6 +861,10 @@ bool HoleFiller::FillPiece(const double* xyz, Piece& piece, std::vector<char>& t
     if (PointInPolygon(uv, q) <= 0)
     {
       continue;
+    }
+    if (OnLoopEdge3D(xyz, loop, p))
+    {
+      continue; // only a zero-area triangle would join it to that edge
     }
     if (seen.insert({ q[0], q[1] }).second)
     {

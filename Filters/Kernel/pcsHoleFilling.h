@@ -19,12 +19,15 @@
 //   so the quadratic greedy triangulation below stays cheap; a triangle, which cannot be split,
 //   keeps the lost points nearest its plane up to that bound (the others stay lost).
 // - step 6: each piece is triangulated with the lost points that project strictly inside it
-//   (and lie within half the piece's radius of its plane) by the 2D greedy triangulation of
-//   Bern & Eppstein (the paper's [BE95]): every pair of points is a candidate edge, candidates
-//   are taken by increasing 3D length (the paper's variant: 3D distances, 2D compatibility) and
-//   an edge is accepted when it crosses or touches no accepted edge (the loop edges are
-//   accepted first) and, between two loop vertices, is a diagonal of the polygon. The
-//   triangles are the empty 3-cycles of accepted edges.
+//   (and lie within half the piece's radius of its plane, and not exactly on one of its edges in
+//   space: only a zero-area triangle could join such a point to that edge, so it stays lost)
+//   by the 2D greedy triangulation of Bern & Eppstein (the paper's [BE95]): every pair of
+//   points is a candidate edge, candidates are taken by increasing 3D length (the paper's
+//   variant: 3D distances, 2D compatibility) and an edge is accepted when it crosses or touches
+//   no accepted edge (the loop edges are accepted first) and, between two loop vertices, is a
+//   diagonal of the polygon. The
+//   triangles are the empty 3-cycles of accepted edges whose points are not collinear in space
+//   (exact; the projection, rounded, may not show it).
 //
 // Every decision on the projected points -- polygon simplicity, point in polygon, segment
 // crossings, diagonal tests, triangle orientation and emptiness -- is an exact orientation

@@ -2,6 +2,7 @@
 
 #include "pcsPredicates.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pcs
@@ -22,6 +23,20 @@ bool Collinear(const double* a, const double* b, const double* c)
     }
   }
   return true;
+}
+
+bool OnOpenSegment3D(const double* a, const double* b, const double* p)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (p[c] < std::min(a[c], b[c]) || p[c] > std::max(a[c], b[c]))
+    {
+      return false;
+    }
+  }
+  const bool atA = p[0] == a[0] && p[1] == a[1] && p[2] == a[2];
+  const bool atB = p[0] == b[0] && p[1] == b[1] && p[2] == b[2];
+  return !atA && !atB && Collinear(a, b, p);
 }
 
 bool LineCrossesTriangle(

@@ -21,6 +21,11 @@ namespace projected
 /// of their projections onto the coordinate planes are all zero (exact predicates).
 bool Collinear(const double* a, const double* b, const double* c);
 
+/// True when p lies strictly inside the segment a b in space: p distinct from a and b, each of
+/// its coordinates between those of a and b, and the three points Collinear (exact). A triangle
+/// with the edge a b and the vertex p would have zero area.
+bool OnOpenSegment3D(const double* a, const double* b, const double* p);
+
 /// Paper 003, section II.D.1, as a crossing test: the projection of p along the direction n (or
 /// its reverse) onto the plane of the triangle abc falls strictly inside the triangle. This is
 /// the crossing of the open triangle by the line through p and q = p + n (q rounded once),

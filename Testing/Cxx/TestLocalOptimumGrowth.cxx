@@ -12,6 +12,8 @@
 //   by the narrow-loop fill (closed, genus 0, 2V - 4 triangles), those of the wide one (4.79
 //   spacings) and of both with MaximumHoleEdges 0 left open (two loops, Euler characteristic 0);
 // - a planar 20 x 20 grid (cocircular and collinear points everywhere): 722 triangles, one loop;
+// - a tilted plane scanned in lines of an integer lattice: no zero-area triangle, manifold,
+//   every point used;
 // - two disjoint spheres: two closed components (the front dies, a second seed is planted);
 // - random sphere and torus samples that once kept a sliver hole, gained a handle or left a
 //   point unused: closed, genus 0 / 1, every point used; on the spheres (and the 3000-point
@@ -406,6 +408,34 @@ bool TestPlanarGrid()
   return true;
 }
 
+bool TestLatticeLines()
+{
+  // A tilted plane scanned in 20 lines of 150 points on an integer lattice (2 apart along a
+  // line, 7 across): many exactly collinear triples. A free point lying on a triangle's edge was
+  // inserted by splitting the triangle in three, one of them of zero area (17 such triangles, 127
+  // points unused before).
+  std::vector<double> xyz;
+  for (int line = 0; line < 20; ++line)
+  {
+    for (int k = 0; k < 150; ++k)
+    {
+      const double x = 2.0 * k, y = 7.0 * line;
+      xyz.insert(xyz.end(), { x, y, x + y });
+    }
+  }
+  vtkNew<vtkLocalOptimumGrowth> growth;
+  growth->SetInputData(pcstest::MakeCloud(xyz));
+  growth->Update();
+  const Quality q = Measure(growth->GetOutput());
+  PCS_CHECK(q.Degenerate == 0 && q.Duplicates == 0,
+    "lattice lines: " << q.Degenerate << " zero-area, " << q.Duplicates << " duplicate triangles");
+  PCS_CHECK(q.NonManifoldEdges == 0 && q.NonManifoldVertices == 0 && q.Orientation == 1.0,
+    "lattice lines: manifold and oriented");
+  PCS_CHECK(q.UsedPoints == 3000 && growth->GetNumberOfUnusedPoints() == 0,
+    "lattice lines: " << q.UsedPoints << " of 3000 points used");
+  return true;
+}
+
 bool TestTwoSpheres()
 {
   const double c1[3] = { 0, 0, 0 }, c2[3] = { 3, 0.5, 0 };
@@ -515,6 +545,7 @@ int TestLocalOptimumGrowth(int, char*[])
   ok = TestOpenPatch() && ok;
   ok = TestNarrowLoops() && ok;
   ok = TestPlanarGrid() && ok;
+  ok = TestLatticeLines() && ok;
   ok = TestTwoSpheres() && ok;
   ok = TestRandomSamples() && ok;
   ok = TestDegenerate() && ok;

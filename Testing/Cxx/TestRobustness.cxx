@@ -6,7 +6,7 @@
 // - the output is valid: a vtkPolyData with all the input points (filters pass every point
 //   through), every cell id in range, no cell on a non-finite point, no triangle with a repeated
 //   vertex, and for the filters that promise a manifold surface no non-manifold edge or vertex
-//   (vtkReconstructionQuality);
+//   and no zero-area triangle (exactly collinear vertices) (vtkReconstructionQuality);
 // - point data arrays of every common type pass through unchanged.
 // Pairs of inputs that describe the same surface must give the same result: a 10^6 offset on
 // every coordinate, float instead of double coordinates, a vtkUnstructuredGrid of vertices
@@ -507,6 +507,41 @@ std::vector<InputCase> Inputs()
     }
     cases.push_back({ "plane scanned in lines", xyz, false });
   }
+  {
+    // A sphere of radius 300 scanned in 40 rings of 100 points, coordinates rounded to integers
+    // (an int16 scanner): rows of exactly collinear points. vtkLocalOptimumGrowth (a free point
+    // inserted into a triangle beside an edge it lies on) made 17 zero-area triangles and
+    // vtkGreedySurfaceTriangulation (a lost point on a hole's boundary edge) 8.
+    std::vector<double> xyz;
+    const double pi = 3.14159265358979323846;
+    for (int ring = 0; ring < 40; ++ring)
+    {
+      const double t = pi * (ring + 0.5) / 40.0;
+      for (int k = 0; k < 100; ++k)
+      {
+        const double f = 2.0 * pi * k / 100.0;
+        xyz.insert(xyz.end(),
+          { std::round(300.0 * std::sin(t) * std::cos(f)),
+            std::round(300.0 * std::sin(t) * std::sin(f)),
+            std::round(300.0 * std::cos(t)) });
+      }
+    }
+    cases.push_back({ "sphere scanned in rings, integer coordinates", xyz, false });
+  }
+  {
+    // A tilted plane scanned in 20 lines of 150 points on an integer lattice (1 apart along a
+    // line, 7 across): vtkLocalOptimumGrowth made 584 zero-area triangles with points of a line.
+    std::vector<double> xyz;
+    for (int line = 0; line < 20; ++line)
+    {
+      for (int k = 0; k < 150; ++k)
+      {
+        const double x = k, y = 7.0 * line;
+        xyz.insert(xyz.end(), { x, y, x + y });
+      }
+    }
+    cases.push_back({ "tilted plane scanned in integer lines", xyz, false });
+  }
   // Normals (exact, outward on the unit sphere) with zero-length or NaN ones.
   for (int kind = 0; kind < 4; ++kind)
   {
@@ -642,6 +677,9 @@ bool CheckOutput(const FilterEntry& filter, const std::string& label, vtkPolyDat
       label << ": non-manifold edges");
     PCS_CHECK(pcstest::FieldCount(quality->GetOutput(), "NumberOfNonManifoldVertices") == 0,
       label << ": non-manifold vertices");
+    const vtkIdType degenerate =
+      pcstest::FieldCount(quality->GetOutput(), "NumberOfDegenerateTriangles");
+    PCS_CHECK(degenerate == 0, label << ": " << degenerate << " zero-area triangles");
   }
   if (checkArrays)
   {

@@ -546,6 +546,25 @@ void TestLeastDihedralFill()
     "two vertices: no triangulation");
 }
 
+// The triangles of `triangles` (3 ids each) whose points of `xyz` have a zero cross product;
+// exact for the small integer coordinates of the grids below.
+int ZeroAreaTriangles(const std::vector<double>& xyz, const std::vector<int32_t>& triangles)
+{
+  int degenerate = 0;
+  for (size_t t = 0; t < triangles.size(); t += 3)
+  {
+    const double* a = &xyz[3 * static_cast<size_t>(triangles[t])];
+    const double* b = &xyz[3 * static_cast<size_t>(triangles[t + 1])];
+    const double* c = &xyz[3 * static_cast<size_t>(triangles[t + 2])];
+    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double w[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+    const bool zero = u[1] * w[2] - u[2] * w[1] == 0 && u[2] * w[0] - u[0] * w[2] == 0 &&
+      u[0] * w[1] - u[1] * w[0] == 0;
+    degenerate += zero ? 1 : 0;
+  }
+  return degenerate;
+}
+
 // The zero-area triangles of a fill of the hole bounded by the border of the integer grid
 // (i, j, p i + q j), 0 <= i, j <= 6, with its 25 inner points inside (boundary vectors outwards;
 // `reversed`: the same hole seen from the other side). Whole rows of the grid are collinear in
@@ -606,23 +625,53 @@ int ZeroAreaTrianglesOfGridFill(int p, int q, bool reversed, int& triangles)
   pcs::holes::FillResult result;
   filler.Fill(xyz.data(), loop, vectors, inside, result);
   triangles = static_cast<int>(result.Triangles.size() / 3);
-  int degenerate = 0;
-  for (size_t t = 0; t < result.Triangles.size(); t += 3)
+  return ZeroAreaTriangles(xyz, result.Triangles);
+}
+
+// The hole bounded by the 4 corners of the integer grid (i, j, p i + q j), 0 <= i, j <= 6, with
+// every other grid point as a candidate: the 20 on the sides lie exactly on the loop's edges in
+// space (a lost point on a boundary edge of the mesh), and only a zero-area triangle would join
+// one to its edge. Counts the zero-area triangles and the side points used.
+int ZeroAreaTrianglesOfSideFill(int p, int q, int& triangles, int& sidePointsUsed)
+{
+  std::vector<double> xyz;
+  std::vector<int32_t> inside;
+  auto id = [](int i, int j) { return 7 * i + j; };
+  for (int i = 0; i <= 6; ++i)
   {
-    const double* a = &xyz[3 * static_cast<size_t>(result.Triangles[t])];
-    const double* b = &xyz[3 * static_cast<size_t>(result.Triangles[t + 1])];
-    const double* c = &xyz[3 * static_cast<size_t>(result.Triangles[t + 2])];
-    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-    const double w[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-    const bool zero = u[1] * w[2] - u[2] * w[1] == 0 && u[2] * w[0] - u[0] * w[2] == 0 &&
-      u[0] * w[1] - u[1] * w[0] == 0;
-    degenerate += zero ? 1 : 0;
+    for (int j = 0; j <= 6; ++j)
+    {
+      xyz.insert(xyz.end(), { double(i), double(j), double(p * i + q * j) });
+      const bool corner = (i == 0 || i == 6) && (j == 0 || j == 6);
+      if (!corner)
+      {
+        inside.push_back(id(i, j));
+      }
+    }
   }
-  return degenerate;
+  const std::vector<int32_t> loop = { id(0, 0), id(0, 6), id(6, 6), id(6, 0) };
+  const double out[4][2] = { { -1, -1 }, { -1, 1 }, { 1, 1 }, { 1, -1 } };
+  std::vector<double> vectors;
+  for (const auto& o : out)
+  {
+    vectors.insert(vectors.end(), { o[0], o[1], p * o[0] + q * o[1] });
+  }
+  pcs::holes::HoleFiller filler;
+  pcs::holes::FillResult result;
+  filler.Fill(xyz.data(), loop, vectors, inside, result);
+  triangles = static_cast<int>(result.Triangles.size() / 3);
+  sidePointsUsed = 0;
+  for (int32_t v : result.UsedPoints)
+  {
+    const int i = v / 7, j = v % 7;
+    sidePointsUsed += (i == 0 || i == 6 || j == 0 || j == 6) ? 1 : 0;
+  }
+  return ZeroAreaTriangles(xyz, result.Triangles);
 }
 
 // Fills that would need a zero-area triangle: three collinear loop vertices (a slit), and grid
-// holes on 48 tilted planes (before the 3D segment test, 8 of the 96 fills had such triangles).
+// holes on 48 tilted planes (before the 3D segment test, 8 of the 96 fills had such triangles),
+// and the same planes' holes whose edges pass through candidate points.
 void TestDegenerateFills()
 {
   {
@@ -649,6 +698,16 @@ void TestDegenerateFills()
         CHECK(degenerate == 0, "grid p %d q %d%s: %d zero-area triangle(s) of %d", p, q,
           reversed ? " reversed" : "", degenerate, triangles);
       }
+      int triangles = 0, sideUsed = 0;
+      const int degenerate = ZeroAreaTrianglesOfSideFill(p, q, triangles, sideUsed);
+      CHECK(triangles > 0, "sides p %d q %d: no triangle", p, q);
+      CHECK(degenerate == 0 && sideUsed == 0,
+        "sides p %d q %d: %d zero-area triangle(s) of %d, %d point(s) on the loop's edges used",
+        p,
+        q,
+        degenerate,
+        triangles,
+        sideUsed);
     }
   }
 }

@@ -10,10 +10,23 @@
  *
  * Normals: the input's point normals when UseInputNormals is on and the array selected with
  * SetInputArrayToProcess(0, ...) (by default the active point normals) is a 3-component point
- * array; otherwise they are estimated with vtkPCANormalEstimation (NormalSampleSize nearest
- * points, orientation made consistent by its graph traversal; then all are flipped if needed so
- * that the normal of the point farthest from the centroid points away from it: outwards on a
- * closed surface). Input normals that are zero-length or not finite count as missing: a warning
+ * array; otherwise they are estimated from the points. Each normal is the normal of the
+ * least-squares plane of the point and its NormalSampleSize - 1 nearest points (Hoppe et al.'s
+ * tangent plane, as vtkPCANormalEstimation: the covariance eigenvector of the smallest
+ * eigenvalue). The orientation is propagated along a minimum spanning tree of the graph joining
+ * each point to the same nearest points (Hoppe et al.), most certain edges first: two points
+ * agree when the normal of one, reflected through the plane bisecting them (the normal carried
+ * along a circle through both), has a positive dot product with the other's (cf. Koenig and
+ * Gumhold 2009), and an edge costs 1 - |that product| plus the surface variations
+ * (3 l0 / (l0 + l1 + l2) of the covariance eigenvalues) of its end points, so the propagation goes
+ * around the points whose plane is uncertain. Each connected part of the graph is then turned
+ * outwards by a vote of its extreme points along +-x, +-y and +-z (where the outward normal of a
+ * closed surface is that axis). vtkPCANormalEstimation's breadth-first traversal (plain dot
+ * products, in id order) flipped the far side of any part thinner than a neighbourhood and
+ * whatever a wrong normal led to, and one flip by the point farthest from the centroid turned
+ * some clouds inside out: CGAL's elephant vertex set had 361 of 2,775 normals inwards, now 5;
+ * its cow 2,546 of 2,904 (inside out), now 328.
+ * Input normals that are zero-length or not finite count as missing: a warning
  * names how many, and those points get estimated normals (oriented like the valid input normals:
  * all estimated normals are flipped when their dot products with the valid input normals sum to
  * a negative value). The normals used are passed to the output when some were estimated (point
@@ -129,18 +142,23 @@
  * vertex sets of bunny00, armadillo and refined_elephant, but 1.05 and 1.4 times slower on the
  * small irregular vertex sets of the camel and the elephant (the II.D projection tests of the
  * triangles made are most of the time; 1.7 and 1.5 times slower before the ray bound was made
- * local); with estimated normals 1.1-1.4 times faster on the former, 1.6 and 2.5 times slower
- * on the latter. Quality: 0 non-manifold edges and vertices and
+ * local); with estimated normals 1.05-1.15 times faster on the former's 10^5-point samples, 1.25
+ * and 1.8 times slower on the latter (1.4 and 2.4 before the orientation of the estimated normals
+ * followed a spanning tree; results/cdt.md). Quality: 0 non-manifold edges and vertices and
  * coverage >= 99 % on every clean cloud; the Hausdorff distance exceeds 2 mean spacings on the
  * 10^5-point samples of the armadillo (2.04, a hole with edges of 7 spacings on a fold) and the
  * camel (2.36: a sharp tip of the mesh is 2.36 spacings from the nearest sample point, CGAL 2.38)
- * with exact normals, and with estimated normals on the camel and elephant vertex sets (2.82,
- * 2.36: triangles standing across the surface where the PCA normals of the irregular sampling
- * are 60-90 degrees off) and the camel samples. Noisy clouds (Gaussian noise of 0.4 mean
- * spacing): many front edges and points find no valid triangle (the noise puts neighbouring
- * points inside the candidate triangles' projections); the work per front edge and per seed
- * point is bounded by MaximumNumberOfCandidates, but the filter still takes 3-9 times CGAL's CPU
- * time, leaves holes (coverage 0.94-0.98) and unused points (2-6 %).
+ * with exact normals, and with estimated normals on the camel vertex set (2.79: hole-filling
+ * and front triangles standing across the surface on the underside of the body, whose vertices'
+ * PCA planes of the irregular sampling are 60-90 degrees off; 849 of its 9,770 normals are more
+ * than 30 degrees off, 34 points unused; the elephant vertex set went from 2.36 to 0.75 with the
+ * spanning-tree orientation) and the camel samples (2.36). Estimated normals are oriented per
+ * connected part of the neighbour graph by a vote of its extreme points, which can fail (CGAL's
+ * elk vertex set: most normals point inwards, before and after). Noisy clouds
+ * (Gaussian noise of 0.4 mean spacing): many front edges and points find no valid triangle (the
+ * noise puts neighbouring points inside the candidate triangles' projections); the work per front
+ * edge and per seed point is bounded by MaximumNumberOfCandidates, but the filter still takes 3-9
+ * times CGAL's CPU time, leaves holes (coverage 0.94-0.98) and unused points (2-6 %).
  *
  * @sa
  * vtkPCANormalEstimation vtkStaticPointLocator vtkReconstructionQuality vtkIncrementalDelaunay3D
@@ -173,8 +191,10 @@ public:
 
   ///@{
   /**
-   * Number of nearest points used by vtkPCANormalEstimation when the normals are estimated.
-   * Default 10; range [3, 100] (the estimation's cost grows quickly with it).
+   * Number of nearest points (the point itself included) of the normal estimation, when the
+   * normals are estimated: the plane of a point is fitted to them and the orientation follows
+   * the graph joining each point to them (see Normals in the class docs). Default 10; range
+   * [3, 100] (the estimation's cost grows quickly with it).
    */
   vtkSetClampMacro(NormalSampleSize, int, 3, 100);
   vtkGetMacro(NormalSampleSize, int);

@@ -5,6 +5,7 @@
 #include "pcsGatherInput.h"
 #include "pcsHoleFilling.h"
 #include "pcsNearestNeighbors.h"
+#include "pcsOutliers.h"
 #include "pcsPredicates.h"
 #include "pcsProjectedTests.h"
 #include "pcsSpatialSort.h"
@@ -1963,7 +1964,7 @@ int vtkLocalOptimumGrowth::RequestData(
   }
   this->NumberOfInputPoints = this->NumberOfTriangles = this->NumberOfSeeds = 0;
   this->NumberOfHolesClosed = this->NumberOfUnusedPoints = this->NumberOfDuplicatePoints = 0;
-  this->NumberOfSkippedPoints = this->NumberOfBoundaryEdges = 0;
+  this->NumberOfSkippedPoints = this->NumberOfBoundaryEdges = this->NumberOfOutliers = 0;
 
   const vtkIdType numberOfPoints = input->GetNumberOfPoints();
   this->NumberOfInputPoints = numberOfPoints;
@@ -1994,6 +1995,7 @@ int vtkLocalOptimumGrowth::RequestData(
     pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", this->NumberOfDuplicatePoints);
     pcs::AddFieldCount(fd, "NumberOfSkippedPoints", this->NumberOfSkippedPoints);
     pcs::AddFieldCount(fd, "NumberOfBoundaryEdges", this->NumberOfBoundaryEdges);
+    pcs::AddFieldCount(fd, "NumberOfOutliers", this->NumberOfOutliers);
     return 1;
   };
 
@@ -2108,11 +2110,20 @@ int vtkLocalOptimumGrowth::RequestData(
                               << " exact duplicate point(s) into the point they coincide with "
                                  "(point data RepresentativeId; they are not triangle vertices).");
   }
+  this->NumberOfOutliers = pcs::RemoveOutliers(
+    xyz.data(), ids, this->OutlierFactor, [this](double) { return !this->GetAbortExecute(); });
+  if (this->NumberOfOutliers > 0)
+  {
+    vtkWarningMacro("Excluded " << this->NumberOfOutliers << " far outlier(s) (OutlierFactor "
+                                << this->OutlierFactor
+                                << "): point data Used = 0, field data NumberOfOutliers.");
+  }
+  this->NumberOfUnusedPoints = this->NumberOfOutliers;
   const Id n = static_cast<Id>(ids.size());
   if (n < 3)
   {
     vtkWarningMacro("Fewer than 3 distinct finite points (" << n << "): no triangles are made.");
-    this->NumberOfUnusedPoints = n;
+    this->NumberOfUnusedPoints += n;
     return finish();
   }
   this->UpdateProgress(0.05);
@@ -2237,6 +2248,7 @@ void vtkLocalOptimumGrowth::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfNeighbors: " << this->NumberOfNeighbors << "\n";
+  os << indent << "OutlierFactor: " << this->OutlierFactor << "\n";
   os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";
   os << indent << "MinimumEdgeRatio: " << this->MinimumEdgeRatio << "\n";
   os << indent << "MaximumEdgeRatio: " << this->MaximumEdgeRatio << "\n";

@@ -175,8 +175,9 @@
  * represents each input point: itself, the first of a group of exact duplicates, or -1 for a
  * point with a NaN or infinite coordinate); field data `NumberOfInputPoints`,
  * `NumberOfTriangles`, `NumberOfSeeds`, `NumberOfHolesClosed`, `NumberOfUnusedPoints` (distinct
- * finite points no triangle uses), `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`
- * (non-finite), `NumberOfBoundaryEdges` (edges of a single triangle left in the mesh).
+ * finite points no triangle uses, outliers included), `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`
+ * (non-finite), `NumberOfBoundaryEdges` (edges of a single triangle left in the mesh),
+ * `NumberOfOutliers` (far outliers excluded, OutlierFactor).
  *
  * Cost: O(KN) for N points (the paper's bound): the neighbour search is done once, each front
  * edge examines at most 2K candidates and their neighbourhood, and every topological query is
@@ -284,6 +285,19 @@ public:
 
   ///@{
   /**
+   * Far outliers are excluded before the neighbour search and reported (point data Used = 0,
+   * field data NumberOfOutliers, a warning; counted in NumberOfUnusedPoints too): the rule of
+   * vtkPerimeterPeelSurface::OutlierFactor (pcs::FindOutliers), same meaning: a point whose
+   * reach (mean distance to its 8 nearest points) is over 4 times the cloud's median reach and
+   * over OutlierFactor times the median reach of its 8 nearest points that are not. Default 8.0;
+   * range [0, 1000]; 0: off.
+   */
+  vtkSetClampMacro(OutlierFactor, double, 0.0, 1000.0);
+  vtkGetMacro(OutlierFactor, double);
+  ///@}
+
+  ///@{
+  /**
    * The point locator used for the K-nearest-neighbour search. Default none: a
    * vtkStaticPointLocator with about 4 bins per point is created. A locator set here is used
    * with its own bin settings.
@@ -304,6 +318,7 @@ public:
   vtkGetMacro(NumberOfDuplicatePoints, vtkIdType);
   vtkGetMacro(NumberOfSkippedPoints, vtkIdType);
   vtkGetMacro(NumberOfBoundaryEdges, vtkIdType);
+  vtkGetMacro(NumberOfOutliers, vtkIdType);
   ///@}
 
   vtkMTimeType GetMTime() override;
@@ -322,6 +337,7 @@ protected:
   double MaximumBaseAngle = 120.0;
   int MaximumHoleEdges = 8;
   bool RelaxConstraints = true;
+  double OutlierFactor = 8.0;
   vtkStaticPointLocator* Locator = nullptr;
 
   vtkIdType NumberOfInputPoints = 0;
@@ -332,6 +348,7 @@ protected:
   vtkIdType NumberOfDuplicatePoints = 0;
   vtkIdType NumberOfSkippedPoints = 0;
   vtkIdType NumberOfBoundaryEdges = 0;
+  vtkIdType NumberOfOutliers = 0;
 
 private:
   vtkLocalOptimumGrowth(const vtkLocalOptimumGrowth&) = delete;

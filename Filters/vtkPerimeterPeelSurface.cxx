@@ -4,6 +4,7 @@
 #include "pcsDelaunay3D.h"
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
+#include "pcsOutliers.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -896,13 +897,13 @@ int vtkPerimeterPeelSurface::RequestData(
   used->FillValue(0);
   output->GetPointData()->AddArray(used);
 
-  vtkIdType iterations = 0, removedCount = 0, groupCount = 0, tetrahedra = 0;
+  vtkIdType iterations = 0, removedCount = 0, groupCount = 0, tetrahedra = 0, outliers = 0;
   double finalThreshold = 0.0, delaunayTime = 0.0, peelTime = 0.0;
   double delaunayCPUTime = 0.0, peelCPUTime = 0.0;
-  const std::clock_t startCPU = std::clock();
+  std::clock_t startCPU = std::clock();
   std::clock_t peelStartCPU = startCPU;
   using Clock = std::chrono::steady_clock;
-  const Clock::time_point start = Clock::now();
+  Clock::time_point start = Clock::now();
   Clock::time_point peelStart = start;
   vtkNew<vtkCellArray> polys;
   auto finish = [&]()
@@ -922,6 +923,7 @@ int vtkPerimeterPeelSurface::RequestData(
     pcs::AddFieldCount(fd, "NumberOfTriangles", polys->GetNumberOfCells());
     pcs::AddFieldCount(fd, "NumberOfUsedPoints", usedPoints);
     pcs::AddFieldCount(fd, "NumberOfUnusedPoints", numberOfPoints - usedPoints);
+    pcs::AddFieldCount(fd, "NumberOfOutliers", outliers);
     pcs::AddFieldValue(fd, "DelaunayTime", delaunayTime);
     pcs::AddFieldValue(fd, "PeelTime", peelTime);
     pcs::AddFieldValue(fd, "DelaunayCPUTime", delaunayCPUTime);
@@ -929,9 +931,8 @@ int vtkPerimeterPeelSurface::RequestData(
     if (numberOfPoints > usedPoints && polys->GetNumberOfCells() > 0)
     {
       vtkWarningMacro(<< numberOfPoints - usedPoints << " of " << numberOfPoints
-                      << " point(s) are not on the surface (duplicates, non-finite points "
-                         "or "
-                         "points inside the solid): see the point data array Used.");
+                      << " point(s) are not on the surface (duplicates, non-finite points, "
+                         "outliers or points inside the solid): see the point data array Used.");
     }
     return 1;
   };
@@ -970,6 +971,17 @@ int vtkPerimeterPeelSurface::RequestData(
   {
     xyz = pcs::ScaledCopy(xyz.data(), xyz.size(), exponent);
   }
+  outliers = pcs::RemoveOutliers(
+    xyz.data(), ids, this->OutlierFactor, [this](double) { return !this->GetAbortExecute(); });
+  if (outliers > 0)
+  {
+    vtkWarningMacro("Excluded " << outliers << " far outlier(s) of " << ids.size() + outliers
+                                << " point(s) (OutlierFactor " << this->OutlierFactor
+                                << "): point data Used = 0, field data NumberOfOutliers.");
+  }
+  // DelaunayTime and DelaunayCPUTime measure the tetrahedralization, not the outlier rule.
+  start = Clock::now();
+  startCPU = std::clock();
 
   pcs::Delaunay3D dt;
   auto progress = [this](double fraction)
@@ -1330,4 +1342,5 @@ void vtkPerimeterPeelSurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";
   os << indent << "ManifoldOutput: " << this->ManifoldOutput << "\n";
   os << indent << "LocalSpacingNeighbors: " << this->LocalSpacingNeighbors << "\n";
+  os << indent << "OutlierFactor: " << this->OutlierFactor << "\n";
 }

@@ -1,0 +1,204 @@
+#include "pcsOutliers.h"
+
+#include "pcsNearestNeighbors.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPThreadLocalObject.h"
+#include "vtkSMPTools.h"
+#include "vtkStaticPointLocator.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace pcs
+{
+namespace
+{
+// The distinct positions among `ids` in lexicographic order (packed x, y, z), and for each entry
+// of `ids` the index of its position.
+void DistinctPositions(const double* xyz, const std::vector<int32_t>& ids,
+  std::vector<double>& distinct, std::vector<int32_t>& positionOf)
+{
+  auto at = [xyz](int32_t id) { return xyz + 3 * static_cast<size_t>(id); };
+  std::vector<int32_t> order(ids.size());
+  std::iota(order.begin(), order.end(), 0);
+  vtkSMPTools::Sort(order.begin(), order.end(), [&](int32_t r, int32_t s) {
+    const double* p = at(ids[r]);
+    const double* q = at(ids[s]);
+    return std::lexicographical_compare(p, p + 3, q, q + 3);
+  });
+  distinct.clear();
+  positionOf.assign(ids.size(), -1);
+  for (size_t j = 0; j < order.size(); ++j)
+  {
+    const double* p = at(ids[order[j]]);
+    if (j == 0 || !std::equal(p, p + 3, at(ids[order[j - 1]])))
+    {
+      distinct.insert(distinct.end(), p, p + 3);
+    }
+    positionOf[order[j]] = static_cast<int32_t>(distinct.size() / 3 - 1);
+  }
+}
+
+double Median(std::vector<double> values)
+{
+  const auto middle = values.begin() + values.size() / 2;
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+}
+
+int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double factor,
+  std::vector<uint8_t>& outlier, const std::function<bool(double)>& progress)
+{
+  outlier.assign(ids.size(), 0);
+  if (!(factor > 0.0) || ids.size() < 4 * static_cast<size_t>(OutlierNeighbors))
+  {
+    return 0;
+  }
+  std::vector<double> x;
+  std::vector<int32_t> positionOf;
+  DistinctPositions(xyz, ids, x, positionOf);
+  const int32_t n = static_cast<int32_t>(x.size() / 3);
+  if (n < 4 * OutlierNeighbors)
+  {
+    return 0;
+  }
+
+  const int k = OutlierNeighbors;
+  std::vector<int32_t> knn;
+  {
+    vtkNew<vtkDoubleArray> coordinates;
+    coordinates->SetNumberOfComponents(3);
+    coordinates->SetArray(x.data(), 3 * static_cast<vtkIdType>(n), 1);
+    vtkNew<vtkPoints> points;
+    points->SetData(coordinates);
+    vtkNew<vtkPolyData> cloud;
+    cloud->SetPoints(points);
+    vtkNew<vtkStaticPointLocator> locator;
+    double bounds[6];
+    points->GetBounds(bounds);
+    SetSurfaceSampleDivisions(locator, bounds, n);
+    locator->SetDataSet(cloud);
+    locator->BuildLocator();
+    if (!FindNearestNeighbors(locator, x.data(), n, k, knn, progress))
+    {
+      return 0;
+    }
+  }
+
+  // Reach: mean distance to the k nearest distinct points.
+  std::vector<double> reach(n);
+  vtkSMPTools::For(0, n, [&](int32_t begin, int32_t end) {
+    for (int32_t i = begin; i < end; ++i)
+    {
+      const double* p = &x[3 * static_cast<size_t>(i)];
+      double sum = 0.0;
+      for (int j = 0; j < k; ++j)
+      {
+        const double* q = &x[3 * static_cast<size_t>(knn[static_cast<size_t>(i) * k + j])];
+        sum += std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+          (p[2] - q[2]) * (p[2] - q[2]));
+      }
+      reach[i] = sum / k;
+    }
+  });
+  // Candidates: sparser than OutlierSparseFactor x the cloud's median reach. Each is compared
+  // with the median reach of its OutlierNeighbors nearest dense points (the others): next to a
+  // sparse region of a graded sample these are at the edge of the sparse region (reach about
+  // OutlierSparseFactor x the median), next to an outlier or clutter they are the sampled
+  // surface.
+  const double sparse = OutlierSparseFactor * Median(reach);
+  std::vector<int32_t> denseIds;
+  for (int32_t i = 0; i < n; ++i)
+  {
+    if (!(reach[i] > sparse))
+    {
+      denseIds.push_back(i);
+    }
+  }
+  std::vector<uint8_t> far(n, 0);
+  if (denseIds.size() == static_cast<size_t>(n) || denseIds.empty())
+  {
+    return 0;
+  }
+  vtkNew<vtkDoubleArray> denseCoordinates;
+  denseCoordinates->SetNumberOfComponents(3);
+  denseCoordinates->SetNumberOfTuples(static_cast<vtkIdType>(denseIds.size()));
+  for (size_t j = 0; j < denseIds.size(); ++j)
+  {
+    denseCoordinates->SetTypedTuple(
+      static_cast<vtkIdType>(j), &x[3 * static_cast<size_t>(denseIds[j])]);
+  }
+  vtkNew<vtkPoints> densePoints;
+  densePoints->SetData(denseCoordinates);
+  vtkNew<vtkPolyData> denseCloud;
+  denseCloud->SetPoints(densePoints);
+  vtkNew<vtkStaticPointLocator> denseLocator;
+  double denseBounds[6];
+  densePoints->GetBounds(denseBounds);
+  SetSurfaceSampleDivisions(denseLocator, denseBounds, static_cast<int32_t>(denseIds.size()));
+  denseLocator->SetDataSet(denseCloud);
+  denseLocator->BuildLocator();
+  const int nearest = std::min<int>(k, static_cast<int>(denseIds.size()));
+  vtkSMPThreadLocal<std::vector<double>> aroundLocal;
+  vtkSMPThreadLocalObject<vtkIdList> listLocal;
+  vtkSMPTools::For(0, n, [&](int32_t begin, int32_t end) {
+    std::vector<double>& around = aroundLocal.Local();
+    vtkIdList* list = listLocal.Local();
+    for (int32_t i = begin; i < end; ++i)
+    {
+      if (!(reach[i] > sparse))
+      {
+        continue;
+      }
+      denseLocator->FindClosestNPoints(nearest, &x[3 * static_cast<size_t>(i)], list);
+      around.clear();
+      for (vtkIdType j = 0; j < list->GetNumberOfIds(); ++j)
+      {
+        around.push_back(reach[denseIds[list->GetId(j)]]);
+      }
+      if (!around.empty())
+      {
+        std::nth_element(around.begin(), around.begin() + around.size() / 2, around.end());
+        far[i] = reach[i] > factor * around[around.size() / 2];
+      }
+    }
+  });
+  int64_t count = 0;
+  for (size_t j = 0; j < ids.size(); ++j)
+  {
+    outlier[j] = far[positionOf[j]];
+    count += outlier[j];
+  }
+  return count;
+}
+
+int64_t RemoveOutliers(const double* xyz, std::vector<int32_t>& ids, double factor,
+  const std::function<bool(double)>& progress)
+{
+  std::vector<uint8_t> outlier;
+  const int64_t count = FindOutliers(xyz, ids, factor, outlier, progress);
+  if (count > 0)
+  {
+    size_t kept = 0;
+    for (size_t j = 0; j < ids.size(); ++j)
+    {
+      if (!outlier[j])
+      {
+        ids[kept++] = ids[j];
+      }
+    }
+    ids.resize(kept);
+  }
+  return count;
+}
+}

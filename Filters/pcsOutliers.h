@@ -1,0 +1,43 @@
+// Far outliers of a point cloud: the one rule shared by the surface filters (private helper, not
+// wrapped).
+#ifndef pcsOutliers_h
+#define pcsOutliers_h
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace pcs
+{
+/// Neighbours of a point's reach (below), and dense points a candidate is compared with.
+constexpr int OutlierNeighbors = 8;
+/// Only points whose reach exceeds this factor times the cloud's median reach are candidates.
+constexpr double OutlierSparseFactor = 4.0;
+
+/// Flags the far outliers among the points `ids` of `xyz` (packed x, y, z): `outlier` gets one
+/// byte per entry of `ids` (1: outlier) and the function returns how many are flagged.
+///
+/// A point's reach is the mean distance to its OutlierNeighbors nearest distinct points
+/// (pcs::FindNearestNeighbors; exact copies of a point count as that point and share its
+/// verdict). A point is sparse when its reach exceeds OutlierSparseFactor times the median reach
+/// of the cloud, dense otherwise. A sparse point is an outlier when its reach also exceeds
+/// `factor` times the median reach of its OutlierNeighbors nearest dense points. In a graded
+/// sample the dense points nearest to a sparse region lie at its edge, where the density has
+/// fallen gradually to the sparse limit (their reach is close to it); next to an isolated point,
+/// a clump or sparse clutter they are the sampled surface, however far, so that clutter whose
+/// points are each other's neighbours is found too. `factor` <= 0 turns the rule off (nothing
+/// flagged). Clouds of fewer than 4 x OutlierNeighbors distinct points are too small to judge:
+/// nothing is flagged. The result does not depend on the order of `ids` nor on the number of
+/// threads (vtkSMPTools). Cost: one k-nearest-neighbour search (k = OutlierNeighbors), a locator
+/// over the dense points and one query per sparse point. `progress` as for FindNearestNeighbors
+/// (false: stopped, nothing flagged).
+int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double factor,
+  std::vector<uint8_t>& outlier, const std::function<bool(double)>& progress = nullptr);
+
+/// FindOutliers, then the flagged points are removed from `ids` (order kept); returns their
+/// number. The filters' OutlierFactor.
+int64_t RemoveOutliers(const double* xyz, std::vector<int32_t>& ids, double factor,
+  const std::function<bool(double)>& progress = nullptr);
+}
+
+#endif

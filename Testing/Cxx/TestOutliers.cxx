@@ -1,0 +1,160 @@
+// Far outliers (OutlierFactor, the shared rule of pcsOutliers) in vtkPerimeterPeelSurface and
+// vtkLocalOptimumGrowth, on clouds whose outliers are known by construction:
+// - 3,000 random points of the unit sphere plus 3 % outliers uniform in the box [-3, 3]^3 (three
+//   times the sphere's bounding box), none within 0.8 of the sphere (25 mean spacings; the rule
+//   leaves points within about 8 reaches, some 20 spacings, alone):
+//   each filter gives a closed, manifold, oriented, genus-0 surface over exactly the sphere
+//   points (every one used, every outlier unused), every triangle within 2 mean spacings of the
+//   sphere, and reports exactly the outliers (field data NumberOfOutliers, point data Used = 0);
+//   with OutlierFactor 0 (off) the outliers are not reported;
+// - clean clouds flag nothing: a torus sampled 25 times more densely on one side, and a sphere
+//   with Gaussian noise of 0.4 mean spacings per coordinate.
+#include "vtkLocalOptimumGrowth.h"
+#include "vtkPerimeterPeelSurface.h"
+#include "vtkReconstructionQuality.h"
+
+#include "pcsPeelTestShapes.h"
+#include "pcsTestUtilities.h"
+
+#include "vtkDataArray.h"
+#include "vtkPointData.h"
+#include "vtkPolyDataAlgorithm.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <random>
+#include <string>
+
+namespace
+{
+using namespace pcstest;
+
+constexpr int SpherePointCount = 3000;
+// Mean nearest-neighbour distance of n uniform random points on the unit sphere: half the side
+// of a square of area 4 pi / n.
+const double SphereSpacing = 0.5 * std::sqrt(4.0 * M_PI / SpherePointCount);
+
+// The sphere points first, then the outliers.
+std::vector<double> SphereWithOutliers(int outliers, unsigned seed)
+{
+  std::vector<double> xyz = SpherePoints(SpherePointCount, seed);
+  std::mt19937_64 rng(seed + 77);
+  std::uniform_real_distribution<double> u(-3.0, 3.0);
+  while (static_cast<int>(xyz.size()) < 3 * (SpherePointCount + outliers))
+  {
+    const double p[3] = { u(rng), u(rng), u(rng) };
+    if (std::fabs(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - 1.0) > 0.8)
+    {
+      xyz.insert(xyz.end(), p, p + 3);
+    }
+  }
+  return xyz;
+}
+
+vtkSmartPointer<vtkPolyData> Run(vtkPolyDataAlgorithm* filter, const std::vector<double>& xyz)
+{
+  filter->SetInputData(MakeCloud(xyz));
+  filter->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(filter->GetOutput());
+  return out;
+}
+
+double QualityValue(vtkPolyData* mesh, const char* name)
+{
+  vtkNew<vtkReconstructionQuality> quality;
+  quality->SetInputData(mesh);
+  quality->ComputeDistancesOff();
+  quality->Update();
+  vtkDataArray* array = quality->GetOutput()->GetFieldData()->GetArray(name);
+  return array ? array->GetTuple1(0) : -1.0;
+}
+
+// The sphere of SphereWithOutliers without its outliers: closed, manifold, oriented, genus 0,
+// every sphere point used and no outlier, all triangles near the sphere, the outliers reported.
+bool CheckSphereSurface(const std::string& label, vtkPolyData* mesh, int outliers)
+{
+  PCS_CHECK(mesh->GetNumberOfPoints() == SpherePointCount + outliers, label << ": points passed");
+  PCS_CHECK(FieldCount(mesh, "NumberOfOutliers") == outliers,
+    label << ": " << FieldCount(mesh, "NumberOfOutliers") << " outliers reported, " << outliers
+          << " added");
+  vtkDataArray* used = mesh->GetPointData()->GetArray("Used");
+  PCS_CHECK(used != nullptr, label << ": Used");
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    PCS_CHECK((used->GetTuple1(i) != 0) == (i < SpherePointCount),
+      label << ": point " << i << (i < SpherePointCount ? " (sphere) unused" : " (outlier) used"));
+  }
+  PCS_CHECK(mesh->GetNumberOfPolys() == 2 * SpherePointCount - 4, label << ": 2V - 4 triangles");
+  PCS_CHECK(QualityValue(mesh, "NumberOfBoundaryEdges") == 0, label << ": closed");
+  PCS_CHECK(QualityValue(mesh, "NumberOfNonManifoldEdges") == 0 &&
+      QualityValue(mesh, "NumberOfNonManifoldVertices") == 0,
+    label << ": manifold");
+  PCS_CHECK(QualityValue(mesh, "Genus") == 0, label << ": genus 0");
+  PCS_CHECK(QualityValue(mesh, "OrientationConsistency") == 1.0, label << ": oriented");
+  for (const auto& t : CellTuples<3>(mesh))
+  {
+    double c[3] = { 0, 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      double p[3];
+      mesh->GetPoint(t[k], p);
+      for (int j = 0; j < 3; ++j)
+      {
+        c[j] += p[j] / 3.0;
+      }
+    }
+    const double offset = 1.0 - std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    PCS_CHECK(offset <= 2.0 * SphereSpacing, label << ": a triangle " << offset / SphereSpacing
+                                                   << " mean spacings inside the sphere");
+  }
+  std::cout << label << ": " << mesh->GetNumberOfPolys() << " triangles, "
+            << FieldCount(mesh, "NumberOfOutliers") << " outliers reported" << std::endl;
+  return true;
+}
+
+// `Filter` on the sphere with 3 % outliers: the sphere, the outliers reported; none reported with
+// OutlierFactor 0.
+template <typename Filter>
+bool CheckExcluded(const std::string& name, unsigned seed)
+{
+  const int outliers = SpherePointCount * 3 / 100;
+  const std::vector<double> xyz = SphereWithOutliers(outliers, seed);
+  vtkNew<Filter> filter;
+  if (!CheckSphereSurface(name + ", 3 % box outliers", Run(filter, xyz), outliers))
+  {
+    return false;
+  }
+  filter->SetOutlierFactor(0.0);
+  PCS_CHECK(FieldCount(Run(filter, xyz), "NumberOfOutliers") == 0, name << ", OutlierFactor 0");
+  return true;
+}
+
+// Clean clouds, graded or noisy: nothing is an outlier.
+bool CheckCleanClouds()
+{
+  std::vector<double> noisy = SpherePoints(SpherePointCount, 6);
+  std::mt19937_64 rng(6);
+  std::normal_distribution<double> g(0.0, 0.4 * SphereSpacing);
+  for (double& c : noisy)
+  {
+    c += g(rng);
+  }
+  const std::vector<double> graded = GradedTorusPoints(5000, 1, 1.2);
+  vtkNew<vtkPerimeterPeelSurface> peel;
+  vtkNew<vtkLocalOptimumGrowth> growth;
+  PCS_CHECK(FieldCount(Run(peel, graded), "NumberOfOutliers") == 0, "peel, graded torus");
+  PCS_CHECK(FieldCount(Run(growth, graded), "NumberOfOutliers") == 0, "LOG, graded torus");
+  PCS_CHECK(FieldCount(Run(peel, noisy), "NumberOfOutliers") == 0, "peel, noisy sphere");
+  PCS_CHECK(FieldCount(Run(growth, noisy), "NumberOfOutliers") == 0, "LOG, noisy sphere");
+  return true;
+}
+} // namespace
+
+int TestOutliers(int, char*[])
+{
+  bool ok = CheckExcluded<vtkPerimeterPeelSurface>("peel", 3);
+  ok = CheckExcluded<vtkLocalOptimumGrowth>("local optimum growth", 4) && ok;
+  ok = CheckCleanClouds() && ok;
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}

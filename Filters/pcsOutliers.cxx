@@ -56,45 +56,15 @@ double Median(std::vector<double> values)
 }
 }
 
-int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double factor,
-  std::vector<uint8_t>& outlier, const std::function<bool(double)>& progress)
+int64_t FlagOutliers(const double* x, int32_t n, const std::vector<int32_t>& knn, int width,
+  double factor, std::vector<uint8_t>& far)
 {
-  outlier.assign(ids.size(), 0);
-  if (!(factor > 0.0) || ids.size() < 4 * static_cast<size_t>(OutlierNeighbors))
-  {
-    return 0;
-  }
-  std::vector<double> x;
-  std::vector<int32_t> positionOf;
-  DistinctPositions(xyz, ids, x, positionOf);
-  const int32_t n = static_cast<int32_t>(x.size() / 3);
-  if (n < 4 * OutlierNeighbors)
-  {
-    return 0;
-  }
-
+  far.assign(static_cast<size_t>(std::max(n, 0)), 0);
   const int k = OutlierNeighbors;
-  std::vector<int32_t> knn;
+  if (!(factor > 0.0) || n < 4 * k || width < k)
   {
-    vtkNew<vtkDoubleArray> coordinates;
-    coordinates->SetNumberOfComponents(3);
-    coordinates->SetArray(x.data(), 3 * static_cast<vtkIdType>(n), 1);
-    vtkNew<vtkPoints> points;
-    points->SetData(coordinates);
-    vtkNew<vtkPolyData> cloud;
-    cloud->SetPoints(points);
-    vtkNew<vtkStaticPointLocator> locator;
-    double bounds[6];
-    points->GetBounds(bounds);
-    SetSurfaceSampleDivisions(locator, bounds, n);
-    locator->SetDataSet(cloud);
-    locator->BuildLocator();
-    if (!FindNearestNeighbors(locator, x.data(), n, k, knn, progress))
-    {
-      return 0;
-    }
+    return 0;
   }
-
   // Reach: mean distance to the k nearest distinct points.
   std::vector<double> reach(n);
   vtkSMPTools::For(0, n, [&](int32_t begin, int32_t end) {
@@ -104,7 +74,7 @@ int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double 
       double sum = 0.0;
       for (int j = 0; j < k; ++j)
       {
-        const double* q = &x[3 * static_cast<size_t>(knn[static_cast<size_t>(i) * k + j])];
+        const double* q = &x[3 * static_cast<size_t>(knn[static_cast<size_t>(i) * width + j])];
         sum += std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
           (p[2] - q[2]) * (p[2] - q[2]));
       }
@@ -125,7 +95,6 @@ int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double 
       denseIds.push_back(i);
     }
   }
-  std::vector<uint8_t> far(n, 0);
   if (denseIds.size() == static_cast<size_t>(n) || denseIds.empty())
   {
     return 0;
@@ -173,6 +142,58 @@ int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double 
       }
     }
   });
+  int64_t count = 0;
+  for (int32_t i = 0; i < n; ++i)
+  {
+    count += far[i];
+  }
+  return count;
+}
+
+int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double factor,
+  std::vector<uint8_t>& outlier, const std::function<bool(double)>& progress)
+{
+  outlier.assign(ids.size(), 0);
+  if (!(factor > 0.0) || ids.size() < 4 * static_cast<size_t>(OutlierNeighbors))
+  {
+    return 0;
+  }
+  std::vector<double> x;
+  std::vector<int32_t> positionOf;
+  DistinctPositions(xyz, ids, x, positionOf);
+  const int32_t n = static_cast<int32_t>(x.size() / 3);
+  if (n < 4 * OutlierNeighbors)
+  {
+    return 0;
+  }
+
+  const int k = OutlierNeighbors;
+  std::vector<int32_t> knn;
+  {
+    vtkNew<vtkDoubleArray> coordinates;
+    coordinates->SetNumberOfComponents(3);
+    coordinates->SetArray(x.data(), 3 * static_cast<vtkIdType>(n), 1);
+    vtkNew<vtkPoints> points;
+    points->SetData(coordinates);
+    vtkNew<vtkPolyData> cloud;
+    cloud->SetPoints(points);
+    vtkNew<vtkStaticPointLocator> locator;
+    double bounds[6];
+    points->GetBounds(bounds);
+    SetSurfaceSampleDivisions(locator, bounds, n);
+    locator->SetDataSet(cloud);
+    locator->BuildLocator();
+    if (!FindNearestNeighbors(locator, x.data(), n, k, knn, progress))
+    {
+      return 0;
+    }
+  }
+
+  std::vector<uint8_t> far;
+  if (FlagOutliers(x.data(), n, knn, k, factor, far) == 0)
+  {
+    return 0;
+  }
   int64_t count = 0;
   for (size_t j = 0; j < ids.size(); ++j)
   {

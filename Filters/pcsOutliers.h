@@ -34,6 +34,13 @@ constexpr double OutlierSparseFactor = 4.0;
 int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double factor,
   std::vector<uint8_t>& outlier, const std::function<bool(double)>& progress = nullptr);
 
+/// The rule of FindOutliers on `n` distinct points `x` (packed x, y, z) whose nearest
+/// neighbours are known: `knn` holds `width` >= OutlierNeighbors ids per point, nearest first
+/// (pcs::FindNearestNeighbors), of which the first OutlierNeighbors are used. `far` gets one byte
+/// per point (1: outlier); returns their number (0 when `width` is too small).
+int64_t FlagOutliers(const double* x, int32_t n, const std::vector<int32_t>& knn, int width,
+  double factor, std::vector<uint8_t>& far);
+
 /// FindOutliers, then the flagged points are removed from `ids` (order kept); returns their
 /// number. The filters' OutlierFactor.
 int64_t RemoveOutliers(const double* xyz, std::vector<int32_t>& ids, double factor,

@@ -2110,36 +2110,35 @@ int vtkLocalOptimumGrowth::RequestData(
                               << " exact duplicate point(s) into the point they coincide with "
                                  "(point data RepresentativeId; they are not triangle vertices).");
   }
-  this->NumberOfOutliers = pcs::RemoveOutliers(
-    xyz.data(), ids, this->OutlierFactor, [this](double) { return !this->GetAbortExecute(); });
-  if (this->NumberOfOutliers > 0)
+  // Far outliers: from the K-neighbour table below when K >= pcs::OutlierNeighbors, else here.
+  const bool outliersFromTable = this->NumberOfNeighbors >= pcs::OutlierNeighbors;
+  if (!outliersFromTable)
   {
-    vtkWarningMacro("Excluded " << this->NumberOfOutliers << " far outlier(s) (OutlierFactor "
-                                << this->OutlierFactor
-                                << "): point data Used = 0, field data NumberOfOutliers.");
+    this->NumberOfOutliers = pcs::RemoveOutliers(
+      xyz.data(), ids, this->OutlierFactor, [this](double) { return !this->GetAbortExecute(); });
   }
-  this->NumberOfUnusedPoints = this->NumberOfOutliers;
-  const Id n = static_cast<Id>(ids.size());
+  Id n = static_cast<Id>(ids.size());
   if (n < 3)
   {
     vtkWarningMacro("Fewer than 3 distinct finite points (" << n << "): no triangles are made.");
-    this->NumberOfUnusedPoints += n;
+    this->NumberOfUnusedPoints = this->NumberOfOutliers + n;
     return finish();
   }
   this->UpdateProgress(0.05);
 
   // Internal coordinates and the K nearest neighbours (thread-safe queries of the static
-  // locator, built once).
-  std::vector<double> x(3 * static_cast<size_t>(n));
-  for (Id i = 0; i < n; ++i)
-  {
-    std::copy_n(&xyz[3 * static_cast<size_t>(ids[i])], 3, &x[3 * static_cast<size_t>(i)]);
-  }
-  xyz.clear();
-  xyz.shrink_to_fit();
-  const int k = std::min<int>(this->NumberOfNeighbors, n - 1);
-  std::vector<Id> knn(static_cast<size_t>(n) * k, -1);
-  {
+  // locator, built once; again without the far outliers when there are any).
+  std::vector<double> x;
+  std::vector<Id> knn;
+  int k = 0;
+  auto findNeighbors = [&]() {
+    x.resize(3 * static_cast<size_t>(n));
+    for (Id i = 0; i < n; ++i)
+    {
+      std::copy_n(&xyz[3 * static_cast<size_t>(ids[i])], 3, &x[3 * static_cast<size_t>(i)]);
+    }
+    k = std::min<int>(this->NumberOfNeighbors, n - 1);
+    knn.assign(static_cast<size_t>(n) * k, -1);
     vtkNew<vtkDoubleArray> coordinates;
     coordinates->SetNumberOfComponents(3);
     coordinates->SetArray(x.data(), 3 * static_cast<vtkIdType>(n), 1);
@@ -2173,7 +2172,36 @@ int vtkLocalOptimumGrowth::RequestData(
     {
       this->Locator->SetDataSet(nullptr);
     }
+  };
+  findNeighbors();
+  if (outliersFromTable && !this->GetAbortExecute())
+  {
+    std::vector<uint8_t> far;
+    this->NumberOfOutliers = pcs::FlagOutliers(x.data(), n, knn, k, this->OutlierFactor, far);
+    if (this->NumberOfOutliers > 0)
+    {
+      Id kept = 0;
+      for (Id i = 0; i < n; ++i)
+      {
+        if (!far[i])
+        {
+          ids[kept++] = ids[i];
+        }
+      }
+      ids.resize(kept);
+      n = kept;
+      findNeighbors();
+    }
   }
+  xyz.clear();
+  xyz.shrink_to_fit();
+  if (this->NumberOfOutliers > 0)
+  {
+    vtkWarningMacro("Excluded " << this->NumberOfOutliers << " far outlier(s) (OutlierFactor "
+                                << this->OutlierFactor
+                                << "): point data Used = 0, field data NumberOfOutliers.");
+  }
+  this->NumberOfUnusedPoints = this->NumberOfOutliers;
   this->UpdateProgress(0.15);
 
   Parameters parameters;

@@ -6,7 +6,8 @@
 //   each filter gives a closed, manifold, oriented, genus-0 surface over exactly the sphere
 //   points (every one used, every outlier unused), every triangle within 2 mean spacings of the
 //   sphere, and reports exactly the outliers (field data NumberOfOutliers, point data Used = 0);
-//   with OutlierFactor 0 (off) the outliers are not reported;
+//   with OutlierFactor 0 (off) the outliers are not reported; vtkLocalOptimumGrowth with 6
+//   neighbours (the rule's own search instead of the growth's table) reports the same outliers;
 // - clean clouds flag nothing: a torus sampled 25 times more densely on one side, and a sphere
 //   with Gaussian noise of 0.4 mean spacings per coordinate.
 #include "vtkLocalOptimumGrowth.h"
@@ -130,6 +131,24 @@ bool CheckExcluded(const std::string& name, unsigned seed)
   return true;
 }
 
+// vtkLocalOptimumGrowth takes the rule's neighbours from its own table when NumberOfNeighbors >= 8,
+// else searches them apart: the same outliers either way.
+bool CheckFewNeighbors()
+{
+  const int outliers = SpherePointCount * 3 / 100;
+  const std::vector<double> xyz = SphereWithOutliers(outliers, 4);
+  vtkNew<vtkLocalOptimumGrowth> growth;
+  growth->SetNumberOfNeighbors(6);
+  auto mesh = Run(growth, xyz);
+  PCS_CHECK(FieldCount(mesh, "NumberOfOutliers") == outliers, "LOG, 6 neighbours: outliers");
+  vtkDataArray* used = mesh->GetPointData()->GetArray("Used");
+  for (vtkIdType i = SpherePointCount; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    PCS_CHECK(used->GetTuple1(i) == 0, "LOG, 6 neighbours: outlier " << i << " used");
+  }
+  return true;
+}
+
 // Clean clouds, graded or noisy: nothing is an outlier.
 bool CheckCleanClouds()
 {
@@ -155,6 +174,7 @@ int TestOutliers(int, char*[])
 {
   bool ok = CheckExcluded<vtkPerimeterPeelSurface>("peel", 3);
   ok = CheckExcluded<vtkLocalOptimumGrowth>("local optimum growth", 4) && ok;
+  ok = CheckFewNeighbors() && ok;
   ok = CheckCleanClouds() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

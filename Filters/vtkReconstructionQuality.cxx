@@ -14,9 +14,7 @@
 #include "vtkCellTypes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkGenericCell.h"
 #include "vtkIdList.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
@@ -31,19 +29,21 @@
 #include "vtkSMPTools.h"
 #include "vtkSignedCharArray.h"
 #include "vtkSmartPointer.h"
-#include "vtkStaticCellLocator.h"
 #include "vtkStaticPointLocator.h"
+#include "vtkTriangle.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <limits>
+#include <memory>
 #include <numeric>
+#include <string>
 #include <tuple>
 #include <utility>
-#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkReconstructionQuality);
@@ -156,27 +156,47 @@ bool IsCollapsed(const Triangle& t)
   return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
 }
 
+// The points a, b, c times the power of two that brings their largest coordinate magnitude into
+// [2^-60, 2^60] (pcs::PredicateSafeExponent): exact, so orientations and angles are unchanged,
+// and the products of the predicates neither overflow nor underflow (coordinates of 1e300 or
+// 1e-300).
+std::array<std::array<double, 3>, 3> SafelyScaled(const double a[3],
+  const double b[3],
+  const double c[3])
+{
+  double largest = 0.0;
+  for (const double* p : { a, b, c })
+  {
+    largest = std::max({ largest, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
+  }
+  const int exponent = pcs::PredicateSafeExponent(largest);
+  std::array<std::array<double, 3>, 3> scaled;
+  const double* p[3] = { a, b, c };
+  for (int k = 0; k < 3; ++k)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      scaled[k][i] = std::ldexp(p[k][i], exponent);
+    }
+  }
+  return scaled;
+}
+
 // Exact zero-area test: the three points are collinear (pcs::projected::Collinear), decided on
-// the points scaled by a power of two (exact) when their coordinates are so small or large that
-// the orientation products would underflow or overflow (a surface at 1e-300).
+// the points scaled by a power of two (exact, SafelyScaled) when their coordinates are so small
+// or large that the orientation products would underflow or overflow (a surface at 1e-300).
 bool HasZeroArea(const double a[3], const double b[3], const double c[3])
 {
-  const double points[9] = { a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2] };
-  static const std::vector<int32_t> ids = { 0, 1, 2 };
-  const int exponent = pcs::PredicateSafeExponent(points, 3, ids);
-  if (exponent == 0)
-  {
-    return pcs::projected::Collinear(a, b, c);
-  }
-  const std::vector<double> scaled = pcs::ScaledCopy(points, 9, exponent);
-  return pcs::projected::Collinear(&scaled[0], &scaled[3], &scaled[6]);
+  const auto scaled = SafelyScaled(a, b, c);
+  return pcs::projected::Collinear(scaled[0].data(), scaled[1].data(), scaled[2].data());
 }
 
 // Smallest interior angle in degrees; atan2(|u x v|, u . v) is accurate for small and large
 // angles alike and gives 0 for a zero-length edge.
 double MinimumAngle(const double a[3], const double b[3], const double c[3])
 {
-  const double* p[3] = { a, b, c };
+  const auto scaled = SafelyScaled(a, b, c);
+  const double* p[3] = { scaled[0].data(), scaled[1].data(), scaled[2].data() };
   double smallest = 180.0;
   for (int i = 0; i < 3; ++i)
   {
@@ -590,143 +610,783 @@ vtkSmartPointer<vtkPolyData> PointCloud(vtkPoints* points, const std::vector<vtk
   return cloud;
 }
 
-// What the distances are measured to: triangles (cell locator) or points (point locator).
-struct DistanceTarget
+// Squared distance from x to the triangle (a, b, c), for pruning only: the closest point is found
+// by the Voronoi region of x (vertex, edge or face), from dot products with the edge vectors.
+// NaN or infinite when the computation overflows or the triangle is numerically flat.
+double PruningDistance2(const double x[3], const double* a, const double* b, const double* c)
 {
-  vtkSmartPointer<vtkPolyData> Data;
-  vtkSmartPointer<vtkStaticCellLocator> CellLocator;
-  vtkSmartPointer<vtkStaticPointLocator> PointLocator;
-  // With triangles: their vertices, whose nearest one bounds the search radius of a query.
-  vtkSmartPointer<vtkPolyData> Vertices;
-  vtkSmartPointer<vtkStaticPointLocator> VertexLocator;
-  double Slack = 0.0;
-
-  bool IsEmpty() const { return !this->CellLocator && !this->PointLocator; }
-
-  // Triangles of non-zero area when there are any, else the points `cloud` (all points of
-  // `points` when cloud is null).
-  void Build(
-    vtkPoints* points, const std::vector<Triangle>& triangles, const std::vector<vtkIdType>* cloud)
+  double ab[3], ac[3], ax[3], bx[3], cx[3];
+  vtkMath::Subtract(b, a, ab);
+  vtkMath::Subtract(c, a, ac);
+  vtkMath::Subtract(x, a, ax);
+  vtkMath::Subtract(x, b, bx);
+  vtkMath::Subtract(x, c, cx);
+  const double abAx = vtkMath::Dot(ab, ax), acAx = vtkMath::Dot(ac, ax);
+  const double abBx = vtkMath::Dot(ab, bx), acBx = vtkMath::Dot(ac, bx);
+  const double abCx = vtkMath::Dot(ab, cx), acCx = vtkMath::Dot(ac, cx);
+  if (abAx <= 0.0 && acAx <= 0.0)
   {
-    this->Data = vtkSmartPointer<vtkPolyData>::New();
-    if (!triangles.empty())
+    return vtkMath::Dot(ax, ax); // vertex a
+  }
+  if (abBx >= 0.0 && acBx <= abBx)
+  {
+    return vtkMath::Dot(bx, bx); // vertex b
+  }
+  if (acCx >= 0.0 && abCx <= acCx)
+  {
+    return vtkMath::Dot(cx, cx); // vertex c
+  }
+  double closest[3];
+  auto along = [&closest](const double* p, const double* d, double t)
+  {
+    for (int i = 0; i < 3; ++i)
     {
-      vtkNew<vtkIdTypeArray> offsets, connectivity;
-      offsets->SetNumberOfValues(static_cast<vtkIdType>(triangles.size()) + 1);
-      connectivity->SetNumberOfValues(3 * static_cast<vtkIdType>(triangles.size()));
-      for (size_t t = 0; t < triangles.size(); ++t)
-      {
-        offsets->SetValue(static_cast<vtkIdType>(t), 3 * static_cast<vtkIdType>(t));
-        for (int j = 0; j < 3; ++j)
-        {
-          connectivity->SetValue(3 * static_cast<vtkIdType>(t) + j, triangles[t][j]);
-        }
-      }
-      offsets->SetValue(
-        static_cast<vtkIdType>(triangles.size()), connectivity->GetNumberOfValues());
-      vtkNew<vtkCellArray> polys;
-      polys->SetData(offsets, connectivity);
-      this->Data->SetPoints(points);
-      this->Data->SetPolys(polys);
-      this->Data->BuildCells(); // GetCell(id, vtkGenericCell*) is then safe from any thread
-      this->CellLocator = vtkSmartPointer<vtkStaticCellLocator>::New();
-      this->CellLocator->SetDataSet(this->Data);
-      this->CellLocator->BuildLocator();
-      std::vector<char> flag(points->GetNumberOfPoints(), 0);
-      std::vector<vtkIdType> ids;
-      for (const Triangle& t : triangles)
-      {
-        for (vtkIdType p : t)
-        {
-          if (!flag[p])
-          {
-            flag[p] = 1;
-            ids.push_back(p);
-          }
-        }
-      }
-      this->Vertices = PointCloud(points, &ids);
-      this->VertexLocator = vtkSmartPointer<vtkStaticPointLocator>::New();
-      this->VertexLocator->SetDataSet(this->Vertices);
-      this->VertexLocator->BuildLocator();
-      this->Slack = 1e-9 * this->Data->GetLength();
-      return;
+      closest[i] = p[i] + t * d[i];
     }
-    this->Data = PointCloud(points, cloud);
-    if (this->Data->GetNumberOfPoints() == 0)
+  };
+  // Signed areas (times |ab x ac|) of the sub-triangles opposite a, b and c.
+  const double areaC = abAx * acBx - abBx * acAx;
+  const double areaB = abCx * acAx - abAx * acCx;
+  const double areaA = abBx * acCx - abCx * acBx;
+  if (areaC <= 0.0 && abAx >= 0.0 && abBx <= 0.0)
+  {
+    along(a, ab, abAx / (abAx - abBx)); // edge ab
+  }
+  else if (areaB <= 0.0 && acAx >= 0.0 && acCx <= 0.0)
+  {
+    along(a, ac, acAx / (acAx - acCx)); // edge ac
+  }
+  else if (areaA <= 0.0 && acBx - abBx >= 0.0 && abCx - acCx >= 0.0)
+  {
+    double bc[3];
+    vtkMath::Subtract(c, b, bc);
+    along(b, bc, (acBx - abBx) / ((acBx - abBx) + (abCx - acCx))); // edge bc
+  }
+  else
+  {
+    const double sum = areaA + areaB + areaC; // inside: barycentric coordinates
+    for (int i = 0; i < 3; ++i)
     {
-      return;
+      closest[i] = a[i] + (areaB / sum) * ab[i] + (areaC / sum) * ac[i];
     }
-    this->PointLocator = vtkSmartPointer<vtkStaticPointLocator>::New();
-    this->PointLocator->SetDataSet(this->Data);
-    this->PointLocator->BuildLocator();
+  }
+  return vtkMath::Distance2BetweenPoints(x, closest);
+}
+
+// Squared distance from x to the box {xmin, xmax, ymin, ymax, zmin, zmax} (0 inside), computed as
+// vtkStaticCellLocator does.
+double Distance2ToBox(const double x[3], const double* box)
+{
+  double d2 = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double gap =
+      x[i] < box[2 * i] ? box[2 * i] - x[i] : (x[i] > box[2 * i + 1] ? x[i] - box[2 * i + 1] : 0.0);
+    d2 += gap * gap;
+  }
+  return d2;
+}
+
+// Squared gap between two boxes (0 when they overlap).
+double BoxGap2(const double* p, const double* q)
+{
+  double d2 = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double gap = std::max({ p[2 * i] - q[2 * i + 1], q[2 * i] - p[2 * i + 1], 0.0 });
+    d2 += gap * gap;
+  }
+  return d2;
+}
+
+double BoxDiagonal2(const double* box)
+{
+  double d2 = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    d2 += (box[2 * i + 1] - box[2 * i]) * (box[2 * i + 1] - box[2 * i]);
+  }
+  return d2;
+}
+
+// Makes box {xmin, xmax, ymin, ymax, zmin, zmax} empty: any point given to GrowBox enlarges it.
+void EmptyBox(double box[6])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    box[2 * i] = VTK_DOUBLE_MAX;
+    box[2 * i + 1] = -VTK_DOUBLE_MAX;
+  }
+}
+
+void GrowBox(double box[6], const double x[3])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    box[2 * i] = std::min(box[2 * i], x[i]);
+    box[2 * i + 1] = std::max(box[2 * i + 1], x[i]);
+  }
+}
+
+// Separating axes of a triangle: its unit normal n and the unit in-plane normals m_i of its
+// edges, pointing out of the triangle, with the triangle's extent along each m_i, all relative to
+// its first point a (differences first: no cancellation far from the origin). A point y is at
+// least |n.(y - a)| from the triangle along n and at least max(m_i.(y - a) - offset_i, 0) along
+// m_i; as n and m_i are orthogonal, the sum of the squares of the two gaps bounds the squared
+// distance from below.
+struct SeparatingAxes
+{
+  double Normal[3];
+  double EdgeNormals[3][3];
+  double EdgeOffsets[3];
+  bool Valid;
+
+  void Set(const double* corner)
+  {
+    double edges[3][3];
+    for (int i = 0; i < 3; ++i)
+    {
+      vtkMath::Subtract(corner + 3 * ((i + 1) % 3), corner + 3 * i, edges[i]);
+    }
+    vtkMath::Cross(edges[0], edges[1], this->Normal);
+    this->Valid = vtkMath::Normalize(this->Normal) > 0.0;
+    const double zero[3] = { 0.0, 0.0, 0.0 };
+    const double* relative[3] = { zero, edges[0], nullptr }; // the points minus a
+    double third[3];
+    vtkMath::Subtract(corner + 6, corner, third);
+    relative[2] = third;
+    for (int i = 0; i < 3 && this->Valid; ++i)
+    {
+      vtkMath::Cross(edges[i], this->Normal, this->EdgeNormals[i]); // outwards
+      this->Valid = vtkMath::Normalize(this->EdgeNormals[i]) > 0.0;
+      this->EdgeOffsets[i] = std::max({ vtkMath::Dot(this->EdgeNormals[i], relative[0]),
+        vtkMath::Dot(this->EdgeNormals[i], relative[1]),
+        vtkMath::Dot(this->EdgeNormals[i], relative[2]) });
+    }
+    this->Valid = this->Valid &&
+      std::isfinite(this->EdgeOffsets[0] + this->EdgeOffsets[1] + this->EdgeOffsets[2]);
+  }
+
+  // Lower bound of the squared distance from any point within `half` (half-widths along x, y, z)
+  // of `centre` to the triangle whose first point is a; 0 when not valid.
+  double Gap2(const double centre[3], const double half[3], const double* a) const
+  {
+    if (!this->Valid)
+    {
+      return 0.0;
+    }
+    auto radius = [half](const double* axis) {
+      return std::abs(axis[0]) * half[0] + std::abs(axis[1]) * half[1] +
+        std::abs(axis[2]) * half[2];
+    };
+    double y[3];
+    vtkMath::Subtract(centre, a, y);
+    const double plane =
+      std::max(std::abs(vtkMath::Dot(this->Normal, y)) - radius(this->Normal), 0.0);
+    double edge = 0.0;
+    for (int i = 0; i < 3; ++i)
+    {
+      edge = std::max(edge,
+        vtkMath::Dot(this->EdgeNormals[i], y) - this->EdgeOffsets[i] -
+          radius(this->EdgeNormals[i]));
+    }
+    const double gap2 = plane * plane + edge * edge;
+    return std::isfinite(gap2) ? gap2 : 0.0;
   }
 };
 
-// Distance from every sample to the target, one value per sample (NaN if none is found).
-struct DistanceFunctor
+// Exact closest distances from many query points to a set of triangles, whatever their shapes.
+//
+// The queries are split recursively into halves (a k-d tree on the queries, median on the longest
+// axis of their box) and every node keeps only the triangles that can be the closest one to one of
+// its queries. The node's bound is an upper bound of the distance of each of its queries: the
+// distance from each query to the triangle closest to the node's centre (at most the parent's
+// bound). A triangle stays when three lower bounds of its distance to the node's box are within
+// the bound: the gap between the boxes, the distance from the centre minus the half-diagonal, and
+// the gaps along the triangle's separating axes (SeparatingAxes). A long triangle thus drops out
+// near the root wherever it passes, where a grid or a tree of triangle boxes keeps it in every bin
+// its box touches and tests it for every query near any part of that box (a fan of slivers or a
+// triangle soup across an object made those searches quadratic). At the leaves each query
+// evaluates its node's triangles with vtkTriangle::EvaluatePosition, skipping those whose box is
+// farther than the best distance so far, as vtkStaticCellLocator::FindClosestPointWithinRadius
+// does: the minimum, hence the result, is the same. The pruning tests are widened by a relative
+// 1e-9 and 1e-9 of the triangles' box diagonal so that rounding never drops the closest triangle.
+struct TriangleSearch
 {
-  const SurfaceSamples& Samples;
-  const DistanceTarget& Target;
-  double* Distances;
-  vtkSMPThreadLocalObject<vtkGenericCell> Cell;
+  std::vector<double> Corners; // 9 per triangle: the points in cell order
+  std::vector<double> Boxes;   // 6 per triangle
+  std::vector<double> Sizes;   // 1 per triangle: its box diagonal
+  std::vector<SeparatingAxes> Axes;
+  double Slack = 0.0;
+  bool PointsOnly = false; // a cloud: each "triangle" is one point, at its plain distance
 
-  DistanceFunctor(const SurfaceSamples& samples, const DistanceTarget& target, double* distances)
-    : Samples(samples)
-    , Target(target)
+  vtkIdType Size() const { return static_cast<vtkIdType>(this->Axes.size()); }
+
+  // The triangles, times 2^exponent, that vtkTriangle::EvaluatePosition can evaluate (the cell
+  // locators skip the others, numerically flat: status -1 whatever the point); exact copies (same
+  // ids in the same order) are kept once, as they have the same distances. Returns the number of
+  // distinct triangles left out as numerically flat.
+  vtkIdType Build(vtkPoints* points, std::vector<Triangle> triangles, int exponent)
+  {
+    std::sort(triangles.begin(), triangles.end());
+    triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
+    vtkNew<vtkTriangle> cell;
+    double all[6];
+    EmptyBox(all);
+    for (const Triangle& triangle : triangles)
+    {
+      const size_t t = this->Axes.size();
+      this->Corners.resize(9 * (t + 1));
+      double* corner = &this->Corners[9 * t];
+      double centroid[3] = { 0.0, 0.0, 0.0 };
+      for (int j = 0; j < 3; ++j)
+      {
+        points->GetPoint(triangle[j], corner + 3 * j);
+        for (int i = 0; i < 3; ++i)
+        {
+          corner[3 * j + i] = std::ldexp(corner[3 * j + i], exponent);
+          centroid[i] += corner[3 * j + i] / 3.0;
+        }
+      }
+      double dist2;
+      if (!Evaluate(cell, centroid, corner, dist2))
+      {
+        this->Corners.resize(9 * t);
+        continue;
+      }
+      this->Boxes.resize(6 * (t + 1));
+      double* box = &this->Boxes[6 * t];
+      EmptyBox(box);
+      for (int j = 0; j < 3; ++j)
+      {
+        GrowBox(box, corner + 3 * j);
+        GrowBox(all, corner + 3 * j);
+      }
+      this->Sizes.push_back(std::sqrt(BoxDiagonal2(box)));
+      this->Axes.emplace_back();
+      this->Axes.back().Set(corner);
+    }
+    this->Slack = this->Axes.empty() ? 0.0 : 1e-9 * std::sqrt(BoxDiagonal2(all));
+    return static_cast<vtkIdType>(triangles.size()) - this->Size();
+  }
+
+  // The points `ids`, times 2^exponent, as degenerate triangles (the pruning tests hold for them;
+  // the distance is the plain distance between points, as with vtkStaticPointLocator). Points
+  // with a NaN or infinite coordinate are left out; returns 0.
+  vtkIdType BuildPoints(vtkPoints* points, const std::vector<vtkIdType>& ids, int exponent)
+  {
+    this->PointsOnly = true;
+    double all[6];
+    EmptyBox(all);
+    for (vtkIdType id : ids)
+    {
+      double x[3];
+      points->GetPoint(id, x);
+      if (!(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
+      {
+        continue;
+      }
+      for (int i = 0; i < 3; ++i)
+      {
+        x[i] = std::ldexp(x[i], exponent);
+      }
+      GrowBox(all, x);
+      for (int j = 0; j < 3; ++j)
+      {
+        this->Corners.insert(this->Corners.end(), x, x + 3);
+      }
+      const double box[6] = { x[0], x[0], x[1], x[1], x[2], x[2] };
+      this->Boxes.insert(this->Boxes.end(), box, box + 6);
+      this->Sizes.push_back(0.0);
+      this->Axes.emplace_back();
+      this->Axes.back().Valid = false;
+    }
+    this->Slack = this->Axes.empty() ? 0.0 : 1e-9 * std::sqrt(BoxDiagonal2(all));
+    return 0;
+  }
+
+  // The squared distance from x to a triangle by vtkTriangle::EvaluatePosition (as the cell
+  // locators compute it); false when the triangle is numerically flat (status -1).
+  static bool Evaluate(vtkTriangle* cell, const double x[3], const double* corner, double& dist2)
+  {
+    vtkPoints* pts = cell->GetPoints();
+    for (int j = 0; j < 3; ++j)
+    {
+      pts->SetPoint(j, corner + 3 * j);
+    }
+    double closest[3], pcoords[3], weights[3];
+    int subId = 0;
+    return cell->EvaluatePosition(x, closest, subId, pcoords, dist2, weights) != -1;
+  }
+
+  // The smallest squared distance from x to the candidate triangles (all when null) if one is
+  // below best2, else false (as FindClosestPointWithinRadius: a box test, then EvaluatePosition).
+  // EvaluatePosition is skipped when the pruning distance is clearly beyond the best so far.
+  bool Nearest(vtkTriangle* cell,
+    const double x[3],
+    const vtkIdType* candidates,
+    size_t count,
+    double& best2) const
+  {
+    bool found = false;
+    double reach = this->Widen(std::sqrt(best2));
+    for (size_t k = 0; k < count; ++k)
+    {
+      const vtkIdType t = candidates ? candidates[k] : static_cast<vtkIdType>(k);
+      if (this->PointsOnly)
+      {
+        const double dist2 = vtkMath::Distance2BetweenPoints(x, &this->Corners[9 * t]);
+        if (dist2 < best2)
+        {
+          best2 = dist2;
+          found = true;
+        }
+        continue;
+      }
+      if (!(Distance2ToBox(x, &this->Boxes[6 * t]) < best2))
+      {
+        continue;
+      }
+      const double* c = &this->Corners[9 * t];
+      if (PruningDistance2(x, c, c + 3, c + 6) > reach * reach) // false for NaN
+      {
+        continue;
+      }
+      double dist2;
+      if (Evaluate(cell, x, c, dist2) && dist2 < best2)
+      {
+        best2 = dist2;
+        reach = this->Widen(std::sqrt(best2));
+        found = true;
+      }
+    }
+    return found;
+  }
+
+  double Widen(double d) const { return d * (1.0 + 1e-9) + this->Slack; }
+};
+
+// The queries of a TriangleSearch (coordinates, results) and their k-d order.
+struct TriangleQueries
+{
+  const TriangleSearch& Search;
+  const double* Points; // 3 per query
+  double* Distances;    // result: the distance, NaN when no triangle can be evaluated
+  std::vector<vtkIdType> Order;
+
+  static constexpr vtkIdType LeafQueries = 8;
+  static constexpr size_t LeafCandidates = 8;
+
+  struct Node
+  {
+    double Box[6];
+    double Center[3];
+    double Half[3]; // half-widths of the box
+    double HalfDiagonal;
+    double Bound; // upper bound of the distance of every query of the node
+  };
+
+  struct Scratch
+  {
+    std::deque<std::vector<vtkIdType>> Candidates; // one list per depth (growing keeps references)
+  };
+
+  TriangleQueries(const TriangleSearch& search,
+    const double* points,
+    double* distances,
+    vtkIdType count)
+    : Search(search)
+    , Points(points)
     , Distances(distances)
-  {}
+  {
+    // Queries with a NaN or infinite coordinate have no distance (and no place in the tree).
+    for (vtkIdType q = 0; q < count; ++q)
+    {
+      const double* x = points + 3 * q;
+      if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]))
+      {
+        this->Order.push_back(q);
+      }
+      else
+      {
+        distances[q] = NaN;
+      }
+    }
+  }
+
+  Node Describe(vtkIdType begin, vtkIdType end, double bound) const
+  {
+    Node node;
+    EmptyBox(node.Box);
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      GrowBox(node.Box, this->Points + 3 * this->Order[k]);
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      node.Center[i] = 0.5 * (node.Box[2 * i] + node.Box[2 * i + 1]);
+      node.Half[i] = 0.5 * (node.Box[2 * i + 1] - node.Box[2 * i]);
+    }
+    node.HalfDiagonal = 0.5 * std::sqrt(BoxDiagonal2(node.Box));
+    node.Bound = bound;
+    return node;
+  }
+
+  // The triangles of `from` that can be the closest one to a query of the node [begin, end);
+  // tightens node.Bound. The distance from the centre and the separating axes are only tested for
+  // the triangles larger than the node: for the others the gap between the boxes is as tight.
+  void Filter(Node& node,
+    vtkIdType begin,
+    vtkIdType end,
+    const std::vector<vtkIdType>& from,
+    std::vector<vtkIdType>& to) const
+  {
+    const TriangleSearch& s = this->Search;
+    to.clear();
+    double reach = s.Widen(node.Bound);
+    vtkIdType nearest = -1;
+    double nearest2 = std::numeric_limits<double>::infinity();
+    for (vtkIdType t : from)
+    {
+      const double* box = &s.Boxes[6 * t];
+      if (BoxGap2(box, node.Box) > reach * reach)
+      {
+        continue;
+      }
+      to.push_back(t);
+      if (Distance2ToBox(node.Center, box) < nearest2)
+      {
+        const double* c = &s.Corners[9 * t];
+        const double d2 = PruningDistance2(node.Center, c, c + 3, c + 6);
+        if (d2 < nearest2) // false for NaN
+        {
+          nearest2 = d2;
+          nearest = t;
+        }
+      }
+    }
+    if (nearest >= 0)
+    {
+      // Every query is within its distance to the triangle closest to the centre.
+      const double* c = &s.Corners[9 * nearest];
+      double farthest2 = 0.0;
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        const double d2 = PruningDistance2(this->Points + 3 * this->Order[k], c, c + 3, c + 6);
+        farthest2 =
+          std::isfinite(d2) ? std::max(farthest2, d2) : std::numeric_limits<double>::infinity();
+      }
+      node.Bound = std::min(node.Bound, s.Widen(std::sqrt(farthest2)));
+      reach = s.Widen(node.Bound);
+    }
+    if (!std::isfinite(reach))
+    {
+      return;
+    }
+    const double reach2 = reach * reach;
+    const double far = s.Widen(node.Bound + node.HalfDiagonal);
+    size_t kept = 0;
+    for (vtkIdType t : to)
+    {
+      if (BoxGap2(&s.Boxes[6 * t], node.Box) > reach2)
+      {
+        continue;
+      }
+      if (s.Sizes[t] > 2.0 * node.HalfDiagonal)
+      {
+        const double* c = &s.Corners[9 * t];
+        const double d2 = PruningDistance2(node.Center, c, c + 3, c + 6);
+        if ((std::isfinite(d2) && std::sqrt(d2) > far) ||
+          s.Axes[t].Gap2(node.Center, node.Half, c) > reach2)
+        {
+          continue;
+        }
+      }
+      to[kept++] = t;
+    }
+    to.resize(kept);
+  }
+
+  // Splits the queries [begin, end) at the median of the longest axis of the node's box.
+  vtkIdType Split(const Node& node, vtkIdType begin, vtkIdType end)
+  {
+    int axis = 0;
+    for (int i = 1; i < 3; ++i)
+    {
+      axis = node.Half[i] > node.Half[axis] ? i : axis;
+    }
+    const vtkIdType middle = begin + (end - begin) / 2;
+    const double* pts = this->Points;
+    std::nth_element(this->Order.begin() + begin,
+      this->Order.begin() + middle,
+      this->Order.begin() + end,
+      [pts, axis](vtkIdType a, vtkIdType b) { return pts[3 * a + axis] < pts[3 * b + axis]; });
+    return middle;
+  }
+
+  // Each query of the leaf against the leaf's triangles within the node's bound, then against
+  // every triangle if none was within it (rounding beyond the slack).
+  void Leaf(vtkTriangle* cell,
+    const Node& node,
+    vtkIdType begin,
+    vtkIdType end,
+    const std::vector<vtkIdType>& candidates) const
+  {
+    const double reach = this->Search.Widen(node.Bound);
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      const vtkIdType q = this->Order[k];
+      const double* x = this->Points + 3 * q;
+      double best2 = std::isnan(reach) ? std::numeric_limits<double>::infinity() : reach * reach;
+      bool found = this->Search.Nearest(cell, x, candidates.data(), candidates.size(), best2);
+      if (!found && !std::isinf(reach))
+      {
+        best2 = std::numeric_limits<double>::infinity();
+        found =
+          this->Search.Nearest(cell, x, nullptr, static_cast<size_t>(this->Search.Size()), best2);
+      }
+      this->Distances[q] = found ? std::sqrt(best2) : NaN;
+    }
+  }
+
+  // Solves the queries [begin, end), whose closest triangles are among `candidates` and whose
+  // distances are at most `bound`.
+  void Descend(vtkTriangle* cell,
+    vtkIdType begin,
+    vtkIdType end,
+    const std::vector<vtkIdType>& candidates,
+    double bound,
+    Scratch& scratch,
+    size_t depth)
+  {
+    if (scratch.Candidates.size() <= depth)
+    {
+      scratch.Candidates.resize(depth + 1);
+    }
+    std::vector<vtkIdType>& kept = scratch.Candidates[depth];
+    Node node = this->Describe(begin, end, bound);
+    this->Filter(node, begin, end, candidates, kept);
+    if (end - begin <= LeafQueries || kept.size() <= LeafCandidates)
+    {
+      this->Leaf(cell, node, begin, end, kept);
+      return;
+    }
+    const vtkIdType middle = this->Split(node, begin, end);
+    this->Descend(cell, begin, middle, kept, node.Bound, scratch, depth + 1);
+    this->Descend(cell, middle, end, kept, node.Bound, scratch, depth + 1);
+  }
+};
+
+// Runs TriangleQueries in parallel: the top of the tree is split serially into tasks (up to 64
+// subtrees with their triangles), each task then descends in one thread. The results do not
+// depend on the thread count: each query's distance is the minimum over the same triangles.
+struct TriangleQueryFunctor
+{
+  TriangleQueries& Queries;
+  struct Task
+  {
+    vtkIdType Begin, End;
+    std::vector<vtkIdType> Candidates;
+    double Bound;
+  };
+  std::vector<Task> Tasks;
+  vtkSMPThreadLocalObject<vtkTriangle> Cell;
+  vtkSMPThreadLocal<TriangleQueries::Scratch> Local;
+
+  explicit TriangleQueryFunctor(TriangleQueries& queries)
+    : Queries(queries)
+  {
+    std::vector<vtkIdType> all(static_cast<size_t>(queries.Search.Size()));
+    std::iota(all.begin(), all.end(), vtkIdType(0));
+    this->Plan(0,
+      static_cast<vtkIdType>(queries.Order.size()),
+      all,
+      std::numeric_limits<double>::infinity(),
+      0);
+  }
+
+  void Plan(vtkIdType begin,
+    vtkIdType end,
+    const std::vector<vtkIdType>& candidates,
+    double bound,
+    int depth)
+  {
+    if (depth == 6 || end - begin <= 4 * TriangleQueries::LeafQueries)
+    {
+      this->Tasks.push_back(Task{ begin, end, candidates, bound });
+      return;
+    }
+    std::vector<vtkIdType> kept;
+    auto node = this->Queries.Describe(begin, end, bound);
+    this->Queries.Filter(node, begin, end, candidates, kept);
+    const vtkIdType middle = this->Queries.Split(node, begin, end);
+    this->Plan(begin, middle, kept, node.Bound, depth + 1);
+    this->Plan(middle, end, kept, node.Bound, depth + 1);
+  }
 
   void Initialize() {}
 
   void operator()(vtkIdType begin, vtkIdType end)
   {
-    vtkGenericCell* cell = this->Cell.Local();
-    double x[3], closest[3];
-    for (vtkIdType i = begin; i < end; ++i)
+    vtkTriangle* cell = this->Cell.Local();
+    for (vtkIdType k = begin; k < end; ++k)
     {
-      this->Samples.Get(i, x);
-      if (this->Target.CellLocator)
+      const Task& task = this->Tasks[k];
+      if (task.End > task.Begin)
       {
-        vtkIdType cellId = -1;
-        int subId = 0;
-        double dist2 = NaN;
-        // The overloads with a caller-owned vtkGenericCell are the thread-safe ones (VTK 9.2).
-        // The nearest triangle vertex bounds the distance: searching within that radius first
-        // prunes the locator's bins and cells (about 15 % faster); the unbounded search is the
-        // fallback, so the result is the same.
-        vtkIdType found = 0;
-        if (this->Target.VertexLocator)
-        {
-          double v[3];
-          this->Target.Vertices->GetPoint(this->Target.VertexLocator->FindClosestPoint(x), v);
-          const double radius =
-            std::sqrt(vtkMath::Distance2BetweenPoints(x, v)) * (1.0 + 1e-9) + this->Target.Slack;
-          found = this->Target.CellLocator->FindClosestPointWithinRadius(
-            x, radius, closest, cell, cellId, subId, dist2);
-        }
-        if (!found)
-        {
-          this->Target.CellLocator->FindClosestPoint(x, closest, cell, cellId, subId, dist2);
-        }
-        this->Distances[i] = cellId >= 0 ? std::sqrt(dist2) : NaN;
-      }
-      else
-      {
-        const vtkIdType id = this->Target.PointLocator->FindClosestPoint(x);
-        if (id < 0)
-        {
-          this->Distances[i] = NaN;
-          continue;
-        }
-        this->Target.Data->GetPoint(id, closest);
-        this->Distances[i] = std::sqrt(vtkMath::Distance2BetweenPoints(x, closest));
+        this->Queries.Descend(
+          cell, task.Begin, task.End, task.Candidates, task.Bound, this->Local.Local(), 0);
       }
     }
   }
 
   void Reduce() {}
 };
+
+// Replaces the points of `cloud` by a copy times the power of two that brings their largest finite
+// coordinate magnitude into [2^-60, 2^60] (pcs::PredicateSafeExponent), when they are outside it:
+// nearest-neighbour distances then neither overflow nor underflow. Returns the exponent.
+int ScaleSafely(vtkPolyData* cloud)
+{
+  const vtkIdType n = cloud->GetNumberOfPoints();
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    cloud->GetPoint(i, x);
+    for (double c : x)
+    {
+      largest = std::isfinite(c) ? std::max(largest, std::fabs(c)) : largest;
+    }
+  }
+  const int exponent = pcs::PredicateSafeExponent(largest);
+  if (exponent != 0)
+  {
+    vtkNew<vtkPoints> scaled;
+    scaled->SetDataTypeToDouble();
+    scaled->SetNumberOfPoints(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      cloud->GetPoint(i, x);
+      scaled->SetPoint(
+        i, std::ldexp(x[0], exponent), std::ldexp(x[1], exponent), std::ldexp(x[2], exponent));
+    }
+    cloud->SetPoints(scaled);
+  }
+  return exponent;
+}
+
+// What the distances are measured to: the triangles of non-zero area when there are any, else
+// points (a TriangleSearch of either is built for the samples, MeasureDistances).
+struct DistanceTarget
+{
+  vtkPoints* Points = nullptr;
+  std::vector<Triangle> Triangles;
+  std::vector<vtkIdType> Cloud; // without triangles: the point ids
+
+  bool IsEmpty() const { return this->Triangles.empty() && this->Cloud.empty(); }
+
+  // Triangles of non-zero area when there are any, else the points `cloud` (all points of
+  // `points` when cloud is null).
+  void Build(vtkPoints* points,
+    const std::vector<Triangle>& triangles,
+    const std::vector<vtkIdType>* cloud)
+  {
+    this->Points = points;
+    if (!triangles.empty())
+    {
+      this->Triangles = triangles;
+    }
+    else if (cloud)
+    {
+      this->Cloud = *cloud;
+    }
+    else
+    {
+      this->Cloud.resize(points ? points->GetNumberOfPoints() : 0);
+      std::iota(this->Cloud.begin(), this->Cloud.end(), vtkIdType(0));
+    }
+  }
+};
+
+// The coordinates of the samples.
+struct SampleFunctor
+{
+  const SurfaceSamples& Samples;
+  double* Points;
+
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      this->Samples.Get(i, this->Points + 3 * i);
+    }
+  }
+};
+
+// Distance from every sample to the target, one value per sample (NaN if none is found). The
+// samples and the target are scaled by the power of two that brings their
+// largest coordinate magnitude into [2^-60, 2^60] (pcs::PredicateSafeExponent; none for most
+// data): EvaluatePosition's products then neither overflow nor underflow, and as the scaling is
+// exact the distances are those of the unscaled computation, where it does not overflow.
+// Returns the number of triangles of the target left out as numerically flat.
+vtkIdType MeasureDistances(const SurfaceSamples& samples, const DistanceTarget& target, double* out)
+{
+  const vtkIdType n = samples.Size();
+  std::vector<double> xyz(3 * static_cast<size_t>(n));
+  SampleFunctor prepare{ samples, xyz.data() };
+  vtkSMPTools::For(0, n, prepare);
+  double largest = 0.0;
+  auto include = [&largest](const double* x)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      largest = std::isfinite(x[i]) ? std::max(largest, std::fabs(x[i])) : largest;
+    }
+  };
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    include(&xyz[3 * i]);
+  }
+  for (const Triangle& t : target.Triangles)
+  {
+    for (vtkIdType p : t)
+    {
+      include(target.Points->GetPoint(p));
+    }
+  }
+  for (vtkIdType p : target.Cloud)
+  {
+    include(target.Points->GetPoint(p));
+  }
+  const int exponent = pcs::PredicateSafeExponent(largest);
+  if (exponent != 0)
+  {
+    for (double& v : xyz)
+    {
+      v = std::ldexp(v, exponent);
+    }
+  }
+  TriangleSearch search;
+  const vtkIdType flat = target.Triangles.empty()
+    ? search.BuildPoints(target.Points, target.Cloud, exponent)
+    : search.Build(target.Points, target.Triangles, exponent);
+  if (search.Size() > 0)
+  {
+    TriangleQueries queries(search, xyz.data(), out, n);
+    TriangleQueryFunctor run(queries);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(run.Tasks.size()), 1, run);
+  }
+  if (exponent != 0)
+  {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      out[i] = std::ldexp(out[i], -exponent);
+    }
+  }
+  return flat;
+}
 
 // Distance from every point of `cloud` to its nearest other point at a non-zero distance (NaN
 // when all the points coincide with it). One query per distinct position (Queries[q], with
@@ -1249,20 +1909,39 @@ int vtkReconstructionQuality::RequestData(
 
   // Accuracy: mesh samples -> reference. The first samples are the used points.
   std::vector<double> accuracy(meshSamples.Size(), NaN);
+  vtkIdType flat = 0;
   if (!referenceTarget.IsEmpty())
   {
-    DistanceFunctor query(meshSamples, referenceTarget, accuracy.data());
-    vtkSMPTools::For(0, meshSamples.Size(), query);
+    flat += MeasureDistances(meshSamples, referenceTarget, accuracy.data());
   }
   this->UpdateProgress(0.7);
   // Completeness: reference samples -> mesh.
   std::vector<double> completeness(referenceSamples.Size(), NaN);
   if (!meshTarget.IsEmpty() && !referenceTarget.IsEmpty())
   {
-    DistanceFunctor query(referenceSamples, meshTarget, completeness.data());
-    vtkSMPTools::For(0, referenceSamples.Size(), query);
+    flat += MeasureDistances(referenceSamples, meshTarget, completeness.data());
   }
   this->UpdateProgress(0.9);
+  if (flat > 0)
+  {
+    vtkWarningMacro(<< flat
+                    << " triangle(s) of non-zero area are too thin for their coordinate range "
+                       "(vtkTriangle::EvaluatePosition fails on them): the distances ignore them.");
+  }
+  if (!referenceTarget.IsEmpty() && !meshTarget.IsEmpty())
+  {
+    const auto unmeasured =
+      std::count_if(accuracy.begin(), accuracy.end(), [](double d) { return std::isnan(d); }) +
+      std::count_if(
+        completeness.begin(), completeness.end(), [](double d) { return std::isnan(d); });
+    if (unmeasured > 0)
+    {
+      vtkWarningMacro(<< unmeasured
+                      << " distance sample(s) could not be measured (coordinates that overflow, "
+                         "or no triangle of measurable area): their distances are NaN, and so "
+                         "are the means and maxima that include them.");
+    }
+  }
 
   vtkNew<vtkDoubleArray> distanceToReference;
   distanceToReference->SetName("DistanceToReference");
@@ -1291,6 +1970,7 @@ int vtkReconstructionQuality::RequestData(
       : PointCloud(referencePoints, nullptr);
     if (cloud->GetNumberOfPoints() > 1)
     {
+      const int exponent = ScaleSafely(cloud);
       vtkNew<vtkStaticPointLocator> locator;
       locator->SetDataSet(cloud);
       locator->BuildLocator();
@@ -1350,7 +2030,7 @@ int vtkReconstructionQuality::RequestData(
           spacing[order[j]] = spacing[queries[g]];
         }
       }
-      meanSpacing = MeanOfDefined(spacing);
+      meanSpacing = std::ldexp(MeanOfDefined(spacing), -exponent);
     }
   }
   auto overSpacing = [meanSpacing](double d) { return meanSpacing > 0.0 ? d / meanSpacing : NaN; };

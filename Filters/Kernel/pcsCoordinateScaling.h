@@ -13,7 +13,21 @@ namespace pcs
 /// The exact predicates assume that their products neither overflow nor underflow (degree 5 for
 /// insphere). Coordinates far from 1 in magnitude are therefore scaled by a power of two, which
 /// is exact, before triangulation: returns the exponent k (coordinates times 2^k), 0 when the
-/// largest magnitude of the referenced points is already within [2^-60, 2^60].
+/// largest magnitude (of the coordinates, or of the referenced points) is already within
+/// [2^-60, 2^60] (or is not finite).
+inline int PredicateSafeExponent(double largest)
+{
+  if (largest == 0.0 || !std::isfinite(largest) ||
+    (largest <= std::ldexp(1.0, 60) && largest >= std::ldexp(1.0, -60)))
+  {
+    return 0;
+  }
+  int exponent;
+  std::frexp(largest, &exponent);
+  return -exponent; // largest * 2^-exponent is in [0.5, 1)
+}
+
+/// The same for the points `ids` of `coords` (dim values per point).
 inline int PredicateSafeExponent(const double* coords, int dim, const std::vector<int32_t>& ids)
 {
   double largest = 0.0;
@@ -24,13 +38,7 @@ inline int PredicateSafeExponent(const double* coords, int dim, const std::vecto
       largest = std::max(largest, std::fabs(coords[dim * static_cast<int64_t>(id) + i]));
     }
   }
-  if (largest == 0.0 || (largest <= std::ldexp(1.0, 60) && largest >= std::ldexp(1.0, -60)))
-  {
-    return 0;
-  }
-  int exponent;
-  std::frexp(largest, &exponent);
-  return -exponent; // largest * 2^-exponent is in [0.5, 1)
+  return PredicateSafeExponent(largest);
 }
 
 /// The first `count` values of `coords` times 2^exponent.

@@ -12,7 +12,9 @@
 // - empty input, points without triangles, non-triangle polygons: warnings, valid output;
 // - distances between parallel planes at distance d (reference surface and reference cloud, in
 //   general position, with a reference wider than the mesh) and the same results with the
-//   STDThread SMP backend.
+//   STDThread SMP backend;
+// - distances between two parallel fans of long thin triangles (all meeting at one point);
+// - coordinates of 1e300 and 1e-300 (same measures, scaled), a NaN point in a reference cloud.
 #include "vtkReconstructionQuality.h"
 
 #include "pcsTestUtilities.h"
@@ -723,6 +725,103 @@ bool TestDistances()
   return true;
 }
 
+// A fan of n triangles from the centre of the unit disk to its rim, at height z.
+Mesh Fan(int n, double z)
+{
+  Mesh fan;
+  fan.AddPoint(0.0, 0.0, z);
+  for (int i = 0; i < n; ++i)
+  {
+    const double angle = 2.0 * vtkMath::Pi() * i / n;
+    fan.AddPoint(std::cos(angle), std::sin(angle), z);
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    fan.Triangles.push_back({ { 0, 1 + i, 1 + (i + 1) % n } });
+  }
+  return fan;
+}
+
+// Long thin triangles: the fan of 16000 triangles at z = 0 against the same fan at z = d. Every
+// sample of one fan is straight under (over) the other fan: all distances are d. Every triangle
+// spans the disk's radius and all of them meet at the centre, so the nearest vertex of a query
+// is often the centre, with thousands of triangles within that distance. A cell locator, which
+// bins each triangle in every bin its box touches and searches within the nearest-vertex
+// distance, took over a minute here (quadratic); the query tree takes a fraction of a second.
+bool TestLongTriangles()
+{
+  const int n = 16000;
+  const double d = 0.25;
+  Mesh mesh = Fan(n, 0.0);
+  Mesh reference = Fan(n, d);
+  auto out = Run(mesh.PolyData(), reference.PolyData(), 3);
+  if (!CheckTopology(out, { n, n + 1, 0, 0, n, 1, 1, 1, -1 }, "fan"))
+  {
+    return false;
+  }
+  for (const char* name :
+    { "AccuracyMean", "AccuracyMax", "CompletenessMean", "CompletenessMax", "Hausdorff" })
+  {
+    PCS_CHECK(Near(Field(out, name), d), "fan: " << name << " = " << Field(out, name));
+  }
+  auto* distance = out->GetPointData()->GetArray("DistanceToReference");
+  PCS_CHECK(distance && distance->GetNumberOfTuples() == n + 1, "fan: DistanceToReference");
+  for (vtkIdType p = 0; p <= n; ++p)
+  {
+    PCS_CHECK(Near(distance->GetTuple1(p), d), "fan: DistanceToReference of " << p);
+  }
+  return true;
+}
+
+// Coordinates near the ends of the double range: the octahedron of radius s against the one of
+// radius 1.5 s, for s = 1, 1e300, 1e-300. Faces are parallel, and each point of an inner face
+// projects into the outer parallel face: accuracy is the plane gap 0.5 s / sqrt(3) everywhere;
+// completeness peaks at the outer vertices, 0.5 s from the inner ones; the spacing is s sqrt(2);
+// no triangle is degenerate and all angles are 60 degrees. (Before the power-of-two scaling,
+// 1e300 overflowed in EvaluatePosition, a VTK assertion, and 1e-300 underflowed: 8 "degenerate"
+// triangles, NaN spacing.) A NaN point in a reference cloud is not a target; its own distance
+// is NaN, with a warning.
+bool TestExtremeCoordinates()
+{
+  for (double s : { 1.0, 1e300, 1e-300 })
+  {
+    Counter counter;
+    auto out = Run(Octahedron(s).PolyData(), Octahedron(1.5 * s).PolyData(), 3, &counter);
+    const std::string label = "scale " + std::to_string(std::log10(s));
+    PCS_CHECK(counter.Warnings == 0 && counter.Errors == 0, label << ": no warning");
+    PCS_CHECK(pcstest::FieldCount(out, "NumberOfDegenerateTriangles") == 0 &&
+        Near(Field(out, "MinAngleP1"), 60.0),
+      label << ": degenerate " << pcstest::FieldCount(out, "NumberOfDegenerateTriangles")
+            << ", angle " << Field(out, "MinAngleP1"));
+    const double gap = 0.5 / std::sqrt(3.0);
+    for (const auto& expected :
+      std::vector<std::pair<const char*, double>>{ { "AccuracyMean", gap },
+        { "AccuracyMax", gap },
+        { "CompletenessMax", 0.5 },
+        { "Hausdorff", 0.5 },
+        { "MeanSpacing", std::sqrt(2.0) } })
+    {
+      PCS_CHECK(Near(Field(out, expected.first) / s, expected.second, 1e-12),
+        label << ": " << expected.first << " / s = " << Field(out, expected.first) / s);
+    }
+    PCS_CHECK(Field(out, "CompletenessMean") / s > gap && Field(out, "CompletenessMean") / s < 0.5,
+      label << ": CompletenessMean");
+  }
+  {
+    Counter counter;
+    Mesh outer = Octahedron(1.5);
+    outer.AddPoint(std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0);
+    auto cloud = pcstest::MakeCloud(outer.Points);
+    auto out = Run(Octahedron(1.0).PolyData(), cloud, 3, &counter);
+    PCS_CHECK(counter.Warnings == 1 && counter.Errors == 0,
+      "NaN cloud point: one warning (" << counter.Warnings << ")");
+    PCS_CHECK(std::isfinite(Field(out, "AccuracyMax")) && Field(out, "AccuracyMax") <= 1.5,
+      "NaN cloud point: accuracy " << Field(out, "AccuracyMax"));
+    PCS_CHECK(std::isnan(Field(out, "CompletenessMean")), "NaN cloud point: completeness NaN");
+  }
+  return true;
+}
+
 // The distance queries run through vtkSMPTools: the STDThread backend gives bit-identical
 // results to the sequential one (values are stored per sample and reduced in order).
 bool TestThreads()
@@ -780,6 +879,8 @@ int TestReconstructionQuality(int, char*[])
     { "degenerate and duplicate triangles", TestDegenerate },
     { "bad input", TestBadInput },
     { "distances", TestDistances },
+    { "long triangles", TestLongTriangles },
+    { "extreme coordinates", TestExtremeCoordinates },
     { "threads", TestThreads },
   };
   int failures = 0;

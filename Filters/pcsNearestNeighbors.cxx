@@ -2,12 +2,14 @@
 
 #include "vtkDataSet.h"
 #include "vtkIdList.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkStaticPointLocator.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <utility>
 
@@ -19,6 +21,91 @@ inline double Distance2(const double* a, const double* b)
 {
   const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
   return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+}
+
+inline bool IsFinite(const double* q)
+{
+  return std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2]);
+}
+
+// Whether the neighbours `row` (k ids, -1 for none) of point p spread along one direction only
+// (see AddOffLineNeighbors); if so, that direction (unit) and the distance to the farthest one.
+bool SpreadsAlongCurve(const double* xyz,
+  const double* p,
+  const int32_t* row,
+  int k,
+  double linearity,
+  double direction[3],
+  double& reach)
+{
+  if (!IsFinite(p))
+  {
+    return false;
+  }
+  // One pass: sums of the offsets d = q - p and of their products (xx, yy, zz, xy, xz, yz).
+  double sum[3] = { 0.0, 0.0, 0.0 }, products[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+  double reach2 = 0.0;
+  int count = 0;
+  for (int j = 0; j < k; ++j)
+  {
+    if (row[j] < 0)
+    {
+      continue;
+    }
+    const double* q = xyz + 3 * static_cast<size_t>(row[j]);
+    const double d[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+    if (!IsFinite(d))
+    {
+      continue;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      sum[c] += d[c];
+      products[c] += d[c] * d[c];
+    }
+    products[3] += d[0] * d[1];
+    products[4] += d[0] * d[2];
+    products[5] += d[1] * d[2];
+    reach2 = std::max(reach2, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    ++count;
+  }
+  if (count < 2)
+  {
+    return false;
+  }
+  reach = std::sqrt(reach2);
+  const double m[3] = { sum[0] / count, sum[1] / count, sum[2] / count };
+  double covariance[3][3];
+  covariance[0][0] = products[0] / count - m[0] * m[0];
+  covariance[1][1] = products[1] / count - m[1] * m[1];
+  covariance[2][2] = products[2] / count - m[2] * m[2];
+  covariance[0][1] = covariance[1][0] = products[3] / count - m[0] * m[1];
+  covariance[0][2] = covariance[2][0] = products[4] / count - m[0] * m[2];
+  covariance[1][2] = covariance[2][1] = products[5] / count - m[1] * m[2];
+  // trace^2 - |C|_F^2 = 2 (l1 l2 + l1 l3 + l2 l3): no eigenvalue needed for the test.
+  const double trace = covariance[0][0] + covariance[1][1] + covariance[2][2];
+  double frobenius2 = 0.0;
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      frobenius2 += covariance[r][c] * covariance[r][c];
+    }
+  }
+  if (!(trace > 0.0) || !std::isfinite(trace) ||
+    0.5 * (trace * trace - frobenius2) > linearity * trace * trace)
+  {
+    return false;
+  }
+  double* rows[3] = { covariance[0], covariance[1], covariance[2] };
+  double values[3], column0[3], column1[3], column2[3];
+  double* vectors[3] = { column0, column1, column2 };
+  vtkMath::Jacobi(rows, values, vectors); // decreasing eigenvalues, eigenvectors in columns
+  for (int c = 0; c < 3; ++c)
+  {
+    direction[c] = vectors[c][0];
+  }
+  return reach > 0.0;
 }
 }
 
@@ -84,11 +171,7 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
   {
     vtkNew<vtkIdList> list;
     std::vector<int32_t> ids;
-    auto finite = [xyz](int32_t id)
-    {
-      const double* q = xyz + 3 * static_cast<size_t>(id);
-      return std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2]);
-    };
+    auto finite = [xyz](int32_t id) { return IsFinite(xyz + 3 * static_cast<size_t>(id)); };
     auto before = [xyz, &finite](int32_t a, int32_t b)
     {
       const bool fa = finite(a), fb = finite(b);
@@ -262,6 +345,159 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
     });
   }
   return !progress || progress(1.0);
+}
+
+int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
+  const double* xyz,
+  int32_t n,
+  int k,
+  std::vector<int32_t>& neighbors,
+  std::vector<double>* stretch,
+  double linearity,
+  double radiusFactor,
+  const std::function<bool(double)>& progress)
+{
+  if (stretch)
+  {
+    stretch->assign(3 * static_cast<size_t>(std::max(n, 0)), 0.0);
+  }
+  if (n < 3 || k < 2 || neighbors.size() < static_cast<size_t>(n) * k || !(radiusFactor > 0.0))
+  {
+    return 0;
+  }
+  const int perSide = std::max(1, k / 4);
+  std::atomic<int32_t> changed(0);
+  struct Candidate
+  {
+    double Distance2;
+    int32_t Id;
+    double Across[3]; // component of q - p normal to the line direction
+    bool operator<(const Candidate& other) const
+    {
+      return this->Distance2 < other.Distance2 ||
+        (this->Distance2 == other.Distance2 && this->Id < other.Id);
+    }
+  };
+  const int32_t block = 65536;
+  for (int32_t first = 0; first < n; first += block)
+  {
+    if (progress && !progress(static_cast<double>(first) / n))
+    {
+      return -1;
+    }
+    const int32_t last = std::min<int32_t>(first + block, n);
+    vtkSMPTools::For(first,
+      last,
+      [&](int32_t begin, int32_t end)
+      {
+        vtkNew<vtkIdList> ball;
+        std::vector<Candidate> offLine, row;
+        std::vector<int32_t> wanted;
+        int32_t rowsChanged = 0;
+        for (int32_t i = begin; i < end; ++i)
+        {
+          const double* p = xyz + 3 * static_cast<size_t>(i);
+          int32_t* table = &neighbors[static_cast<size_t>(i) * k];
+          double e[3], reach;
+          if (!SpreadsAlongCurve(xyz, p, table, k, linearity, e, reach))
+          {
+            continue;
+          }
+          locator->FindPointsWithinRadius(radiusFactor * reach, p, ball);
+          offLine.clear();
+          for (vtkIdType j = 0; j < ball->GetNumberOfIds(); ++j)
+          {
+            const int32_t id = static_cast<int32_t>(ball->GetId(j));
+            const double* q = xyz + 3 * static_cast<size_t>(id);
+            if (id == i || id < 0 || id >= n || !IsFinite(q))
+            {
+              continue;
+            }
+            Candidate candidate;
+            candidate.Id = id;
+            const double v[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+            const double along = vtkMath::Dot(v, e);
+            for (int c = 0; c < 3; ++c)
+            {
+              candidate.Across[c] = v[c] - along * e[c];
+            }
+            if (vtkMath::Dot(candidate.Across, candidate.Across) > along * along)
+            {
+              candidate.Distance2 = vtkMath::Dot(v, v);
+              offLine.push_back(candidate);
+            }
+          }
+          if (offLine.empty())
+          {
+            continue;
+          }
+          std::sort(offLine.begin(), offLine.end());
+          const double nearest =
+            table[0] >= 0 ? Distance2(p, xyz + 3 * static_cast<size_t>(table[0])) : 0.0;
+          if (stretch && nearest > 0.0 && offLine[0].Distance2 > nearest)
+          {
+            const double factor = std::sqrt(offLine[0].Distance2 / nearest - 1.0);
+            for (int c = 0; c < 3; ++c)
+            {
+              (*stretch)[3 * static_cast<size_t>(i) + c] = factor * e[c];
+            }
+          }
+          // The nearest off-line points of each side (the side of the nearest one, the other).
+          wanted.clear();
+          int taken[2] = { 0, 0 };
+          for (const Candidate& candidate : offLine)
+          {
+            const int side = vtkMath::Dot(candidate.Across, offLine[0].Across) >= 0.0 ? 0 : 1;
+            if (taken[side] < perSide)
+            {
+              ++taken[side];
+              wanted.push_back(candidate.Id);
+            }
+            if (taken[0] == perSide && taken[1] == perSide)
+            {
+              break;
+            }
+          }
+          // The row: the wanted points and the nearest of the others, k in all, nearest first.
+          row.clear();
+          for (const Candidate& candidate : offLine)
+          {
+            if (std::find(wanted.begin(), wanted.end(), candidate.Id) != wanted.end())
+            {
+              row.push_back(candidate);
+            }
+          }
+          const size_t others = static_cast<size_t>(k) - row.size();
+          size_t kept = 0;
+          for (int j = 0; j < k && kept < others; ++j)
+          {
+            if (table[j] >= 0 && std::find(wanted.begin(), wanted.end(), table[j]) == wanted.end())
+            {
+              Candidate candidate;
+              candidate.Id = table[j];
+              candidate.Distance2 = Distance2(p, xyz + 3 * static_cast<size_t>(table[j]));
+              row.push_back(candidate);
+              ++kept;
+            }
+          }
+          std::sort(row.begin(), row.end());
+          bool same = true;
+          for (int j = 0; j < k; ++j)
+          {
+            const int32_t id = j < static_cast<int>(row.size()) ? row[j].Id : -1;
+            same = same && table[j] == id;
+            table[j] = id;
+          }
+          rowsChanged += same ? 0 : 1;
+        }
+        changed += rowsChanged;
+      });
+  }
+  if (progress && !progress(1.0))
+  {
+    return -1;
+  }
+  return changed;
 }
 
 void SetSurfaceSampleDivisions(

@@ -132,6 +132,8 @@ public:
   void Run();
 
   pcs::SurfaceMesh Mesh;
+  // Scan-line stretch of every point (3 per point, see pcs::AddOffLineNeighbors), or empty.
+  std::vector<double> Stretch;
   vtkIdType Seeds = 0;
   vtkIdType HolesClosed = 0;
   vtkIdType Inserted = 0;
@@ -218,6 +220,7 @@ private:
   // normal and its neighbours' (constraint 1), or -2 when invalid.
   double EarScore(Id v, Id u, Id w, double cosNormal, double minimumRatio);
   bool EdgeRatiosOk(Id x, Id y, Id z, double minimum) const;
+  double RatioLength2(Id u, Id v, double length2) const;
 
   // Commit a triangle: mesh, then Register (front queue, neighbourhood clock, labels).
   int64_t Commit(Id x, Id y, Id z);
@@ -573,11 +576,29 @@ bool Grower::Blocked(Id x, Id y, Id z)
   return false;
 }
 
+// The squared length of the edge (u, v) for constraint 2, `length2` its Euclidean one: on a scan
+// line (stretch of u or v not zero) the component along the line is stretched by the sampling's
+// anisotropy there (averaged over u and v), so that a triangle between two scan lines, whose
+// edge along its line is the short one, has edges of comparable lengths.
+double Grower::RatioLength2(Id u, Id v, double length2) const
+{
+  if (this->Stretch.empty())
+  {
+    return length2;
+  }
+  const double* su = &this->Stretch[3 * static_cast<size_t>(u)];
+  const double* sv = &this->Stretch[3 * static_cast<size_t>(v)];
+  double w[3];
+  Sub(this->P3(v), this->P3(u), w);
+  const double alongU = Dot(w, su), alongV = Dot(w, sv);
+  return length2 + 0.5 * (alongU * alongU + alongV * alongV);
+}
+
 bool Grower::EdgeRatiosOk(Id x, Id y, Id z, double minimum) const
 {
-  const double l0 = Distance2(this->P3(x), this->P3(y));
-  const double l1 = Distance2(this->P3(y), this->P3(z));
-  const double l2 = Distance2(this->P3(z), this->P3(x));
+  const double l0 = this->RatioLength2(x, y, Distance2(this->P3(x), this->P3(y)));
+  const double l1 = this->RatioLength2(y, z, Distance2(this->P3(y), this->P3(z)));
+  const double l2 = this->RatioLength2(z, x, Distance2(this->P3(z), this->P3(x)));
   const double longest = std::max({ l0, l1, l2 }), shortest = std::min({ l0, l1, l2 });
   return shortest >= minimum * minimum * longest;
 }
@@ -729,6 +750,7 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
   // admissible ones also meet constraints 2 and 3.
   const double d2 = Dot(ab, ab);
   const double dab = std::sqrt(d2);
+  const double rd2 = this->RatioLength2(a, b, d2);
   const double minimum =
     level == 0 ? this->Par.MinRatio : (level == 1 ? 0.5 * this->Par.MinRatio : 0.0);
   const double maximum = level == 0 ? this->Par.MaxRatio : 2.0 * this->Par.MaxRatio;
@@ -754,9 +776,10 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
     Sub(this->P3(c), this->P3(a), ac);
     Sub(this->P3(c), this->P3(b), bc);
     const double la2 = Dot(ac, ac), lb2 = Dot(bc, bc);
+    const double ra2 = this->RatioLength2(a, c, la2), rb2 = this->RatioLength2(b, c, lb2);
     const bool ear = c == n || c == p;
-    if ((!ear && (la2 < minimum * minimum * d2 || lb2 < minimum * minimum * d2)) ||
-      la2 > maximum * maximum * d2 || lb2 > maximum * maximum * d2)
+    if ((!ear && (ra2 < minimum * minimum * rd2 || rb2 < minimum * minimum * rd2)) ||
+      ra2 > maximum * maximum * rd2 || rb2 > maximum * maximum * rd2)
     {
       continue;
     }
@@ -1051,6 +1074,7 @@ bool Grower::TrySeed(Id p1, bool relaxed)
     double e[3];
     Sub(x2, x1, e);
     const double d2 = Dot(e, e), d = std::sqrt(d2);
+    const double rd2 = this->RatioLength2(p1, p2, d2);
     const Id centers[2] = { p1, p2 };
     this->CollectVertices(centers, 2);
     Id best = -1;
@@ -1065,14 +1089,15 @@ bool Grower::TrySeed(Id p1, bool relaxed)
       Sub(this->P3(q), x1, e1);
       Sub(this->P3(q), x2, e2);
       const double l1 = Dot(e1, e1), l2 = Dot(e2, e2);
-      if (l1 < minimum * minimum * d2 || l2 < minimum * minimum * d2 ||
-        l1 > maximum * maximum * d2 || l2 > maximum * maximum * d2 ||
+      const double r1 = this->RatioLength2(p1, q, l1), r2 = this->RatioLength2(p2, q, l2);
+      if (r1 < minimum * minimum * rd2 || r2 < minimum * minimum * rd2 ||
+        r1 > maximum * maximum * rd2 || r2 > maximum * maximum * rd2 ||
         Dot(e, e1) < this->Par.CosBase * d * std::sqrt(l1) ||
         -Dot(e, e2) < this->Par.CosBase * d * std::sqrt(l2))
       {
         continue;
       }
-      const double score = std::sqrt(l1) + std::sqrt(l2);
+      const double score = std::sqrt(r1) + std::sqrt(r2);
       if ((score < bestScore || (score == bestScore && q < best)) &&
         !pcs::projected::Collinear(x1, x2, this->P3(q)))
       {
@@ -2130,6 +2155,7 @@ int vtkLocalOptimumGrowth::RequestData(
   // locator, built once; again without the far outliers when there are any).
   std::vector<double> x;
   std::vector<Id> knn;
+  std::vector<double> stretch;
   int k = 0;
   auto findNeighbors = [&]() {
     x.resize(3 * static_cast<size_t>(n));
@@ -2160,14 +2186,25 @@ int vtkLocalOptimumGrowth::RequestData(
     locator->BuildLocator();
     // The shared K-nearest-neighbour search (adaptive radius queries, ties broken by index,
     // threaded in blocks); abort stops it between blocks and the growth is then skipped.
-    pcs::FindNearestNeighbors(locator, x.data(), n, k, knn, [this](double fraction) {
+    auto progress = [this](double fraction)
+    {
       if (this->GetAbortExecute())
       {
         return false;
       }
       this->UpdateProgress(0.05 + 0.1 * fraction);
       return !this->GetAbortExecute();
-    });
+    };
+    // Scan-line sampling: a point whose K nearest all lie on its own line also gets the nearest
+    // points of the lines beside it (see pcsNearestNeighbors.h).
+    stretch.clear();
+    if (pcs::FindNearestNeighbors(locator, x.data(), n, k, knn, progress))
+    {
+      if (pcs::AddOffLineNeighbors(locator, x.data(), n, k, knn, &stretch) == 0)
+      {
+        stretch.clear();
+      }
+    }
     if (this->Locator)
     {
       this->Locator->SetDataSet(nullptr);
@@ -2218,6 +2255,7 @@ int vtkLocalOptimumGrowth::RequestData(
   parameters.MaxHoleEdges = this->MaximumHoleEdges;
   parameters.Relax = this->RelaxConstraints;
   Grower grower(x.data(), n, knn, parameters, this);
+  grower.Stretch = std::move(stretch);
   if (!this->GetAbortExecute())
   {
     grower.Run();

@@ -4,6 +4,7 @@
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 #include "pcsNearestNeighbors.h"
+#include "pcsNormalEstimation.h"
 #include "pcsProjectedTests.h"
 #include "pcsSurfaceMesh.h"
 
@@ -36,9 +37,7 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
-#include <functional>
 #include <limits>
-#include <queue>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -96,343 +95,6 @@ inline double SegmentDistance2(const double* a, const double* b, const double* x
   s = std::min(1.0, std::max(0.0, s));
   const double d[3] = { ax[0] - s * ab[0], ax[1] - s * ab[1], ax[2] - s * ab[2] };
   return Dot(d, d);
-}
-
-//------------------------------------------------------------------------------------------------
-// Normal estimation (when the input has no normals).
-
-// Eigenvalues (decreasing) of the symmetric 3x3 matrix `a` and the unit eigenvector of the
-// smallest, in closed form: the eigenvalues from the characteristic cubic (trigonometric
-// solution, on the matrix scaled to entries of at most 1), the eigenvector the largest cross
-// product of two rows of a - l I. Where that is not well defined (the two smallest eigenvalues
-// equal to about 1e-6 of the scale, or a multiple of the identity) it falls back to
-// vtkMath::Jacobi. A normal per point: several times cheaper than Jacobi's iterations.
-void SmallestEigenvector(const double a[3][3], double values[3], double vector[3])
-{
-  double scale = 0.0;
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      scale = std::max(scale, std::fabs(a[r][c]));
-    }
-  }
-  double b[3][3];
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      b[r][c] = scale > 0.0 ? a[r][c] / scale : 0.0;
-    }
-  }
-  const double q = (b[0][0] + b[1][1] + b[2][2]) / 3.0;
-  const double off = b[0][1] * b[0][1] + b[0][2] * b[0][2] + b[1][2] * b[1][2];
-  const double spread = (b[0][0] - q) * (b[0][0] - q) + (b[1][1] - q) * (b[1][1] - q) +
-    (b[2][2] - q) * (b[2][2] - q) + 2.0 * off;
-  const double p = std::sqrt(spread / 6.0);
-  bool solved = false;
-  if (scale > 0.0 && std::isfinite(scale) && p > 1e-12)
-  {
-    double c[3][3];
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        c[r][k] = (b[r][k] - (r == k ? q : 0.0)) / p;
-      }
-    }
-    const double half = 0.5 *
-      (c[0][0] * (c[1][1] * c[2][2] - c[1][2] * c[2][1]) -
-        c[0][1] * (c[1][0] * c[2][2] - c[1][2] * c[2][0]) +
-        c[0][2] * (c[1][0] * c[2][1] - c[1][1] * c[2][0]));
-    const double phi = std::acos(std::min(1.0, std::max(-1.0, half))) / 3.0;
-    const double largest = q + 2.0 * p * std::cos(phi);
-    const double smallest = q + 2.0 * p * std::cos(phi + 2.0 * vtkMath::Pi() / 3.0);
-    const double middle = 3.0 * q - largest - smallest;
-    double rows[3][3];
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        rows[r][k] = b[r][k] - (r == k ? smallest : 0.0);
-      }
-    }
-    double best[3] = { 0.0, 0.0, 0.0 };
-    double bestNorm2 = 0.0;
-    for (int r = 0; r < 3; ++r)
-    {
-      double cross[3];
-      vtkMath::Cross(rows[r], rows[(r + 1) % 3], cross);
-      const double norm2 = Dot(cross, cross);
-      if (norm2 > bestNorm2)
-      {
-        bestNorm2 = norm2;
-        std::copy_n(cross, 3, best);
-      }
-    }
-    if (bestNorm2 > 1e-12 && std::isfinite(bestNorm2))
-    {
-      const double norm = std::sqrt(bestNorm2);
-      for (int k = 0; k < 3; ++k)
-      {
-        vector[k] = best[k] / norm;
-      }
-      values[0] = largest * scale;
-      values[1] = middle * scale;
-      values[2] = smallest * scale;
-      solved = true;
-    }
-  }
-  if (!solved)
-  {
-    double row0[3] = { a[0][0], a[0][1], a[0][2] }, row1[3] = { a[1][0], a[1][1], a[1][2] },
-           row2[3] = { a[2][0], a[2][1], a[2][2] };
-    double* matrix[3] = { row0, row1, row2 };
-    double column0[3], column1[3], column2[3];
-    double* vectors[3] = { column0, column1, column2 };
-    vtkMath::Jacobi(matrix, values, vectors); // eigenvalues in decreasing order
-    vector[0] = vectors[0][2];
-    vector[1] = vectors[1][2];
-    vector[2] = vectors[2][2];
-  }
-}
-
-// Unoriented normal of every point: the eigenvector of the smallest eigenvalue of the covariance
-// of its neighbourhood, the point and its `others` nearest points (`table`, -1 for none): Hoppe et
-// al.'s tangent plane, as vtkPCANormalEstimation. `variation` gets the surface variation of each
-// neighbourhood, 3 l0 / (l0 + l1 + l2) with l0 the smallest eigenvalue: 0 on a plane, 1 for an
-// isotropic neighbourhood (a normal without meaning).
-void EstimatePlaneNormals(const double* pts,
-  Id count,
-  const std::vector<int32_t>& table,
-  int others,
-  std::vector<double>& normals,
-  std::vector<double>& variation)
-{
-  normals.assign(3 * static_cast<size_t>(count), 0.0);
-  variation.assign(static_cast<size_t>(count), 1.0);
-  vtkSMPTools::For(0,
-    count,
-    [&](Id begin, Id end)
-    {
-      for (Id i = begin; i < end; ++i)
-      {
-        const double* p = &pts[3 * static_cast<size_t>(i)];
-        const int32_t* row = table.data() + static_cast<size_t>(i) * others;
-        // One pass of sums over the offsets d from p: the covariance is S2 / S0 - m m^T with
-        // m = S1 / S0.
-        double s0 = 1.0; // the point itself, offset 0
-        double s1[3] = { 0.0, 0.0, 0.0 };
-        double s2[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }; // xx yy zz xy xz yz
-        for (int j = 0; j < others; ++j)
-        {
-          if (row[j] < 0)
-          {
-            continue;
-          }
-          const double* q = &pts[3 * static_cast<size_t>(row[j])];
-          const double d[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
-          s0 += 1.0;
-          s1[0] += d[0];
-          s1[1] += d[1];
-          s1[2] += d[2];
-          s2[0] += d[0] * d[0];
-          s2[1] += d[1] * d[1];
-          s2[2] += d[2] * d[2];
-          s2[3] += d[0] * d[1];
-          s2[4] += d[0] * d[2];
-          s2[5] += d[1] * d[2];
-        }
-        const double m[3] = { s1[0] / s0, s1[1] / s0, s1[2] / s0 };
-        const double covariance[3][3] = {
-          { s2[0] / s0 - m[0] * m[0], s2[3] / s0 - m[0] * m[1], s2[4] / s0 - m[0] * m[2] },
-          { s2[3] / s0 - m[0] * m[1], s2[1] / s0 - m[1] * m[1], s2[5] / s0 - m[1] * m[2] },
-          { s2[4] / s0 - m[0] * m[2], s2[5] / s0 - m[1] * m[2], s2[2] / s0 - m[2] * m[2] }
-        };
-        double values[3];
-        SmallestEigenvector(covariance, values, &normals[3 * static_cast<size_t>(i)]);
-        const double sum = values[0] + values[1] + values[2];
-        variation[i] = sum > 0.0 ? std::min(1.0, std::max(0.0, 3.0 * values[2] / sum)) : 1.0;
-      }
-    });
-}
-
-// Agreement of the normal n of a point p with the normal m of a point q: (R n) . m, R the
-// reflection through the plane bisecting p q. On a circle through p and q (the surface between
-// them, bent in the plane of the chord) R maps the normal at p to the normal at q, so the sign
-// says whether m is oriented like n and the magnitude (1 on a circle) how sure that is. With the
-// chord in the tangent plane this is n . m (Hoppe et al.); with the chord along n (the other side
-// of a thin part, in a neighbourhood) it is -n . m: the two sides' outward normals are opposite.
-inline double ReflectedAgreement(const double* p, const double* n, const double* q, const double* m)
-{
-  const double chord[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
-  const double length2 = Dot(chord, chord);
-  if (!(length2 > 0.0))
-  {
-    return Dot(n, m);
-  }
-  return Dot(n, m) - 2.0 * Dot(n, chord) * Dot(chord, m) / length2;
-}
-
-// Consistent orientation of unoriented normals (each flipped or not): Hoppe et al.'s propagation
-// along a minimum spanning tree of the graph joining each point to its `others` nearest points
-// (`table`), the most certain edges first. The relative orientation of two points is the sign of
-// ReflectedAgreement (the normal carried along a circle through both; cf. Koenig & Gumhold,
-// "Consistent propagation of normal orientations in point clouds", 2009) and the cost of the edge
-// is 1 - |agreement| plus the surface variations of its two end points (`variation`, from
-// EstimatePlaneNormals), so that the propagation goes around the points whose plane is uncertain
-// rather than through them. The breadth-first traversal of vtkPCANormalEstimation (n . m, in id
-// order) flipped the far side of every thin part within the neighbourhood (legs, ears, tails of
-// animal scans) and whatever a wrong normal led to. Each
-// connected part of the graph is then made to point outwards by a vote of its extreme points
-// along +-x, +-y, +-z (at the extreme point along d the outward normal of a closed surface is d):
-// it is flipped when the sum of n . d is negative. Returns false when aborted.
-bool OrientNormals(const double* pts,
-  Id count,
-  const std::vector<int32_t>& table,
-  int others,
-  const std::vector<double>& variation,
-  std::vector<double>& normals,
-  const std::function<bool()>& proceed)
-{
-  // The symmetric graph, compressed rows.
-  std::vector<int64_t> start(static_cast<size_t>(count) + 1, 0);
-  for (Id i = 0; i < count; ++i)
-  {
-    for (int j = 0; j < others; ++j)
-    {
-      const int32_t w = table[static_cast<size_t>(i) * others + j];
-      if (w >= 0)
-      {
-        ++start[i + 1];
-        ++start[w + 1];
-      }
-    }
-  }
-  for (Id i = 0; i < count; ++i)
-  {
-    start[i + 1] += start[i];
-  }
-  std::vector<Id> adjacent(static_cast<size_t>(start[count]));
-  {
-    std::vector<int64_t> fill(start.begin(), start.end() - 1);
-    for (Id i = 0; i < count; ++i)
-    {
-      for (int j = 0; j < others; ++j)
-      {
-        const int32_t w = table[static_cast<size_t>(i) * others + j];
-        if (w >= 0)
-        {
-          adjacent[fill[i]++] = w;
-          adjacent[fill[w]++] = i;
-        }
-      }
-    }
-  }
-  // A pair of mutual neighbours is one edge: each row sorted, its repeats left out (end[i]).
-  std::vector<int64_t> end(static_cast<size_t>(count));
-  vtkSMPTools::For(0,
-    count,
-    [&](Id begin, Id last)
-    {
-      for (Id i = begin; i < last; ++i)
-      {
-        auto first = adjacent.begin() + start[i];
-        std::sort(first, adjacent.begin() + start[i + 1]);
-        end[i] = std::unique(first, adjacent.begin() + start[i + 1]) - adjacent.begin();
-      }
-    });
-  struct Step
-  {
-    float Cost;
-    Id From;
-    Id To;
-    bool operator>(const Step& other) const { return this->Cost > other.Cost; }
-  };
-  std::priority_queue<Step, std::vector<Step>, std::greater<Step>> steps;
-  std::vector<uint8_t> reached(static_cast<size_t>(count), 0);
-  auto point = [&](Id k) { return &pts[3 * static_cast<size_t>(k)]; };
-  auto normal = [&](Id k) { return &normals[3 * static_cast<size_t>(k)]; };
-  auto flip = [&](Id k)
-  {
-    double* n = normal(k);
-    n[0] = -n[0];
-    n[1] = -n[1];
-    n[2] = -n[2];
-  };
-  // The cheapest step found so far to each point not reached (Prim's key: a step is only queued
-  // when it is cheaper than the point's queued ones).
-  std::vector<float> cheapest(static_cast<size_t>(count), std::numeric_limits<float>::infinity());
-  auto leave = [&](Id i)
-  {
-    for (int64_t a = start[i]; a < end[i]; ++a)
-    {
-      const Id w = adjacent[a];
-      if (!reached[w])
-      {
-        const double agreement = ReflectedAgreement(point(i), normal(i), point(w), normal(w));
-        const float cost =
-          static_cast<float>(1.0 - std::fabs(agreement) + variation[i] + variation[w]);
-        if (cost < cheapest[w])
-        {
-          cheapest[w] = cost;
-          steps.push({ cost, i, w });
-        }
-      }
-    }
-  };
-  std::vector<Id> part; // the points of the connected part being oriented
-  Id done = 0;
-  for (Id seed = 0; seed < count; ++seed)
-  {
-    if (reached[seed])
-    {
-      continue;
-    }
-    reached[seed] = 1;
-    part.assign(1, seed);
-    leave(seed);
-    while (!steps.empty())
-    {
-      const Step step = steps.top();
-      steps.pop();
-      if (reached[step.To])
-      {
-        continue;
-      }
-      reached[step.To] = 1;
-      part.push_back(step.To);
-      if (ReflectedAgreement(point(step.From), normal(step.From), point(step.To), normal(step.To)) <
-        0.0)
-      {
-        flip(step.To);
-      }
-      leave(step.To);
-      if ((++done & 0xffff) == 0 && !proceed())
-      {
-        return false;
-      }
-    }
-    double vote = 0.0;
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      Id low = part[0], high = part[0];
-      for (Id k : part)
-      {
-        low = point(k)[axis] < point(low)[axis] ? k : low;
-        high = point(k)[axis] > point(high)[axis] ? k : high;
-      }
-      vote += normal(high)[axis] - normal(low)[axis];
-    }
-    if (vote < 0.0)
-    {
-      for (Id k : part)
-      {
-        flip(k);
-      }
-    }
-  }
-  return true;
 }
 
 //------------------------------------------------------------------------------------------------
@@ -2007,46 +1669,38 @@ int vtkCDTAdvancingFront::RequestData(
     const double length2 = Dot(n, n);
     return !std::isfinite(length2) || !(length2 > 0.0);
   };
-  // The estimated normals, for every point: PCA planes (EstimatePlaneNormals) oriented along a
-  // minimum spanning tree, each connected part of the neighbour graph then turned outwards by its
-  // extreme points (OrientNormals), both from one table of nearest neighbours.
+  // The estimated normals, for every point: PCA planes oriented along a minimum spanning tree,
+  // each connected part of the neighbour graph then turned outwards by its extreme points
+  // (pcs::EstimateNormals), both from one table of nearest neighbours.
   // The table of nearest neighbours (knnOthers per point), kept for the local spacing when it is
   // the table of all the points.
   std::vector<int32_t> knn;
   int knnOthers = 0;
-  auto estimateNormalsOn = [&](const double* pts, Id count, vtkStaticPointLocator* loc,
-                             std::vector<double>& estimatedNormals, std::vector<int32_t>& table,
+  auto estimateNormalsOn = [&](const double* pts,
+                             Id count,
+                             vtkStaticPointLocator* loc,
+                             std::vector<double>& estimatedNormals,
+                             std::vector<int32_t>& table,
                              int& tableOthers)
   {
-    estimatedNormals.assign(3 * static_cast<size_t>(count), 0.0);
     // The neighbourhood of a point: itself and its NormalSampleSize - 1 nearest other points (the
     // NormalSampleSize nearest points of vtkPCANormalEstimation, which include the point), for
-    // its plane (EstimatePlaneNormals) and its edges in the orientation graph (OrientNormals).
-    const int others = std::min<int>(this->NormalSampleSize, count) - 1;
-    tableOthers = 0;
-    if (!pcs::FindNearestNeighbors(loc, pts, static_cast<int32_t>(count), others, table,
-          [this](double fraction)
-          {
-            this->UpdateProgress(0.02 + 0.06 * fraction);
-            return !this->GetAbortExecute();
-          }))
-    {
-      return;
-    }
-    tableOthers = others;
+    // its plane and its edges in the orientation graph.
     std::vector<double> variation;
-    EstimatePlaneNormals(pts, count, table, others, estimatedNormals, variation);
-    if (this->GetAbortExecute())
-    {
-      return;
-    }
-    OrientNormals(pts,
+    pcs::EstimateNormals(loc,
+      pts,
       count,
-      table,
-      others,
-      variation,
+      this->NormalSampleSize,
+      /*orient=*/true,
       estimatedNormals,
-      [this]() { return !this->GetAbortExecute(); });
+      variation,
+      table,
+      tableOthers,
+      [this](double fraction)
+      {
+        this->UpdateProgress(0.02 + 0.08 * fraction);
+        return !this->GetAbortExecute();
+      });
   };
   // Exact duplicates would fill a neighbourhood with copies of one point (a zero covariance):
   // with duplicates, the normals are estimated on the distinct points and copied to the others.

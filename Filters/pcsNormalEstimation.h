@@ -1,0 +1,82 @@
+// Point normals estimated from a cloud: least-squares planes of nearest-neighbour
+// neighbourhoods, optionally oriented consistently (private helper of the surface filters, not
+// wrapped).
+#ifndef pcsNormalEstimation_h
+#define pcsNormalEstimation_h
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+class vtkStaticPointLocator;
+
+namespace pcs
+{
+/// Eigenvalues (decreasing, in `values`) of the symmetric 3x3 matrix `a` and the unit
+/// eigenvector of the smallest (`vector`). Closed form: the eigenvalues from the characteristic
+/// cubic (trigonometric solution, on the matrix scaled to entries of at most 1), the eigenvector
+/// the largest cross product of two rows of a - l I. Where that is not well defined (the two
+/// smallest eigenvalues equal to about 1e-6 of the scale, or a multiple of the identity) it
+/// falls back to vtkMath::Jacobi. Several times cheaper than Jacobi's iterations.
+void SmallestEigenvector(const double a[3][3], double values[3], double vector[3]);
+
+/// Unoriented unit normal of each of the `n` points of `xyz` (packed x, y, z): the eigenvector
+/// of the smallest eigenvalue of the covariance of its neighbourhood, the point and its `k`
+/// nearest points (`neighbors`, n * k ids as made by FindNearestNeighbors, -1 for none): Hoppe
+/// et al.'s tangent plane ("Surface reconstruction from unorganized points", 1992, section 3.2),
+/// as vtkPCANormalEstimation with k + 1 as its sample size. The covariance is summed in one pass
+/// over the offsets from the point. `normals` gets 3 n values (sign arbitrary); `variation`
+/// gets the surface variation of each neighbourhood, 3 l0 / (l0 + l1 + l2) with l0 the smallest
+/// eigenvalue: 0 on a plane, 1 for an isotropic neighbourhood or a lone point (a normal without
+/// meaning). Threads: vtkSMPTools; the result does not depend on their number.
+void EstimatePlaneNormals(const double* xyz,
+  int32_t n,
+  const std::vector<int32_t>& neighbors,
+  int k,
+  std::vector<double>& normals,
+  std::vector<double>& variation);
+
+/// Consistent orientation of the unit normals `normals` (each kept or flipped): Hoppe et al.'s
+/// propagation along a minimum spanning tree (Prim) of the symmetric graph joining each point to
+/// its `k` nearest points (`neighbors`), the most certain edges first. Two points p, q with
+/// normals n, m agree by the sign of (R n) . m, R the reflection through the plane bisecting p q
+/// (the normal carried along a circle through both; cf. Koenig and Gumhold, "Consistent
+/// propagation of normal orientations in point clouds", 2009): n . m with the chord in the
+/// tangent plane, -n . m across a part thinner than a neighbourhood. An edge costs
+/// 1 - |(R n) . m| plus the surface variations (`variation`, from EstimatePlaneNormals) of its end
+/// points, so the propagation goes around the points whose plane is uncertain. Each connected
+/// part of the graph is then turned outwards by a vote of its extreme points along +-x, +-y, +-z
+/// (at the extreme point along d the outward normal of a closed surface is d): flipped when the
+/// sum of n . d is negative. `progress` (optional) receives the fraction of points oriented
+/// every 65,536 points; returning false stops (the function then returns false, the normals
+/// partly oriented).
+bool OrientNormals(const double* xyz,
+  int32_t n,
+  const std::vector<int32_t>& neighbors,
+  int k,
+  const std::vector<double>& variation,
+  std::vector<double>& normals,
+  const std::function<bool(double)>& progress = nullptr);
+
+/// The whole estimation for the `n` points of `xyz` (`locator` built on exactly these points, in
+/// this order): the table of the `sampleSize` - 1 nearest other points of each point
+/// (FindNearestNeighbors; the neighbourhood is the `sampleSize` nearest points including the
+/// point, as vtkPCANormalEstimation's SampleSize), the planes (EstimatePlaneNormals) and, with
+/// `orient`, their orientation (OrientNormals). Outputs: `normals` (3 n, unit), `variation`
+/// (n), `neighbors` (the table, n * `k` ids, kept for the caller's other uses) and `k` (the
+/// number of neighbours per point, min(sampleSize, n) - 1; 0 until the table is complete).
+/// `progress` (optional) receives the fraction done (the search is the first 80 %); returning
+/// false stops the estimation and the function returns false (outputs incomplete).
+bool EstimateNormals(vtkStaticPointLocator* locator,
+  const double* xyz,
+  int32_t n,
+  int sampleSize,
+  bool orient,
+  std::vector<double>& normals,
+  std::vector<double>& variation,
+  std::vector<int32_t>& neighbors,
+  int& k,
+  const std::function<bool(double)>& progress = nullptr);
+}
+
+#endif

@@ -126,6 +126,7 @@ public:
     this->ProjectionStamp.assign(n, 0);
     this->Projected.assign(2 * static_cast<size_t>(n), 0.0);
     this->Touched.assign(n, 0);
+    this->InTouchedSinceRetry.assign(n, 0);
     this->SeedFailed.assign(n, 0);
   }
 
@@ -147,9 +148,12 @@ private:
   };
   struct Deferred
   {
-    Id A, B;
+    Id A, B; // as deferred: the front edge may run b->a since (OnFront)
     uint64_t Clock;
+    int64_t Next[2]; // in the EdgesAt chains of A and B: the entry deferred before, -1 ends
     uint8_t Level;
+    bool Active;   // false once requeued or dropped (the entry stays until CompactDeferred)
+    uint32_t Seen; // RetryStamp of the last retry that collected it
   };
 
   const double* P3(Id v) const { return this->X + 3 * static_cast<size_t>(v); }
@@ -185,6 +189,13 @@ private:
   void ProcessQueue();
   bool RetryDeferred();
   bool Changed(const Deferred& d) const;
+  void Defer(Id a, Id b, uint8_t level);
+  void CollectWoken();
+  void BuildDeferredIndex();
+  void LinkEnds(size_t entry);
+  bool OnFront(const Deferred& d, Id& a, Id& b) const;
+  void Retire(size_t entry);
+  void CompactDeferred();
   void FillHoles();
   void InsertOrphans();
   bool InsertOrphan(Id q);
@@ -225,7 +236,15 @@ private:
   // Commit a triangle: mesh, then Register (front queue, neighbourhood clock, labels).
   int64_t Commit(Id x, Id y, Id z);
   void Register(int64_t t);
-  void Touch(Id v) { this->Touched[v] = this->Clock; }
+  void Touch(Id v)
+  {
+    this->Touched[v] = this->Clock;
+    if (!this->InTouchedSinceRetry[v])
+    {
+      this->InTouchedSinceRetry[v] = 1;
+      this->TouchedSinceRetry.push_back(v);
+    }
+  }
   int32_t FindLabel(int32_t label)
   {
     while (this->LabelParent[label] != label)
@@ -250,7 +269,22 @@ private:
 
   std::vector<Item> Queue;
   size_t QueueHead = 0;
+  // Edges whose expansion failed, in deferral order (retired entries stay until
+  // CompactDeferred), and the vertices touched since the last retry. When the deferred edges
+  // outnumber those vertices, a retry checks only the edges with an end among them or their
+  // reverse neighbours (ReverseKnn: the vertices that have them among their K nearest), found
+  // through the chains of deferred edges at each vertex (EdgesAt, -1 ended).
   std::vector<Deferred> DeferredEdges;
+  size_t RetiredEdges = 0;
+  size_t RelaxFrom = 0; // the active deferred edges before it are at the last stage
+  std::vector<Id> TouchedSinceRetry;
+  std::vector<char> InTouchedSinceRetry;
+  bool DeferredIndexed = false;
+  std::vector<int64_t> ReverseStart;
+  std::vector<Id> ReverseKnn;
+  std::vector<int64_t> EdgesAt;
+  std::vector<size_t> Woken;
+  uint32_t RetryStamp = 0;
   std::vector<uint64_t> Touched;
   uint64_t Clock = 1;
   std::vector<int32_t> Labels;      // per triangle id: seed label
@@ -1201,7 +1235,7 @@ void Grower::ProcessQueue()
     this->ReportProgress();
     if (!this->Expand(a, b, item.Level))
     {
-      this->DeferredEdges.push_back({ a, b, this->Clock, item.Level });
+      this->Defer(a, b, item.Level);
     }
   }
 }
@@ -1226,51 +1260,216 @@ bool Grower::Changed(const Deferred& d) const
   return false;
 }
 
+void Grower::Defer(Id a, Id b, uint8_t level)
+{
+  this->DeferredEdges.push_back({ a, b, this->Clock, { -1, -1 }, level, true, this->RetryStamp });
+  if (this->DeferredIndexed)
+  {
+    this->LinkEnds(this->DeferredEdges.size() - 1);
+  }
+}
+
+void Grower::LinkEnds(size_t entry)
+{
+  Deferred& d = this->DeferredEdges[entry];
+  for (int end = 0; end < 2; ++end)
+  {
+    const Id v = end == 0 ? d.A : d.B;
+    d.Next[end] = this->EdgesAt[v];
+    this->EdgesAt[v] = static_cast<int64_t>(entry);
+  }
+}
+
+void Grower::BuildDeferredIndex()
+{
+  this->ReverseStart.assign(static_cast<size_t>(this->N) + 1, 0);
+  for (Id nb : this->Knn)
+  {
+    if (nb >= 0)
+    {
+      ++this->ReverseStart[static_cast<size_t>(nb) + 1];
+    }
+  }
+  std::partial_sum(
+    this->ReverseStart.begin(), this->ReverseStart.end(), this->ReverseStart.begin());
+  this->ReverseKnn.resize(static_cast<size_t>(this->ReverseStart.back()));
+  std::vector<int64_t> fill(this->ReverseStart.begin(), this->ReverseStart.end() - 1);
+  for (Id v = 0; v < this->N; ++v)
+  {
+    const Id* nb = this->Neighbors(v);
+    for (int j = 0; j < this->K; ++j)
+    {
+      if (nb[j] >= 0)
+      {
+        this->ReverseKnn[fill[nb[j]]++] = v;
+      }
+    }
+  }
+  this->EdgesAt.assign(this->N, -1);
+  for (size_t entry = 0; entry < this->DeferredEdges.size(); ++entry)
+  {
+    this->LinkEnds(entry);
+  }
+  this->DeferredIndexed = true;
+}
+
+// Woken: the active deferred edges, in deferral order, that Changed may accept, i.e. those with
+// a vertex touched since the last retry in their neighbourhood (all of them when they are not
+// more than those vertices). The retired entries met in the chains are unlinked.
+void Grower::CollectWoken()
+{
+  ++this->RetryStamp;
+  this->Woken.clear();
+  const size_t active = this->DeferredEdges.size() - this->RetiredEdges;
+  if (active <= this->TouchedSinceRetry.size())
+  {
+    for (size_t entry = 0; entry < this->DeferredEdges.size(); ++entry)
+    {
+      if (this->DeferredEdges[entry].Active)
+      {
+        this->Woken.push_back(entry);
+      }
+    }
+  }
+  else
+  {
+    if (!this->DeferredIndexed)
+    {
+      this->BuildDeferredIndex();
+    }
+    auto collectAt = [this](Id v) {
+      int64_t* link = &this->EdgesAt[v];
+      while (*link >= 0)
+      {
+        Deferred& d = this->DeferredEdges[*link];
+        int64_t* next = &d.Next[d.A == v ? 0 : 1];
+        if (!d.Active)
+        {
+          *link = *next;
+          continue;
+        }
+        if (d.Seen != this->RetryStamp)
+        {
+          d.Seen = this->RetryStamp;
+          this->Woken.push_back(static_cast<size_t>(*link));
+        }
+        link = next;
+      }
+    };
+    for (Id w : this->TouchedSinceRetry)
+    {
+      collectAt(w);
+      for (int64_t r = this->ReverseStart[w]; r < this->ReverseStart[w + 1]; ++r)
+      {
+        collectAt(this->ReverseKnn[r]);
+      }
+    }
+    std::sort(this->Woken.begin(), this->Woken.end());
+  }
+  for (Id w : this->TouchedSinceRetry)
+  {
+    this->InTouchedSinceRetry[w] = 0;
+  }
+  this->TouchedSinceRetry.clear();
+}
+
+// The front edge between the ends of a deferred edge, a->b (its part of the mesh may have been
+// reversed since it was deferred); false when the edge is no longer on the front.
+bool Grower::OnFront(const Deferred& d, Id& a, Id& b) const
+{
+  a = d.A;
+  b = d.B;
+  if (this->Mesh.IsBoundaryHalfEdge(a, b))
+  {
+    return true;
+  }
+  std::swap(a, b);
+  return this->Mesh.IsBoundaryHalfEdge(a, b);
+}
+
+void Grower::Retire(size_t entry)
+{
+  this->DeferredEdges[entry].Active = false;
+  ++this->RetiredEdges;
+}
+
+// Drops the retired entries, keeping the order of the others, and relinks the chains.
+void Grower::CompactDeferred()
+{
+  size_t kept = 0, relaxFrom = 0;
+  for (size_t entry = 0; entry < this->DeferredEdges.size(); ++entry)
+  {
+    const Deferred& d = this->DeferredEdges[entry];
+    if (this->DeferredIndexed)
+    {
+      this->EdgesAt[d.A] = this->EdgesAt[d.B] = -1;
+    }
+    relaxFrom = entry == this->RelaxFrom ? kept : relaxFrom;
+    if (d.Active)
+    {
+      this->DeferredEdges[kept++] = d;
+    }
+  }
+  this->RelaxFrom = this->RelaxFrom < this->DeferredEdges.size() ? relaxFrom : kept;
+  this->DeferredEdges.resize(kept);
+  this->RetiredEdges = 0;
+  for (size_t entry = 0; this->DeferredIndexed && entry < kept; ++entry)
+  {
+    this->LinkEnds(entry);
+  }
+}
+
 // The front has stalled: retry the edges set aside whose neighbourhood changed since they were
-// tried; failing that, the ones never tried with relaxed constraints.
+// tried, in the order they were set aside; failing that, the ones never tried with relaxed
+// constraints. An edge no longer on the front is dropped. While the front grows, triangles are
+// only added, each touching its corners: an edge that left the front is among the woken ones
+// of the next retry or dropped by the relaxed pass, and it never comes back to the front.
 bool Grower::RetryDeferred()
 {
+  this->CollectWoken();
   bool any = false;
-  size_t kept = 0;
-  for (Deferred d : this->DeferredEdges)
+  Id a, b;
+  for (size_t entry : this->Woken)
   {
-    if (!this->Mesh.IsBoundaryHalfEdge(d.A, d.B))
+    const Deferred& d = this->DeferredEdges[entry];
+    if (!this->OnFront(d, a, b))
     {
-      if (!this->Mesh.IsBoundaryHalfEdge(d.B, d.A))
+      this->Retire(entry);
+    }
+    else if (this->Changed(d))
+    {
+      this->Queue.push_back({ a, b, d.Level });
+      this->Retire(entry);
+      any = true;
+    }
+  }
+  if (!any && this->Par.Relax)
+  {
+    // The entries before RelaxFrom are at the last stage already.
+    for (size_t entry = this->RelaxFrom; entry < this->DeferredEdges.size(); ++entry)
+    {
+      const Deferred& d = this->DeferredEdges[entry];
+      if (!d.Active)
       {
         continue;
       }
-      std::swap(d.A, d.B); // its part of the mesh was reversed
+      if (!this->OnFront(d, a, b))
+      {
+        this->Retire(entry);
+      }
+      else if (d.Level < 3)
+      {
+        this->Queue.push_back({ a, b, static_cast<uint8_t>(d.Level + 1) });
+        this->Retire(entry);
+        any = true;
+      }
     }
-    if (this->Changed(d))
-    {
-      this->Queue.push_back({ d.A, d.B, d.Level });
-      any = true;
-    }
-    else
-    {
-      this->DeferredEdges[kept++] = d;
-    }
+    this->RelaxFrom = this->DeferredEdges.size();
   }
-  this->DeferredEdges.resize(kept);
-  if (any || !this->Par.Relax)
+  if (this->RetiredEdges >= 1024 && 2 * this->RetiredEdges >= this->DeferredEdges.size())
   {
-    return any;
+    this->CompactDeferred();
   }
-  kept = 0;
-  for (const Deferred& d : this->DeferredEdges)
-  {
-    if (d.Level < 3)
-    {
-      this->Queue.push_back({ d.A, d.B, static_cast<uint8_t>(d.Level + 1) });
-      any = true;
-    }
-    else
-    {
-      this->DeferredEdges[kept++] = d;
-    }
-  }
-  this->DeferredEdges.resize(kept);
   return any;
 }
 

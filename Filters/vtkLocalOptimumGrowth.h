@@ -100,10 +100,13 @@
  *    side, under the same rules), otherwise it is taken back. Two parts grown from different
  *    seeds with opposite orientations are made consistent first (one part is reversed).
  * 4. Deferred edges and relaxation: a front edge without a valid candidate is set aside and
- *    retried when the front has stalled and its neighbourhood has changed. When nothing else
- *    can progress and RelaxConstraints is on (added), the edges set aside are retried in
- *    stages before a new seed is planted: with every candidate (the first stage had only the
- *    flat ones, step 3), then with constraint 2 relaxed: first by a factor 2
+ *    retried when the front has stalled and its neighbourhood (its ends and their K nearest)
+ *    has changed; a retry looks only at the edges near the vertices touched since the previous
+ *    one (through the reverse K-nearest table), so its cost follows what changed, not the
+ *    number of edges set aside (scan lines that stall the front thousands of times stay
+ *    linear). When nothing else can progress and RelaxConstraints is on (added), the edges set
+ *    aside are retried in stages before a new seed is planted: with every candidate (the first
+ *    stage had only the flat ones, step 3), then with constraint 2 relaxed: first by a factor 2
  *    ([MinimumEdgeRatio / 2, 2 MaximumEdgeRatio]) -- anisotropic samplings such as the rings
  *    around the poles of a latitude-longitude sphere need it --, then without the lower bound,
  *    where constraint 1 measures the candidate's height against a distance to the edge of at

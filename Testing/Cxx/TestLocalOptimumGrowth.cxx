@@ -14,6 +14,10 @@
 // - a planar 20 x 20 grid (cocircular and collinear points everywhere): 722 triangles, one loop;
 // - a tilted plane scanned in lines of an integer lattice: no zero-area triangle, manifold,
 //   every point used;
+// - a plane scanned in lines 12.5 point spacings apart, tilted along the lines (z = x): the
+//   front stalls tens of thousands of times (7,493 seeds at c90bb02); manifold,
+//   oriented, no zero-area triangle, every point used or reported unused (the quadratic retry
+//   of the deferred edges took minutes here: the ctest timeout catches it);
 // - two disjoint spheres: two closed components (the front dies, a second seed is planted);
 // - random sphere and torus samples that once kept a sliver hole, gained a handle or left a
 //   point unused: closed, genus 0 / 1, every point used; on the spheres (and the 3000-point
@@ -436,6 +440,34 @@ bool TestLatticeLines()
   return true;
 }
 
+bool TestStallingScanLines()
+{
+  const int lines = 40, perLine = 1000;
+  std::vector<double> xyz;
+  for (int line = 0; line < lines; ++line)
+  {
+    for (int k = 0; k < perLine; ++k)
+    {
+      const double x = 0.08 * k;
+      xyz.insert(xyz.end(), { x, static_cast<double>(line), x });
+    }
+  }
+  vtkNew<vtkLocalOptimumGrowth> growth;
+  growth->SetInputData(pcstest::MakeCloud(xyz));
+  growth->Update();
+  const Quality q = Measure(growth->GetOutput());
+  PCS_CHECK(q.NonManifoldEdges == 0 && q.NonManifoldVertices == 0 && q.Orientation == 1.0,
+    "stalling scan lines: manifold and oriented");
+  PCS_CHECK(q.Degenerate == 0 && q.Duplicates == 0,
+    "stalling scan lines: " << q.Degenerate << " zero-area, " << q.Duplicates << " duplicates");
+  PCS_CHECK(q.UsedPoints + growth->GetNumberOfUnusedPoints() == lines * perLine,
+    "stalling scan lines: " << q.UsedPoints << " used, " << growth->GetNumberOfUnusedPoints()
+                            << " reported unused");
+  PCS_CHECK(q.Triangles > 0 && q.Triangles < 2 * lines * perLine,
+    "stalling scan lines: " << q.Triangles << " triangles");
+  return true;
+}
+
 bool TestTwoSpheres()
 {
   const double c1[3] = { 0, 0, 0 }, c2[3] = { 3, 0.5, 0 };
@@ -546,6 +578,7 @@ int TestLocalOptimumGrowth(int, char*[])
   ok = TestNarrowLoops() && ok;
   ok = TestPlanarGrid() && ok;
   ok = TestLatticeLines() && ok;
+  ok = TestStallingScanLines() && ok;
   ok = TestTwoSpheres() && ok;
   ok = TestRandomSamples() && ok;
   ok = TestDegenerate() && ok;

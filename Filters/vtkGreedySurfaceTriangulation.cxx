@@ -5,6 +5,7 @@
 #include "pcsGatherInput.h"
 #include "pcsHoleFilling.h"
 #include "pcsNearestNeighbors.h"
+#include "pcsOutliers.h"
 #include "pcsPointInsertion.h"
 #include "pcsPredicates.h"
 #include "pcsProjectedTests.h"
@@ -2799,7 +2800,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
 
   Reconstruction r;
   r.Self = this;
-  vtkIdType duplicates = 0, skipped = 0;
+  vtkIdType duplicates = 0, skipped = 0, outliers = 0;
   std::string steps;
   double ssrArea = 0.0, totalArea = 0.0, ssrUniformity = 0.0;
   vtkIdType ssrPoints = 0, ssrUniformityCount = 0;
@@ -2844,6 +2845,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
     pcs::AddFieldCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
     pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", duplicates);
     pcs::AddFieldCount(fd, "NumberOfSkippedPoints", skipped);
+    pcs::AddFieldCount(fd, "NumberOfOutliers", outliers);
     pcs::AddFieldValue(fd, "MeanSpacing", this->MeanSpacing);
     pcs::AddFieldValue(fd, "MedianUniformity", r.MedianUniformity);
     pcs::AddFieldCount(fd, "CrossingTestUsed", r.Normals.empty() ? 0 : 1);
@@ -2919,6 +2921,14 @@ int vtkGreedySurfaceTriangulation::RequestData(
         }
       }
     }
+  }
+  outliers = pcs::RemoveOutliers(
+    xyz.data(), order, this->OutlierFactor, [this](double) { return !this->GetAbortExecute(); });
+  if (outliers > 0)
+  {
+    vtkWarningMacro("Excluded " << outliers << " far outlier(s) (OutlierFactor "
+                                << this->OutlierFactor
+                                << "): point data Used = 0, Status 4, field data NumberOfOutliers.");
   }
   vtkSMPTools::Sort(order.begin(), order.end(), [&xyz](int32_t a, int32_t b) {
     const double* pa = &xyz[3 * static_cast<size_t>(a)];
@@ -3233,6 +3243,7 @@ void vtkGreedySurfaceTriangulation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfNeighbors: " << this->NumberOfNeighbors << "\n";
+  os << indent << "OutlierFactor: " << this->OutlierFactor << "\n";
   os << indent << "CrossingTest: " << this->CrossingTest << "\n";
   os << indent << "AutomaticCorrectFraction: " << this->AutomaticCorrectFraction << "\n";
   os << indent << "UniformityNeighbors: " << this->UniformityNeighbors << "\n";

@@ -167,8 +167,9 @@
  * the triangles (consistently oriented, an oriented 2-manifold with boundary), point data `Used` (1
  * for triangle vertices), `Status` (0: correct after step 2, 1: boundary of a correct region, 2:
  * lost and left unused, 3: lost and used by hole filling or lost point insertion, 4: not
- * triangulated -- an exact duplicate of another point or non-finite; every point when the cloud has
- * fewer than 3 distinct finite points; 5: added by the fill refinement), `LocalUniformity` (m);
+ * triangulated -- an exact duplicate of another point, non-finite or a far outlier; every point
+ * when the cloud has fewer than 3 distinct finite points; 5: added by the fill refinement),
+ * `LocalUniformity` (m);
  * cell data `Stage` (1: step 1 triangle kept by step 2, 6: hole filling, 7: made by a step 7 swap,
  * 8: lost point insertion and its ears); field data `NumberOfTriangles`, `NumberOfLostPoints`
  * (after step 2), `NumberOfIslands`, `NumberOfHoles` (after step 4), `NumberOfBridges`,
@@ -176,7 +177,7 @@
  * `NumberOfInsertedPoints`, `NumberOfSmallLoopsClosed`, `NumberOfSmallLoopsFilledByDihedral`,
  * `NumberOfEndsCapped`, `NumberOfAddedPoints`,
  * `NumberOfUnusedPoints`,
- * `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`, `MeanSpacing`, and the columns of the paper's
+ * `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`, `NumberOfOutliers`, `MeanSpacing`, and the columns of the paper's
  * Table 1: `NumberOfPoints` (input points), `AverageUniformityInSSR` (mean m over the points of the
  * well-sampled regions, i.e. correct or boundary after step 2), `SSRAreaPercent` (area of the step
  * 1 triangles kept / output area), `SSRPointsPercent`, `StepsUsed` (a string such as "1, 2, 6"),
@@ -255,6 +256,19 @@ public:
    */
   vtkSetClampMacro(NumberOfNeighbors, int, 3, 64);
   vtkGetMacro(NumberOfNeighbors, int);
+  ///@}
+
+  ///@{
+  /**
+   * Far outliers are left out before the neighbour search and reported (point data Used = 0,
+   * Status 4, field data NumberOfOutliers, counted in NumberOfUnusedPoints, a warning): the rule
+   * of vtkPerimeterPeelSurface::OutlierFactor (pcs::FindOutliers), same meaning: a point whose
+   * reach (mean distance to its 8 nearest points) is over 4 times the cloud's median reach and
+   * over OutlierFactor times the median reach of its 8 nearest points that are not. Default 8.0;
+   * range [0, 1000]; 0: off.
+   */
+  vtkSetClampMacro(OutlierFactor, double, 0.0, 1000.0);
+  vtkGetMacro(OutlierFactor, double);
   ///@}
 
   /// Values of CrossingTest.
@@ -493,6 +507,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int NumberOfNeighbors = 12;
+  double OutlierFactor = 8.0;
   int CrossingTest = CROSSING_TEST_AUTOMATIC;
   double AutomaticCorrectFraction = 0.9;
   int UniformityNeighbors = 6;

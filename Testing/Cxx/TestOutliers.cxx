@@ -1,5 +1,6 @@
-// Far outliers (OutlierFactor, the shared rule of pcsOutliers) in vtkPerimeterPeelSurface and
-// vtkLocalOptimumGrowth, on clouds whose outliers are known by construction:
+// Far outliers (OutlierFactor, the shared rule of pcsOutliers) in vtkPerimeterPeelSurface,
+// vtkLocalOptimumGrowth and vtkGreedySurfaceTriangulation, on clouds whose outliers are known by
+// construction:
 // - 3,000 random points of the unit sphere plus 3 % outliers uniform in the box [-3, 3]^3 (three
 //   times the sphere's bounding box), none within 0.8 of the sphere (25 mean spacings; the rule
 //   leaves points within about 8 reaches, some 20 spacings, alone):
@@ -10,6 +11,7 @@
 //   neighbours (the rule's own search instead of the growth's table) reports the same outliers;
 // - clean clouds flag nothing: a torus sampled 25 times more densely on one side, and a sphere
 //   with Gaussian noise of 0.4 mean spacings per coordinate.
+#include "vtkGreedySurfaceTriangulation.h"
 #include "vtkLocalOptimumGrowth.h"
 #include "vtkPerimeterPeelSurface.h"
 #include "vtkReconstructionQuality.h"
@@ -174,6 +176,7 @@ int TestOutliers(int, char*[])
 {
   bool ok = CheckExcluded<vtkPerimeterPeelSurface>("peel", 3);
   ok = CheckExcluded<vtkLocalOptimumGrowth>("local optimum growth", 4) && ok;
+  ok = CheckExcluded<vtkGreedySurfaceTriangulation>("greedy", 5) && ok;
   ok = CheckFewNeighbors() && ok;
   ok = CheckCleanClouds() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;

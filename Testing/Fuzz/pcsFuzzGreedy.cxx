@@ -90,7 +90,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
       notTriangulated ||
     (out->GetNumberOfPolys() > 0 &&
       pcsfuzz::Field(name, out, "NumberOfDuplicatePoints") +
-          pcsfuzz::Field(name, out, "NumberOfSkippedPoints") !=
+          pcsfuzz::Field(name, out, "NumberOfSkippedPoints") +
+          pcsfuzz::Field(name, out, "NumberOfOutliers") !=
         notTriangulated) ||
     pcsfuzz::Field(name, out, "NumberOfSkippedPoints") < nonFinite)
   {

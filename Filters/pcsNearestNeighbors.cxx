@@ -28,8 +28,9 @@ inline bool IsFinite(const double* q)
   return std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2]);
 }
 
-// Whether the neighbours `row` (k ids, -1 for none) of point p spread along one direction only
-// (see AddOffLineNeighbors); if so, that direction (unit) and the distance to the farthest one.
+// Whether the nearest half of the neighbours `row` (k ids, nearest first, -1 for none) of point
+// p spread along one direction only, none off that line (see AddOffLineNeighbors); if so, that
+// direction (unit) and the distance to the farthest of all k.
 bool SpreadsAlongCurve(const double* xyz,
   const double* p,
   const int32_t* row,
@@ -45,8 +46,16 @@ bool SpreadsAlongCurve(const double* xyz,
   // One pass: sums of the offsets d = q - p and of their products (xx, yy, zz, xy, xz, yz).
   double sum[3] = { 0.0, 0.0, 0.0 }, products[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
   double reach2 = 0.0;
-  int count = 0;
   for (int j = 0; j < k; ++j)
+  {
+    if (row[j] >= 0)
+    {
+      reach2 = std::max(reach2, Distance2(p, xyz + 3 * static_cast<size_t>(row[j])));
+    }
+  }
+  const int nearest = std::max(2, k / 2);
+  int count = 0;
+  for (int j = 0; j < nearest && j < k; ++j)
   {
     if (row[j] < 0)
     {
@@ -66,7 +75,6 @@ bool SpreadsAlongCurve(const double* xyz,
     products[3] += d[0] * d[1];
     products[4] += d[0] * d[2];
     products[5] += d[1] * d[2];
-    reach2 = std::max(reach2, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     ++count;
   }
   if (count < 2)
@@ -104,6 +112,21 @@ bool SpreadsAlongCurve(const double* xyz,
   for (int c = 0; c < 3; ++c)
   {
     direction[c] = vectors[c][0];
+  }
+  // Confined to a curve through p: none of them off the line p + t direction (see
+  // AddOffLineNeighbors for "off").
+  for (int j = 0; j < nearest && j < k; ++j)
+  {
+    if (row[j] >= 0)
+    {
+      const double* q = xyz + 3 * static_cast<size_t>(row[j]);
+      const double d[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+      const double along = vtkMath::Dot(d, direction);
+      if (vtkMath::Dot(d, d) - along * along > along * along)
+      {
+        return false;
+      }
+    }
   }
   return reach > 0.0;
 }

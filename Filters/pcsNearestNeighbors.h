@@ -40,27 +40,30 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
 /// them sees a curve, not a surface. This function finds those points in a table made by
 /// FindNearestNeighbors (same `locator`, `xyz`, `n`, `k`) and gives them neighbours off their line.
 ///
-/// A point's neighbourhood is confined to a curve when the spread of its neighbours is
-/// essentially one-dimensional: with lambda1 >= lambda2 >= lambda3 the eigenvalues of their
-/// covariance, (lambda1 lambda2 + lambda1 lambda3 + lambda2 lambda3) / (lambda1 + lambda2 +
+/// A point's neighbourhood is confined to a curve when its max(2, k / 2) nearest neighbours
+/// spread along one direction e only: with lambda1 >= lambda2 >= lambda3 the eigenvalues of
+/// their covariance, (lambda1 lambda2 + lambda1 lambda3 + lambda2 lambda3) / (lambda1 + lambda2 +
 /// lambda3)^2 <= `linearity` (about lambda2 / lambda1 when lambda3 is small; 0 on a straight
-/// line). Default 0.05: a spread across the line below 0.22 times the spread along it, which a
-/// circular arc reaches when the neighbours span 100 degrees of it. Ordinary surface samples stay
-/// far above it (CGAL's mesh vertex sets, k = 20: at least 0.076, the camel; most points above
-/// 0.2), as does any sampling whose k-ball reaches the next line.
+/// line; default 0.05: a spread across the line below 0.22 times the spread along it, which a
+/// circular arc reaches when the neighbours span 100 degrees of it), and none of them is off the
+/// line p + t e (below). Half of the k: lines whose spacing across is only 5 to 10 times that
+/// along them have the next line among the k nearest but not among the k / 2 nearest, and a
+/// filter's candidates there are still nearly all on the line. Ordinary surface samples rarely
+/// meet it: over CGAL's bunny00, armadillo, camel, elephant, knot2 and fandisk_large vertices
+/// (k = 20) one point of the camel; a few points of a random sample, where 10 points happen to
+/// lie along a curve.
 ///
-/// For such a point p, with e the principal direction of its neighbours and dk the distance to
-/// its k-th neighbour, a point q within `radiusFactor` dk of p (default 4: lines up to about 4 k
-/// / 2 spacings apart) is off the line when its distance to the line p + t e exceeds its
-/// distance along it (|(q - p) x e| > |(q - p) . e|: within 45 degrees of the plane normal to
-/// e, so the line's own points, even bent, are not taken). The off-line points are split in two
-/// sides by the sign of their component normal to e along that of the nearest one; the nearest
-/// max(1, k / 4) of each side (fewer when a side has fewer, none on the last line of a scan)
-/// replace the farthest entries of the row that are not among them, and the row is sorted again,
-/// nearest first, ties by the smaller id. Rows of fewer than 2 neighbours, of coincident
-/// neighbours only, or of a non-finite point are left alone. The result does not depend on the
-/// number of threads. Returns the number of rows changed; `progress` as for FindNearestNeighbors
-/// (returns -1 when it stops the work, the table then partly changed).
+/// For such a point p, with dk the distance to its k-th neighbour, a point q within
+/// `radiusFactor` dk of p (default 4: lines up to about 4 k / 2 spacings apart) is off the line
+/// when its distance to the line p + t e exceeds its distance along it (|(q - p) x e| > |(q - p) .
+/// e|: within 45 degrees of the plane normal to e, so the line's own points, even bent, are not
+/// taken). The off-line points are split in two sides by the sign of their component normal to e
+/// along that of the nearest one; the nearest max(1, k / 4) of each side (fewer when a side has
+/// fewer, none on the last line of a scan) replace the farthest entries of the row that are not
+/// among them, and the row is sorted again, nearest first, ties by the smaller id. Rows of fewer
+/// than 2 neighbours, of coincident neighbours only, or of a non-finite point are left alone. The
+/// result does not depend on the number of threads. Returns the number of rows changed; `progress`
+/// as for FindNearestNeighbors (returns -1 when it stops the work, the table then partly changed).
 ///
 /// `stretch` (optional) gets 3 values per point: zero, except at the points given off-line
 /// neighbours, where it is sqrt(A^2 - 1) e with A = (distance to the nearest off-line point) /

@@ -22,20 +22,23 @@
  *    unchanged (0.35 s); the triangles are the same. The shared search walks the locator's
  *    buckets itself (see pcsNearestNeighbors.h): on 2 x 10^4 sphere points the filter runs 903
  *    instead of 1166 million instructions (callgrind), the neighbour search 218 instead of 481.
- *    Added, scan-line sampling (laser-line and LiDAR scans: points 10-20 times denser along lines
- *    than across): when the K nearest of a point all lie on its own line (their spread is
- *    one-dimensional), its farthest neighbours are replaced by the nearest points of the lines on
- *    either side, within 4 times its K-th distance (pcs::AddOffLineNeighbors, shared with the
- *    other filters, see pcsNearestNeighbors.h; it does not trigger on ordinary surface samples:
- *    the triangles of CGAL's mesh vertex sets are the same). At such points constraint 2 (below)
- *    measures lengths in the metric of the sampling: the component along the line is stretched
- *    by the ratio A of the distance to the nearest point off the line to the distance to the
- *    nearest neighbour (averaged over the edge's two ends), so that a triangle between two lines,
- *    whose edge along its line is A times shorter than the others, meets the ratios [1/3, 3].
- *    Measured (Benchmarks/results/local_optimum.md): 16 lines of 1250 points 12.5 times denser
- *    along than across on a wavy sheet, 6656 one-triangle components (three points of one line
- *    each) in 10.2 s CPU before, one disk with one boundary loop over every point in 0.72 s
- *    after; a sphere on 20 latitude circles of 800 sin(theta) points, closed, genus 0.
+ *    Added, scan-line sampling (laser-line and LiDAR scans: points 5-20 times denser along lines
+ *    than across): when the K/2 nearest of a point all lie on its own line (their spread is
+ *    one-dimensional, none off the line), its farthest neighbours are replaced by the nearest
+ *    points of the lines on either side, within 4 times its K-th distance (pcs::AddOffLineNeighbors,
+ *    shared with the other filters, see pcsNearestNeighbors.h). At such points constraint 2
+ *    (below) measures lengths in the metric of the sampling: the component along the line is
+ *    stretched by the ratio A of the distance to the nearest point off the line to the distance to
+ *    the nearest neighbour (averaged over the edge's two ends), so that a triangle between two
+ *    lines, whose edge along its line is A times shorter than the others, meets the ratios
+ *    [1/3, 3]. Elsewhere lengths are Euclidean, bit for bit. Measured (Benchmarks/results/
+ *    local_optimum.md): 16 lines of 1250 points 12.5 times denser along than across on a wavy
+ *    sheet, 6656 one-triangle components (three points of one line each) in 10.2 s CPU before, the
+ *    strip triangulation (37,470 triangles between adjacent lines, one boundary loop, every
+ *    point) in 0.73 s after; spheres on 40 latitude circles of 500 sin(theta) points (6.2x) and
+ *    20 circles of 800 sin(theta) (20x): 149 and 3342 components before, closed, genus 0, after.
+ *    On CGAL's mesh vertex sets the triangles are the same except on the camel (one point
+ *    triggers: 31 of 19,438 triangles differ, every quality figure the same).
  * 2. Seed triangle (step 1 of the paper): P1 the point of largest x (ties: largest y, then z),
  *    P2 its nearest neighbour, P3 the point of the K-neighbourhoods of P1 and P2 minimizing
  *    |P1P3| + |P2P3| among those meeting constraints 2 and 3; when no P3 exists the next

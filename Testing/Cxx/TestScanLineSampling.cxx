@@ -5,11 +5,14 @@
 // - vtkLocalOptimumGrowth on a wavy sheet z = 2 sin(x / 7) cos(y / 5) sampled on 10 lines
 //   y = 0..9, a point every 0.08 along x (500 per line): one manifold, oriented component with one
 //   boundary loop (a disk: Euler characteristic 1), every point used, and every triangle between
-//   two adjacent lines or on one line (no triangle skips a line);
+//   two adjacent lines (none skips a line, none on one line: 2 x 499 triangles per strip);
 // - vtkLocalOptimumGrowth on a unit sphere sampled on 20 latitude circles (theta from 0.05 to
-//   pi - 0.05, 0.157 apart) of 800 sin(theta) + 3 points each (0.0079 apart, 20 times closer):
-//   closed, manifold, oriented, genus 0, 2V - 4 triangles, every point used.
-// Before pcs::AddOffLineNeighbors every triangle of both was alone (three points of one line).
+//   pi - 0.05, 0.157 apart) of 800 sin(theta) + 3 points each (0.0079 apart, 20 times closer),
+//   and on 40 circles (0.078 apart) of 500 sin(theta) + 3 points (0.0126 apart, 6.2 times closer:
+//   the K nearest reach the next circle, the K / 2 nearest do not): closed, manifold, oriented,
+//   genus 0, 2V - 4 triangles, every point used.
+// Before pcs::AddOffLineNeighbors every triangle of the sheet and of the first sphere was alone
+// (three points of one line); the second sphere had 149 components.
 #include "vtkLocalOptimumGrowth.h"
 #include "vtkReconstructionQuality.h"
 
@@ -86,17 +89,21 @@ bool TestWavySheet()
     skipping += highest - lowest > 1 ? 1 : 0;
   }
   PCS_CHECK(skipping == 0, "sheet: " << skipping << " triangles span more than two lines");
+  // Every triangle between two adjacent lines, each with one edge on a line: 2 (500 - 1) per
+  // strip between two lines (a triangle of three points of one line would add one).
+  PCS_CHECK(Field(mesh, "NumberOfTriangles") == 2 * (perLine - 1) * (lines - 1),
+    "sheet: " << Field(mesh, "NumberOfTriangles") << " triangles, expected "
+              << 2 * (perLine - 1) * (lines - 1));
   return true;
 }
 
-bool TestLatitudeSphere()
+bool TestLatitudeSphere(int circles, int perCircle)
 {
   std::vector<double> xyz;
-  const int circles = 20;
   for (int i = 0; i < circles; ++i)
   {
     const double theta = 0.05 + (vtkMath::Pi() - 0.1) * i / (circles - 1);
-    const int count = static_cast<int>(800 * std::sin(theta)) + 3;
+    const int count = static_cast<int>(perCircle * std::sin(theta)) + 3;
     for (int j = 0; j < count; ++j)
     {
       const double phi = 2.0 * vtkMath::Pi() * j / count;
@@ -114,8 +121,9 @@ bool TestLatitudeSphere()
     return false;
   }
   PCS_CHECK(Field(mesh, "NumberOfBoundaryEdges") == 0 && Field(mesh, "Genus") == 0,
-    "latitude sphere: " << Field(mesh, "NumberOfBoundaryEdges") << " boundary edges, genus "
-                        << Field(mesh, "Genus") << ", expected closed genus 0");
+    "latitude sphere " << circles << ": " << Field(mesh, "NumberOfBoundaryEdges")
+                       << " boundary edges, genus " << Field(mesh, "Genus")
+                       << ", expected closed genus 0");
   PCS_CHECK(Field(mesh, "NumberOfTriangles") == 2 * n - 4,
     "latitude sphere: " << Field(mesh, "NumberOfTriangles") << " triangles, expected "
                         << 2 * n - 4);
@@ -128,6 +136,7 @@ bool TestLatitudeSphere()
 int TestScanLineSampling(int, char*[])
 {
   bool ok = TestWavySheet();
-  ok = TestLatitudeSphere() && ok;
+  ok = TestLatitudeSphere(20, 800) && ok;
+  ok = TestLatitudeSphere(40, 500) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -5,6 +5,7 @@
 #include "pcsGatherInput.h"
 #include "pcsHoleFilling.h"
 #include "pcsNearestNeighbors.h"
+#include "pcsNormalEstimation.h"
 #include "pcsOutliers.h"
 #include "pcsPointInsertion.h"
 #include "pcsPredicates.h"
@@ -24,7 +25,6 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPCANormalEstimation.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -186,7 +186,7 @@ public:
 
   void FindNeighbors(double begin, double end);
   void ComputeUniformity();
-  bool ComputeNormals(bool local);
+  void ComputeNormals(bool local);
   void Step1GreedyEdges(double begin, double end);
   void Step2Umbrella(double begin, double end);
   void Step3Status();
@@ -234,7 +234,7 @@ void Reconstruction::FindNeighbors(double begin, double end)
   this->Cloud->SetPoints(points);
   this->Locator = vtkSmartPointer<vtkStaticPointLocator>::New();
   // A surface sample fills a thin layer of the bins of its box: about 4 bins per point keep
-  // the neighbour queries (ours, vtkPCANormalEstimation's, the bridge and hole searches) short.
+  // the neighbour queries (ours, the bridge and hole searches) short.
   double bounds[6];
   points->GetBounds(bounds);
   pcs::SetSurfaceSampleDivisions(this->Locator, bounds, this->N);
@@ -309,11 +309,14 @@ void Reconstruction::ComputeUniformity()
   });
 }
 
-// Unoriented normals of the points (vtkPCANormalEstimation over the same neighbours), for the
-// crossing test. With `nearLost` (automatic mode, after the first pass with the paper's test),
-// the test will examine only the edges at the points that pass lost and at their nearest
-// neighbours (CrossingPoints): elsewhere the paper's test alone gave correct umbrellas.
-bool Reconstruction::ComputeNormals(bool nearLost)
+// Unoriented normals of the points, for the crossing test: the planes of the shared estimator
+// (pcs::EstimatePlaneNormals) over each point and its K nearest points, from the neighbour table
+// already made (vtkPCANormalEstimation with SampleSize K + 1 searched the same neighbours again,
+// point by point: about half of the filter's CPU time on noisy clouds). With `nearLost`
+// (automatic mode, after the first pass with the paper's test), the test will examine only the
+// edges at the points that pass lost and at their nearest neighbours (CrossingPoints):
+// elsewhere the paper's test alone gave correct umbrellas.
+void Reconstruction::ComputeNormals(bool nearLost)
 {
   this->CrossingPoints.clear();
   if (nearLost)
@@ -333,23 +336,9 @@ bool Reconstruction::ComputeNormals(bool nearLost)
       }
     }
   }
-  vtkNew<vtkPCANormalEstimation> pca;
-  pca->SetInputData(this->Cloud);
-  pca->SetLocator(this->Locator);
-  pca->SetSampleSize(this->K + 1);
-  pca->SetNormalOrientationToAsComputed();
-  pca->Update();
-  vtkDataArray* normals = pca->GetOutput()->GetPointData()->GetNormals();
-  if (!normals || normals->GetNumberOfTuples() != this->N)
-  {
-    return false;
-  }
-  this->Normals.resize(3 * static_cast<size_t>(this->N));
-  for (int32_t i = 0; i < this->N; ++i)
-  {
-    normals->GetTuple(i, &this->Normals[3 * static_cast<size_t>(i)]);
-  }
-  return true;
+  std::vector<double> variation; // not used by the crossing test
+  pcs::EstimatePlaneNormals(
+    this->X.data(), this->N, this->Neighbors, this->K, this->Normals, variation);
 }
 
 //------------------------------------------------------------------------------------------------
@@ -3033,9 +3022,9 @@ int vtkGreedySurfaceTriangulation::RequestData(
   for (int pass = 0; pass < 2; ++pass)
   {
     const bool crossing = this->CrossingTest == CROSSING_TEST_ON || pass == 1;
-    if (crossing && !r.ComputeNormals(pass == 1))
+    if (crossing)
     {
-      vtkWarningMacro("No normals could be estimated: step 1 uses the topological test only.");
+      r.ComputeNormals(pass == 1);
     }
     if (!r.Progress(pass == 0 ? 0.3 : 0.45))
     {

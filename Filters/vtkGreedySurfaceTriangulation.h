@@ -27,8 +27,10 @@
  *   triangles are dropped. Two guards are added. An edge that would close an exactly degenerate
  *   triangle (collinear points, exact predicates) is refused. And, with the CrossingTest, an
  *   edge is refused when it crosses an accepted edge in the tangent plane of
- *   its end points (the mean of their unoriented normals from vtkPCANormalEstimation over the
- *   same neighbours; exact 2D segment tests on the projected points): the 2D greedy
+ *   its end points (the mean of their unoriented normals, the least-squares planes of each
+ *   point and its NumberOfNeighbors nearest points as in vtkPCANormalEstimation, computed by
+ *   the shared estimator from the same neighbour table; exact 2D segment tests on the projected
+ *   points): the 2D greedy
  *   triangulation's compatibility rule, applied locally. The paper's test alone is meant for
  *   scanner-regular clouds (its Table 1: m about 2); on random samples (m about 5) it leaves
  *   only about 40 % of the points correctly connected after step 2, against 99 % with the

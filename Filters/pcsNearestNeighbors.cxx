@@ -1,5 +1,7 @@
 #include "pcsNearestNeighbors.h"
 
+#include "pcsNormalEstimation.h"
+
 #include "vtkDataSet.h"
 #include "vtkIdList.h"
 #include "vtkMath.h"
@@ -43,8 +45,6 @@ bool SpreadsAlongCurve(const double* xyz,
   {
     return false;
   }
-  // One pass: sums of the offsets d = q - p and of their products (xx, yy, zz, xy, xz, yz).
-  double sum[3] = { 0.0, 0.0, 0.0 }, products[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
   double reach2 = 0.0;
   for (int j = 0; j < k; ++j)
   {
@@ -53,43 +53,14 @@ bool SpreadsAlongCurve(const double* xyz,
       reach2 = std::max(reach2, Distance2(p, xyz + 3 * static_cast<size_t>(row[j])));
     }
   }
+  // The covariance of the offsets from p to its nearest half (pcs::OffsetCovariance).
   const int nearest = std::max(2, k / 2);
-  int count = 0;
-  for (int j = 0; j < nearest && j < k; ++j)
-  {
-    if (row[j] < 0)
-    {
-      continue;
-    }
-    const double* q = xyz + 3 * static_cast<size_t>(row[j]);
-    const double d[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
-    if (!IsFinite(d))
-    {
-      continue;
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      sum[c] += d[c];
-      products[c] += d[c] * d[c];
-    }
-    products[3] += d[0] * d[1];
-    products[4] += d[0] * d[2];
-    products[5] += d[1] * d[2];
-    ++count;
-  }
-  if (count < 2)
+  double covariance[3][3];
+  if (OffsetCovariance(xyz, p, row, std::min(nearest, k), false, covariance) < 2.0)
   {
     return false;
   }
   reach = std::sqrt(reach2);
-  const double m[3] = { sum[0] / count, sum[1] / count, sum[2] / count };
-  double covariance[3][3];
-  covariance[0][0] = products[0] / count - m[0] * m[0];
-  covariance[1][1] = products[1] / count - m[1] * m[1];
-  covariance[2][2] = products[2] / count - m[2] * m[2];
-  covariance[0][1] = covariance[1][0] = products[3] / count - m[0] * m[1];
-  covariance[0][2] = covariance[2][0] = products[4] / count - m[0] * m[2];
-  covariance[1][2] = covariance[2][1] = products[5] / count - m[1] * m[2];
   // trace^2 - |C|_F^2 = 2 (l1 l2 + l1 l3 + l2 l3): no eigenvalue needed for the test.
   const double trace = covariance[0][0] + covariance[1][1] + covariance[2][2];
   double frobenius2 = 0.0;

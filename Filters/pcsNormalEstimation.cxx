@@ -129,7 +129,49 @@ void SmallestEigenvector(const double a[3][3], double values[3], double vector[3
   }
 }
 
-// The covariance of a neighbourhood is summed in one pass over the offsets from its point.
+double OffsetCovariance(const double* xyz, const double* p, const int32_t* row, int count,
+  bool withPoint, double covariance[3][3])
+{
+  double s0 = withPoint ? 1.0 : 0.0;
+  double s1[3] = { 0.0, 0.0, 0.0 };
+  double s2[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }; // xx yy zz xy xz yz
+  for (int j = 0; j < count; ++j)
+  {
+    if (row[j] < 0)
+    {
+      continue;
+    }
+    const double* q = xyz + 3 * static_cast<size_t>(row[j]);
+    const double d[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+    if (!(std::isfinite(d[0]) && std::isfinite(d[1]) && std::isfinite(d[2])))
+    {
+      continue;
+    }
+    s0 += 1.0;
+    s1[0] += d[0];
+    s1[1] += d[1];
+    s1[2] += d[2];
+    s2[0] += d[0] * d[0];
+    s2[1] += d[1] * d[1];
+    s2[2] += d[2] * d[2];
+    s2[3] += d[0] * d[1];
+    s2[4] += d[0] * d[2];
+    s2[5] += d[1] * d[2];
+  }
+  if (s0 > 0.0)
+  {
+    const double m[3] = { s1[0] / s0, s1[1] / s0, s1[2] / s0 };
+    covariance[0][0] = s2[0] / s0 - m[0] * m[0];
+    covariance[1][1] = s2[1] / s0 - m[1] * m[1];
+    covariance[2][2] = s2[2] / s0 - m[2] * m[2];
+    covariance[0][1] = covariance[1][0] = s2[3] / s0 - m[0] * m[1];
+    covariance[0][2] = covariance[2][0] = s2[4] / s0 - m[0] * m[2];
+    covariance[1][2] = covariance[2][1] = s2[5] / s0 - m[1] * m[2];
+  }
+  return s0;
+}
+
+// The covariance of a neighbourhood and the point (OffsetCovariance).
 void EstimatePlaneNormals(const double* pts,
   Id count,
   const std::vector<int32_t>& table,
@@ -147,36 +189,8 @@ void EstimatePlaneNormals(const double* pts,
       {
         const double* p = &pts[3 * static_cast<size_t>(i)];
         const int32_t* row = table.data() + static_cast<size_t>(i) * others;
-        // One pass of sums over the offsets d from p: the covariance is S2 / S0 - m m^T with
-        // m = S1 / S0.
-        double s0 = 1.0; // the point itself, offset 0
-        double s1[3] = { 0.0, 0.0, 0.0 };
-        double s2[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }; // xx yy zz xy xz yz
-        for (int j = 0; j < others; ++j)
-        {
-          if (row[j] < 0)
-          {
-            continue;
-          }
-          const double* q = &pts[3 * static_cast<size_t>(row[j])];
-          const double d[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
-          s0 += 1.0;
-          s1[0] += d[0];
-          s1[1] += d[1];
-          s1[2] += d[2];
-          s2[0] += d[0] * d[0];
-          s2[1] += d[1] * d[1];
-          s2[2] += d[2] * d[2];
-          s2[3] += d[0] * d[1];
-          s2[4] += d[0] * d[2];
-          s2[5] += d[1] * d[2];
-        }
-        const double m[3] = { s1[0] / s0, s1[1] / s0, s1[2] / s0 };
-        const double covariance[3][3] = {
-          { s2[0] / s0 - m[0] * m[0], s2[3] / s0 - m[0] * m[1], s2[4] / s0 - m[0] * m[2] },
-          { s2[3] / s0 - m[0] * m[1], s2[1] / s0 - m[1] * m[1], s2[5] / s0 - m[1] * m[2] },
-          { s2[4] / s0 - m[0] * m[2], s2[5] / s0 - m[1] * m[2], s2[2] / s0 - m[2] * m[2] }
-        };
+        double covariance[3][3];
+        OffsetCovariance(pts, p, row, others, true, covariance);
         double values[3];
         SmallestEigenvector(covariance, values, &normals[3 * static_cast<size_t>(i)]);
         const double sum = values[0] + values[1] + values[2];

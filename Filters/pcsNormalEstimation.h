@@ -20,6 +20,14 @@ namespace pcs
 /// falls back to vtkMath::Jacobi. Several times cheaper than Jacobi's iterations.
 void SmallestEigenvector(const double a[3][3], double values[3], double vector[3]);
 
+/// Covariance of the offsets q - p from the point `p` to its neighbours `row` (`count` ids into
+/// `xyz`, packed x, y, z; -1 for none; an offset with a non-finite coordinate is skipped), with
+/// p itself as one more offset 0 when `withPoint` is true: C = S2 / s0 - m m^T with m = S1 / s0,
+/// S1 and S2 the sums of the offsets and of their products, summed in one pass. Returns s0, the
+/// number of offsets used (C is left unset when it is 0).
+double OffsetCovariance(const double* xyz, const double* p, const int32_t* row, int count,
+  bool withPoint, double covariance[3][3]);
+
 /// Unoriented unit normal of each of the `n` points of `xyz` (packed x, y, z): the eigenvector
 /// of the smallest eigenvalue of the covariance of its neighbourhood, the point and its `k`
 /// nearest points (`neighbors`, n * k ids as made by FindNearestNeighbors, -1 for none): Hoppe

@@ -1831,6 +1831,18 @@ int vtkReconstructionQuality::RequestData(
                                   "reference.");
   }
   const bool referenceIsSurface = !referenceCells.Triangles.empty();
+  if (referenceCells.NonFinitePoints > 0)
+  {
+    // As on the mesh side: such points are neither samples nor targets.
+    vtkWarningMacro(<< referenceCells.NonFinitePoints
+                    << " reference point(s) have NaN or infinite coordinates: they are left out "
+                       "of the distances"
+                    << (referenceCells.NonFiniteTriangles > 0 ? ", with the " : ".")
+                    << (referenceCells.NonFiniteTriangles > 0
+                           ? std::to_string(referenceCells.NonFiniteTriangles) +
+                             " reference triangle(s) on them."
+                           : std::string()));
+  }
   vtkPoints* referencePoints = reference->GetPoints();
   const vtkIdType numberOfReferencePoints = reference->GetNumberOfPoints();
 
@@ -1883,8 +1895,16 @@ int vtkReconstructionQuality::RequestData(
   }
   else
   {
-    referenceSamples.Vertices.resize(numberOfReferencePoints);
-    std::iota(referenceSamples.Vertices.begin(), referenceSamples.Vertices.end(), vtkIdType(0));
+    referenceSamples.Vertices.reserve(numberOfReferencePoints);
+    for (vtkIdType p = 0; p < numberOfReferencePoints; ++p)
+    {
+      double x[3];
+      referencePoints->GetPoint(p, x);
+      if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]))
+      {
+        referenceSamples.Vertices.push_back(p);
+      }
+    }
   }
 
   DistanceTarget referenceTarget, meshTarget;

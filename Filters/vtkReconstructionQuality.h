@@ -57,8 +57,9 @@
  *
  * Distances (input port 1 connected and ComputeDistances on). The reference is a surface when it
  * has triangle cells (VTK_TRIANGLE or 3-point polygons), otherwise a cloud (all its points).
- * Each side is sampled deterministically: its vertices (for the mesh its used points, for a
- * reference surface the points of its triangles, for a cloud all its points) plus
+ * Points with a NaN or infinite coordinate are left out on both sides (with their triangles),
+ * with a warning. Each side is sampled deterministically: its vertices (for the mesh its used
+ * points, for a reference surface the points of its triangles, for a cloud all its points) plus
  * SamplesPerTriangle points in every triangle, the first the centroid, the others the R2
  * low-discrepancy sequence (Roberts, 2018) folded into the triangle. The distance from a sample
  * to a surface is the distance to the closest of its triangles of non-zero area, as

@@ -6,6 +6,7 @@
 #include "pcsHoleFilling.h"
 #include "pcsNearestNeighbors.h"
 #include "pcsOutliers.h"
+#include "pcsPointInsertion.h"
 #include "pcsPredicates.h"
 #include "pcsProjectedTests.h"
 #include "pcsSpatialSort.h"
@@ -1730,188 +1731,29 @@ void Grower::FillHoles()
 
 // A free point that the growth left under a triangle (it lies within the triangle's projection
 // onto its plane, typically very close to an edge, where the triangle across that edge could
-// only have been a needle) is inserted by splitting: the triangle into three, or, when the point
-// is close to an edge shared with another triangle, the two triangles into four. Points farther
-// from the triangle's plane than its longest edge are not on the surface and stay unused.
+// only have been a needle) is inserted by the shared kernel (pcs::InsertFreePoint): the nearest
+// triangle among those at its K nearest neighbours is split into three, or, when the point is
+// close to (or exactly on) an edge, that edge is split; a point beside a boundary edge gets the
+// triangle that edge lacks. Points farther from the triangle than its longest edge are not on
+// the surface and stay unused. The new triangles (and any the kernel had to put back) are
+// registered like grown ones.
 bool Grower::InsertOrphan(Id q)
 {
-  // The nearest triangle of the neighbourhood: its plane's distance when q projects inside it
-  // (decided exactly on the projection), else the distance to its nearest edge.
-  int64_t best = -1;
-  int bestEdge = -1;
-  bool bestInside = false;
-  double bestDistance = std::numeric_limits<double>::infinity();
-  std::vector<int64_t> seen;
-  int64_t around[64];
-  const Id* nb = this->Neighbors(q);
-  const double* x = this->P3(q);
-  for (int j = 0; j < this->K && nb[j] >= 0; ++j)
+  pcs::PointInsertionResult result;
+  const bool inserted =
+    pcs::InsertFreePoint(this->Mesh, this->X, q, this->Neighbors(q), this->K, true, result);
+  for (const auto& restored : result.Restored)
   {
-    const int count = std::min(this->Mesh.GetVertexTriangles(nb[j], around, 64), 64);
-    for (int i = 0; i < count; ++i)
-    {
-      const int64_t t = around[i];
-      if (std::find(seen.begin(), seen.end(), t) != seen.end())
-      {
-        continue;
-      }
-      seen.push_back(t);
-      const int32_t* v = this->Mesh.GetTriangle(t);
-      double normal[3], u[3];
-      if (!UnitNormal(this->P3(v[0]), this->P3(v[1]), this->P3(v[2]), normal))
-      {
-        continue;
-      }
-      Sub(this->P3(v[1]), this->P3(v[0]), u);
-      this->SetFrame(this->P3(v[0]), u, normal);
-      const double* pq = this->P2(q);
-      int outside = -1; // an edge q is beyond
-      for (int e = 0; e < 3 && outside < 0; ++e)
-      {
-        if (P::Orient2D(this->P2(v[e]), this->P2(v[(e + 1) % 3]), pq) <= 0)
-        {
-          outside = e;
-        }
-      }
-      double distance = std::fabs(this->Height(q));
-      int edge = -1;
-      if (outside >= 0)
-      {
-        distance = std::numeric_limits<double>::infinity();
-        for (int e = 0; e < 3; ++e)
-        {
-          const double* s0 = this->P3(v[e]);
-          const double* s1 = this->P3(v[(e + 1) % 3]);
-          double d[3], w[3];
-          Sub(s1, s0, d);
-          Sub(x, s0, w);
-          const double f = std::min(1.0, std::max(0.0, Dot(w, d) / Dot(d, d)));
-          const double c[3] = { s0[0] + f * d[0], s0[1] + f * d[1], s0[2] + f * d[2] };
-          const double dc = std::sqrt(Distance2(x, c));
-          if (dc < distance)
-          {
-            distance = dc;
-            edge = e;
-          }
-        }
-      }
-      const double reach = std::sqrt(std::max({ Distance2(this->P3(v[0]), this->P3(v[1])),
-        Distance2(this->P3(v[1]), this->P3(v[2])), Distance2(this->P3(v[2]), this->P3(v[0])) }));
-      if (distance <= reach && distance < bestDistance)
-      {
-        best = t;
-        bestDistance = distance;
-        bestInside = outside < 0;
-        bestEdge = edge;
-      }
-    }
+    this->Register(restored.second);
   }
-  if (best < 0)
+  if (!inserted)
   {
     return false;
   }
-  const int32_t* v = this->Mesh.GetTriangle(best);
-  const Id t3[3] = { v[0], v[1], v[2] };
-  if (bestInside)
+  ++this->UsedVertices;
+  for (int64_t t : result.Added)
   {
-    // Inside: split the edge whose angle at q is beyond 150 degrees, if any.
-    double widest = -0.8660254037844386;
-    for (int i = 0; i < 3; ++i)
-    {
-      double e1[3], e2[3];
-      Sub(this->P3(t3[i]), x, e1);
-      Sub(this->P3(t3[(i + 1) % 3]), x, e2);
-      const double c = Dot(e1, e2) / std::sqrt(Dot(e1, e1) * Dot(e2, e2));
-      if (c < widest)
-      {
-        widest = c;
-        bestEdge = i;
-      }
-    }
-  }
-  // q exactly on an edge in space (points on lattice lines): that edge must be split, as any
-  // triangle joining q to it would have zero area.
-  bool onEdge = false;
-  for (int e = 0; e < 3 && !onEdge; ++e)
-  {
-    if (pcs::projected::OnOpenSegment3D(this->P3(t3[e]), this->P3(t3[(e + 1) % 3]), x))
-    {
-      onEdge = true;
-      bestEdge = e;
-    }
-  }
-  std::vector<std::array<Id, 3>> added;
-  if (bestEdge >= 0)
-  {
-    const Id u = t3[bestEdge], w = t3[(bestEdge + 1) % 3], z = t3[(bestEdge + 2) % 3];
-    const int64_t other = this->Mesh.FindTriangle(w, u);
-    const Id zo = other >= 0 ? this->Mesh.OppositeVertex(w, u) : -1;
-    if (zo < 0 && onEdge)
-    {
-      // On a boundary edge: the triangle is split in two and the boundary runs u -> q -> w.
-      if (pcs::projected::Collinear(this->P3(w), this->P3(z), x) ||
-        pcs::projected::Collinear(this->P3(z), this->P3(u), x))
-      {
-        return false;
-      }
-      this->Mesh.RemoveTriangle(best);
-      this->Commit(w, z, q);
-      this->Commit(z, u, q);
-      return true;
-    }
-    if (zo >= 0)
-    {
-      added = { { { w, z, q } }, { { z, u, q } }, { { u, zo, q } }, { { zo, w, q } } };
-      // q is nearest to this edge: the four triangles around it only need to be proper (the
-      // normal of a thin one near the edge's end is dominated by the curvature).
-      bool proper = true;
-      for (const auto& t : added)
-      {
-        proper =
-          proper && !pcs::projected::Collinear(this->P3(t[0]), this->P3(t[1]), this->P3(t[2]));
-      }
-      if (proper)
-      {
-        this->Mesh.RemoveTriangle(best);
-        this->Mesh.RemoveTriangle(other);
-      }
-      else
-      {
-        added.clear();
-      }
-    }
-  }
-  if (added.empty() && !bestInside && bestEdge >= 0)
-  {
-    // q is beside an edge of the mesh's boundary (its projection falls just across it): the
-    // triangle that edge lacks is made with q.
-    const Id u = t3[bestEdge], w = t3[(bestEdge + 1) % 3];
-    if (this->Mesh.FindTriangle(w, u) < 0 &&
-      this->Mesh.CanAddTriangle(w, u, q) == pcs::SurfaceMesh::Check::Ok &&
-      !pcs::projected::Collinear(this->P3(w), this->P3(u), this->P3(q)))
-    {
-      return this->Commit(w, u, q) >= 0;
-    }
-  }
-  if (added.empty())
-  {
-    if (!bestInside || onEdge)
-    {
-      return false;
-    }
-    added = { { { t3[0], t3[1], q } }, { { t3[1], t3[2], q } }, { { t3[2], t3[0], q } } };
-    for (const auto& t : added)
-    {
-      if (pcs::projected::Collinear(this->P3(t[0]), this->P3(t[1]), this->P3(t[2])))
-      {
-        return false;
-      }
-    }
-    this->Mesh.RemoveTriangle(best);
-  }
-  for (const auto& t : added)
-  {
-    this->Commit(t[0], t[1], t[2]);
+    this->Register(t);
   }
   return true;
 }

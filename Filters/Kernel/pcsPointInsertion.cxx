@@ -157,6 +157,17 @@ bool InsertFreePoint(SurfaceMesh& mesh, const double* xyz, int32_t q, const int3
       }
     }
   }
+  // q exactly on an edge in space (points on lattice lines): that edge must be split, as any
+  // triangle joining q to it would have zero area.
+  bool onEdge = false;
+  for (int e = 0; e < 3 && !onEdge; ++e)
+  {
+    if (pcs::projected::OnOpenSegment3D(P(xyz, t3[e]), P(xyz, t3[(e + 1) % 3]), x))
+    {
+      onEdge = true;
+      bestEdge = e;
+    }
+  }
   // The normal each new triangle must agree with: that of the triangle it replaces (or is
   // attached to); the last two of an edge split replace the second triangle.
   double oldNormal[3], otherNormal[3];
@@ -178,7 +189,7 @@ bool InsertFreePoint(SurfaceMesh& mesh, const double* xyz, int32_t q, const int3
       added = { { { a, q, c } }, { { q, b, c } }, { { b, q, d } }, { { q, a, d } } };
       result.OldEdges = { { { b, c } }, { { c, a } }, { { a, d } }, { { d, b } } };
     }
-    else if (bestInside)
+    else if (bestInside || onEdge)
     {
       removed = { best };
       added = { { { a, q, c } }, { { q, b, c } } };

@@ -1,6 +1,7 @@
 // Insertion of a free point into the nearest triangle of a surface mesh (private kernel, plain
 // C++, not wrapped), used by vtkGreedySurfaceTriangulation to connect the lost points that no
-// hole contains (thin features: legs, ears, fins).
+// hole contains (thin features: legs, ears, fins), and by vtkLocalOptimumGrowth to insert the
+// free points its growth left under triangles.
 //
 // A free point q (a vertex of the mesh without triangles) that lies near the mesh is connected
 // to it by local topological operations that keep an oriented 2-manifold (pcs::SurfaceMesh):
@@ -13,11 +14,12 @@
 // - inside, the triangle (a, b, c) is split into (a, b, q), (b, c, q), (c, a, q), unless the
 //   angle at q over one edge exceeds 150 degrees (q almost on that edge: the split would leave
 //   a needle), in which case that edge is split as below;
-// - beyond (or almost on) the edge a -> b of the triangle (a, b, c): when the edge has a second
-//   triangle (b, a, d), both are replaced by the four triangles around q; when a -> b is a
-//   boundary edge, the triangle (b, a, q) is attached across it when q is beyond the edge, or
-//   the triangle is split into (q, b, c), (a, q, c) when q is almost on it (the boundary then
-//   runs a -> q -> b).
+// - beyond (or almost, or exactly on) the edge a -> b of the triangle (a, b, c): when the edge
+//   has a second triangle (b, a, d), both are replaced by the four triangles around q; when
+//   a -> b is a boundary edge, the triangle (b, a, q) is attached across it when q is beyond the
+//   edge, or the triangle is split into (q, b, c), (a, q, c) when q is almost or exactly on it
+//   (the boundary then runs a -> q -> b). Exactly on an edge is decided exactly
+//   (pcs::projected::OnOpenSegment3D): any triangle joining q to that edge would have zero area.
 // No new triangle may be exactly degenerate (pcs::projected::Collinear) or face against the
 // triangle it replaces. Each operation is applied (its triangles may pinch a vertex until the
 // last one is in) and undone when it breaks the manifold: a half-edge used twice, or a vertex

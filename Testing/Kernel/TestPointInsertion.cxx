@@ -90,6 +90,27 @@ int main()
     EXPECT(s.Consistent(), "on boundary edge");
   }
   {
+    // Exactly on the boundary edge 0-1 (decided exactly): the triangle split in two, as any
+    // triangle joining q to the edge would have zero area.
+    Square s(0.5, 0.0, 0.0);
+    EXPECT(s.Insert(true, result), "exactly on boundary edge: inserted");
+    EXPECT(s.Mesh.GetNumberOfTriangles() == 3 && result.Added.size() == 2,
+      "exactly on boundary edge: 3 triangles");
+    EXPECT(s.Mesh.GetEdgeValence(0, 1) == 0 && s.Mesh.IsBoundaryHalfEdge(0, 4) &&
+        s.Mesh.IsBoundaryHalfEdge(4, 1),
+      "exactly on boundary edge: the boundary runs 0 -> q -> 1");
+    EXPECT(s.Consistent(), "exactly on boundary edge");
+  }
+  {
+    // Exactly on the diagonal 0-2: both triangles split in four.
+    Square s(0.5, 0.5, 0.0);
+    EXPECT(s.Insert(true, result), "exactly on diagonal: inserted");
+    EXPECT(s.Mesh.GetNumberOfTriangles() == 4 && s.Mesh.GetEdgeValence(0, 2) == 0,
+      "exactly on diagonal: 4 triangles, the edge 0-2 gone");
+    EXPECT(s.Mesh.GetVertexState(4) == State::Interior, "exactly on diagonal: q interior");
+    EXPECT(s.Consistent(), "exactly on diagonal");
+  }
+  {
     // Beyond the boundary edge 0-1: a triangle attached across it, or nothing when not allowed.
     Square s(0.5, -0.3, 0.0);
     EXPECT(!s.Insert(false, result), "beyond, no attachment: refused");

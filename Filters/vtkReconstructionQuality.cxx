@@ -584,7 +584,9 @@ struct SurfaceSamples
   }
 };
 
-// A vtkPolyData holding the points `ids` of `points` (all of them when ids is null), no cells.
+// A vtkPolyData holding the points `ids` of `points` (all of them when ids is null), no cells,
+// with double coordinates (only double points are shared): vtkStaticPointLocator (VTK 9.2)
+// crashed in FindClosestNPoints on a reference cloud of int or short points.
 vtkSmartPointer<vtkPolyData> PointCloud(vtkPoints* points, const std::vector<vtkIdType>* ids)
 {
   auto cloud = vtkSmartPointer<vtkPolyData>::New();
@@ -592,19 +594,20 @@ vtkSmartPointer<vtkPolyData> PointCloud(vtkPoints* points, const std::vector<vtk
   {
     return cloud;
   }
-  if (!ids)
+  if (!ids && points->GetDataType() == VTK_DOUBLE)
   {
     cloud->SetPoints(points);
     return cloud;
   }
+  const vtkIdType size = ids ? static_cast<vtkIdType>(ids->size()) : points->GetNumberOfPoints();
   vtkNew<vtkPoints> subset;
   subset->SetDataTypeToDouble();
-  subset->SetNumberOfPoints(static_cast<vtkIdType>(ids->size()));
-  for (size_t i = 0; i < ids->size(); ++i)
+  subset->SetNumberOfPoints(size);
+  for (vtkIdType i = 0; i < size; ++i)
   {
     double x[3];
-    points->GetPoint((*ids)[i], x);
-    subset->SetPoint(static_cast<vtkIdType>(i), x);
+    points->GetPoint(ids ? (*ids)[i] : i, x);
+    subset->SetPoint(i, x);
   }
   cloud->SetPoints(subset);
   return cloud;

@@ -12,7 +12,8 @@
 // every coordinate, float instead of double coordinates, a vtkUnstructuredGrid of vertices
 // (double and float points) instead of a vtkPolyData (triangle count within 0.5 %, same
 // closedness and genus, point data passed through); for vtkReconstructionQuality the same holds
-// for the hulls of those clouds. Every parameter of every filter runs at its clamp limits (set
+// for the hulls of those clouds, and a reference cloud of int or short points gives the measures
+// of the same cloud in double points. Every parameter of every filter runs at its clamp limits (set
 // beyond them, so the clamp is exercised too) on a regular input.
 //
 // The filters come from pcsTestFilters.h (a new filter of the module joins automatically); their
@@ -26,11 +27,13 @@
 #include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkLongLongArray.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkShortArray.h"
 #include "vtkSignedCharArray.h"
 #include "vtkSmartPointer.h"
@@ -968,6 +971,47 @@ bool RunQualityReferencePile()
   return true;
 }
 
+// vtkReconstructionQuality against a reference cloud of integer points (int, short: a scanner's
+// raw coordinates): the measures of the same cloud in double points. The spacing search read
+// such points through vtkStaticPointLocator, which crashed (VTK 9.2) on int and short points.
+bool RunQualityIntegerReference()
+{
+  std::vector<double> xyz = Sphere(2000, 61, 300.0);
+  for (double& c : xyz)
+  {
+    c = std::round(c);
+  }
+  auto hull = HullOf(pcstest::MakeCloud(xyz));
+  auto measure = [&hull](vtkPolyData* reference)
+  {
+    vtkNew<vtkReconstructionQuality> quality;
+    quality->SetInputData(hull);
+    quality->SetInputData(1, reference);
+    Update(quality);
+    vtkFieldData* fd = quality->GetOutput()->GetFieldData();
+    return std::vector<double>{ fd->GetArray("MeanSpacing")->GetTuple1(0),
+      fd->GetArray("CompletenessMean")->GetTuple1(0),
+      fd->GetArray("Hausdorff")->GetTuple1(0) };
+  };
+  const std::vector<double> expected = measure(pcstest::MakeCloud(xyz));
+  PCS_CHECK(expected[0] > 0.0, "vtkReconstructionQuality / integer reference: no spacing");
+  for (int type : { VTK_INT, VTK_SHORT })
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataType(type);
+    for (size_t i = 0; i < xyz.size(); i += 3)
+    {
+      points->InsertNextPoint(xyz[i], xyz[i + 1], xyz[i + 2]);
+    }
+    vtkNew<vtkPolyData> reference;
+    reference->SetPoints(points);
+    PCS_CHECK(measure(reference) == expected,
+      "vtkReconstructionQuality / reference of " << (type == VTK_INT ? "int" : "short")
+                                                 << " points: other measures");
+  }
+  return true;
+}
+
 bool RunWithoutInput(const FilterEntry& filter)
 {
   Algorithm algorithm = filter.Info.Make();
@@ -996,6 +1040,7 @@ int TestRobustness(int, char*[])
               << " parameter limits" << std::endl;
   }
   failures += RunQualityReferencePile() ? 0 : 1;
+  failures += RunQualityIntegerReference() ? 0 : 1;
   std::cout << failures << " failure(s)" << std::endl;
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -349,6 +349,7 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
   std::vector<double>* stretch,
   double linearity,
   double radiusFactor,
+  double minimumShare,
   const std::function<bool(double)>& progress)
 {
   if (stretch)
@@ -360,6 +361,41 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
     return 0;
   }
   const int perSide = std::max(1, k / 4);
+  // The points confined to a curve, all of them first when a share of confined neighbours is
+  // asked for (then the test is made again, on the same row, where it passed).
+  std::vector<uint8_t> confined;
+  if (minimumShare > 0.0)
+  {
+    confined.assign(static_cast<size_t>(n), 0);
+    vtkSMPTools::For(0,
+      n,
+      [&](int32_t begin, int32_t end)
+      {
+        double e[3], reach;
+        for (int32_t i = begin; i < end; ++i)
+        {
+          confined[i] = SpreadsAlongCurve(xyz,
+                          xyz + 3 * static_cast<size_t>(i),
+                          &neighbors[static_cast<size_t>(i) * k],
+                          k,
+                          linearity,
+                          e,
+                          reach)
+            ? 1
+            : 0;
+        }
+      });
+  }
+  auto enoughConfined = [&](const int32_t* table)
+  {
+    int count = 0, share = 0;
+    for (int j = 0; j < k; ++j)
+    {
+      count += table[j] >= 0 ? 1 : 0;
+      share += table[j] >= 0 && confined[table[j]] ? 1 : 0;
+    }
+    return share >= minimumShare * count;
+  };
   std::atomic<int32_t> changed(0);
   struct Candidate
   {
@@ -393,7 +429,8 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
           const double* p = xyz + 3 * static_cast<size_t>(i);
           int32_t* table = &neighbors[static_cast<size_t>(i) * k];
           double e[3], reach;
-          if (!SpreadsAlongCurve(xyz, p, table, k, linearity, e, reach))
+          if ((!confined.empty() && (!confined[i] || !enoughConfined(table))) ||
+            !SpreadsAlongCurve(xyz, p, table, k, linearity, e, reach))
           {
             continue;
           }

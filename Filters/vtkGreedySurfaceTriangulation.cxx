@@ -59,6 +59,9 @@ constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 // loop spans (twice a hemisphere bowl's), by a least-dihedral fill folding at most this much.
 constexpr double CapAreaRatio = 4.0;
 constexpr double MaximumCapDihedral = 150.0; // degrees
+// Scan-line sampling is taken for the pattern of a region when at least this share of a point's
+// K nearest lie along their lines too (pcs::AddOffLineNeighbors' minimumShare).
+constexpr double ScanLineShare = 0.5;
 // Point ids are 32-bit in the kernels (pcs::SurfaceMesh).
 constexpr vtkIdType MaximumNumberOfPoints = 500000000;
 
@@ -134,6 +137,8 @@ public:
   int32_t N = 0;
   int K = 0;
   std::vector<int32_t> Neighbors; // K per point, nearest first, -1 padded
+  // Scan-line stretch (3 per point, pcs::AddOffLineNeighbors), empty when no row was extended.
+  std::vector<double> Stretch;
   std::vector<double> Uniformity;
   double MedianUniformity = NaN;
   std::vector<double> Normals; // 3 per point (unoriented), for the projected crossing test
@@ -176,6 +181,8 @@ public:
   bool Aborted = false;
 
   const double* P(int32_t i) const { return &this->X[3 * static_cast<size_t>(i)]; }
+  double SamplingDistance(int32_t a, int32_t b) const;
+  bool OnOneScanLine(int32_t a, int32_t b, int32_t c) const;
 
   bool Progress(double fraction)
   {
@@ -247,18 +254,95 @@ void Reconstruction::FindNeighbors(double begin, double end)
   {
     return;
   }
+  // Scan-line sampling: a point whose K / 2 nearest lie along one line, as do those of half of
+  // its K nearest, also gets the nearest points of the lines beside it, and its stretch
+  // (pcsNearestNeighbors.h). The share keeps the few points of an ordinary sample that happen to
+  // lie along a curve as they were: the paper's Euclidean greedy triangulation is right there.
+  if (pcs::AddOffLineNeighbors(this->Locator,
+        this->X.data(),
+        this->N,
+        k,
+        this->Neighbors,
+        &this->Stretch,
+        0.05,
+        4.0,
+        ScanLineShare) <= 0)
+  {
+    this->Stretch.clear();
+  }
+  // The mean spacing: the mean distance to the nearest neighbour, in the sampling's metric on
+  // scan lines (SamplingDistance: there the spacing across the lines).
   double sum = 0.0;
   vtkIdType counted = 0;
   for (int32_t i = 0; i < this->N; ++i)
   {
-    const int32_t j = this->Neighbors[static_cast<size_t>(i) * k];
-    if (j >= 0)
+    const int32_t* row = &this->Neighbors[static_cast<size_t>(i) * k];
+    if (row[0] < 0)
     {
-      sum += Distance(this->P(i), this->P(j));
-      ++counted;
+      continue;
     }
+    double nearest = Distance(this->P(i), this->P(row[0]));
+    if (!this->Stretch.empty())
+    {
+      nearest = VTK_DOUBLE_MAX;
+      for (int j = 0; j < k && row[j] >= 0; ++j)
+      {
+        nearest = std::min(nearest, this->SamplingDistance(i, row[j]));
+      }
+    }
+    sum += nearest;
+    ++counted;
   }
   this->Spacing = counted > 0 ? sum / counted : 0.0;
+}
+
+// The length of the edge ab in the sampling's metric: Euclidean, except on scan lines (see
+// pcs::AddOffLineNeighbors), where the offset w = b - a measures sqrt(|w|^2 + (w . s)^2) with s
+// the stretch of a or of b, whichever gives the larger component (the stretch vectors of two
+// neighbours on one line are nearly parallel; taking the larger keeps an edge along a line long
+// even where one end, at the end of a line or between scan patterns, got no stretch). The
+// spacing along a line then measures about the spacing across the lines.
+double Reconstruction::SamplingDistance(int32_t a, int32_t b) const
+{
+  if (this->Stretch.empty())
+  {
+    return Distance(this->P(a), this->P(b));
+  }
+  double w[3];
+  vtkMath::Subtract(this->P(b), this->P(a), w);
+  const double alongA = vtkMath::Dot(w, &this->Stretch[3 * static_cast<size_t>(a)]);
+  const double alongB = vtkMath::Dot(w, &this->Stretch[3 * static_cast<size_t>(b)]);
+  return std::sqrt(vtkMath::Dot(w, w) + std::max(alongA * alongA, alongB * alongB));
+}
+
+// True when the three points lie along one scan line: each of the three edges runs along the
+// line at one of its ends, within 45 degrees of the stretch there (|w x s| <= |w . s|, the rule
+// by which pcs::AddOffLineNeighbors tells a line's own points). Such a triangle is a sliver of
+// the line (in the sampling's metric an angle near 180 degrees), never part of the surface
+// between the lines; where the surface must close on one line (a pole's circle) it is a hole.
+bool Reconstruction::OnOneScanLine(int32_t a, int32_t b, int32_t c) const
+{
+  if (this->Stretch.empty())
+  {
+    return false;
+  }
+  auto along = [this](int32_t p, int32_t q)
+  {
+    double w[3], cross[3];
+    vtkMath::Subtract(this->P(q), this->P(p), w);
+    for (int32_t end : { p, q })
+    {
+      const double* s = &this->Stretch[3 * static_cast<size_t>(end)];
+      vtkMath::Cross(w, s, cross);
+      const double dot = vtkMath::Dot(w, s);
+      if (dot != 0.0 && vtkMath::Dot(cross, cross) <= dot * dot)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  return along(a, b) && along(b, c) && along(c, a);
 }
 
 // The local uniformity factor m of paper section 3 (see the class documentation).
@@ -369,8 +453,8 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
       }
       if (keep)
       {
-        edges.push_back({ static_cast<float>(Distance(this->P(i), this->P(q))), std::min(i, q),
-          std::max(i, q) });
+        edges.push_back(
+          { static_cast<float>(this->SamplingDistance(i, q)), std::min(i, q), std::max(i, q) });
         ++offsets[i + 1];
         ++offsets[q + 1];
       }
@@ -561,7 +645,8 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
     bool degenerate = false;
     for (int c = 0; c < numberOfCommon && !degenerate; ++c)
     {
-      degenerate = pcs::projected::Collinear(this->P(a), this->P(b), this->P(common[c]));
+      degenerate = pcs::projected::Collinear(this->P(a), this->P(b), this->P(common[c])) ||
+        this->OnOneScanLine(a, b, common[c]);
     }
     if (degenerate)
     {

@@ -1,5 +1,6 @@
 #include "pcsGatherInput.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -13,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <string>
 #include <vector>
 
 namespace
@@ -178,5 +180,41 @@ vtkSmartPointer<vtkPointSet> GatherInputOnFirstProcess(vtkPointSet* input)
     }
   }
   return gathered;
+}
+
+std::string DropMismatchedPointArrays(vtkSmartPointer<vtkPointSet>& input)
+{
+  std::string names;
+  if (!input)
+  {
+    return names;
+  }
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  vtkPointData* pointData = input->GetPointData();
+  std::vector<int> mismatched;
+  for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = pointData->GetAbstractArray(a);
+    if (array && array->GetNumberOfTuples() != numberOfPoints)
+    {
+      mismatched.push_back(a);
+      const char* name = array->GetName();
+      names += (names.empty() ? "" : ", ") + std::string(name ? name : "(unnamed)");
+    }
+  }
+  if (mismatched.empty())
+  {
+    return names;
+  }
+  auto copy = vtk::TakeSmartPointer(input->NewInstance());
+  copy->ShallowCopy(input);
+  for (auto a = mismatched.rbegin(); a != mismatched.rend(); ++a)
+  {
+    copy->GetPointData()->RemoveArray(*a);
+  }
+  input = copy;
+  return "Ignored " + std::to_string(mismatched.size()) + " point data array(s) whose number " +
+    "of tuples is not the number of points (" + std::to_string(numberOfPoints) + "): " + names +
+    ".";
 }
 } // namespace pcs

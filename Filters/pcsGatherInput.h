@@ -1,9 +1,12 @@
 // Parallel runs (pvbatch / pvserver under MPI): the reconstruction filters need the whole cloud
-// at once, so each one gathers its input on process 0 first (private helper, not wrapped).
+// at once, so each one gathers its input on process 0 first; then the input check every filter
+// shares (private helper, not wrapped).
 #ifndef pcsGatherInput_h
 #define pcsGatherInput_h
 
 #include "vtkSmartPointer.h"
+
+#include <string>
 
 class vtkDataObject;
 class vtkPointSet;
@@ -23,6 +26,13 @@ namespace pcs
 /// cell uses (cloud points) and coincident points within one piece are never merged.
 /// Every process must call it (it communicates).
 vtkSmartPointer<vtkPointSet> GatherInputOnFirstProcess(vtkPointSet* input);
+
+/// Point data arrays of `input` whose number of tuples is not its number of points (a corrupt
+/// data set: passed through, they would give the output arrays of the wrong length, and copying
+/// their tuples reads out of bounds): `input` is replaced by a shallow copy without them (the
+/// caller's data set is not modified). Returns the filter's warning naming them, empty when
+/// there are none. `input` may be null.
+std::string DropMismatchedPointArrays(vtkSmartPointer<vtkPointSet>& input);
 }
 
 #endif

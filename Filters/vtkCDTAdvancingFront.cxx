@@ -1458,6 +1458,11 @@ int vtkCDTAdvancingFront::RequestData(
     vtkErrorMacro("Missing input or output data object.");
     return 0;
   }
+  const std::string mismatched = pcs::DropMismatchedPointArrays(input);
+  if (!mismatched.empty())
+  {
+    vtkWarningMacro(<< mismatched);
+  }
   this->NumberOfTriangles = 0;
   this->NumberOfFrontTriangles = 0;
   this->NumberOfSeedTriangles = 0;

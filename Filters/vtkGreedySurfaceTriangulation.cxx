@@ -2841,6 +2841,11 @@ int vtkGreedySurfaceTriangulation::RequestData(
     vtkErrorMacro("Missing output data object.");
     return 0;
   }
+  const std::string mismatched = pcs::DropMismatchedPointArrays(input);
+  if (!mismatched.empty())
+  {
+    vtkWarningMacro(<< mismatched);
+  }
   this->NumberOfTriangles = 0;
   this->NumberOfLostPoints = 0;
   this->NumberOfIslands = 0;

@@ -747,6 +747,11 @@ int vtkIncrementalDelaunay3D::RequestData(
     vtkErrorMacro("Missing input or output data object.");
     return 0;
   }
+  const std::string mismatched = pcs::DropMismatchedPointArrays(input);
+  if (!mismatched.empty())
+  {
+    vtkWarningMacro(<< mismatched);
+  }
   this->NumberOfInputPoints = 0;
   this->NumberOfDuplicatePoints = 0;
   this->NumberOfSkippedPoints = 0;

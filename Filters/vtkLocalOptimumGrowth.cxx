@@ -2028,6 +2028,11 @@ int vtkLocalOptimumGrowth::RequestData(
     vtkErrorMacro("Missing input or output data object.");
     return 0;
   }
+  const std::string mismatched = pcs::DropMismatchedPointArrays(input);
+  if (!mismatched.empty())
+  {
+    vtkWarningMacro(<< mismatched);
+  }
   this->NumberOfInputPoints = this->NumberOfTriangles = this->NumberOfSeeds = 0;
   this->NumberOfHolesClosed = this->NumberOfUnusedPoints = this->NumberOfDuplicatePoints = 0;
   this->NumberOfSkippedPoints = this->NumberOfBoundaryEdges = this->NumberOfOutliers = 0;

@@ -884,6 +884,11 @@ int vtkPerimeterPeelSurface::RequestData(
     vtkErrorMacro("Missing input or output data object.");
     return 0;
   }
+  const std::string mismatched = pcs::DropMismatchedPointArrays(input);
+  if (!mismatched.empty())
+  {
+    vtkWarningMacro(<< mismatched);
+  }
 
   const vtkIdType numberOfPoints = input->GetNumberOfPoints();
   if (input->GetPoints())

@@ -1541,6 +1541,11 @@ int vtkReconstructionQuality::RequestData(
   {
     return 1;
   }
+  const std::string mismatched = pcs::DropMismatchedPointArrays(gathered);
+  if (!mismatched.empty())
+  {
+    vtkWarningMacro(<< mismatched);
+  }
   vtkPolyData* input = vtkPolyData::SafeDownCast(gathered);
   vtkPointSet* reference = gatheredReference;
   if (!input || !output)

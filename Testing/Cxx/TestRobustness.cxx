@@ -7,7 +7,8 @@
 //   through), every cell id in range, no cell on a non-finite point, no triangle with a repeated
 //   vertex, and for the filters that promise a manifold surface no non-manifold edge or vertex
 //   and no zero-area triangle (exactly collinear vertices) (vtkReconstructionQuality);
-// - point data arrays of every common type pass through unchanged.
+// - point data arrays of every common type pass through unchanged; one of the wrong length (a
+//   corrupt input) is dropped with a warning.
 // Pairs of inputs that describe the same surface must give the same result: a 10^6 offset on
 // every coordinate, float instead of double coordinates, a vtkUnstructuredGrid of vertices
 // (double and float points) instead of a vtkPolyData (triangle count within 0.5 %, same
@@ -1012,6 +1013,38 @@ bool RunQualityIntegerReference()
   return true;
 }
 
+// A point data array with half as many tuples as points (a corrupt input) is dropped with a
+// warning: every output point data array has one tuple per output point, the sound arrays pass
+// through. (The filters passed it on, an output array of the wrong length.)
+bool RunMismatchedPointData(const FilterEntry& filter)
+{
+  auto prepared = filter.Prepare(pcstest::MakeCloud(Sphere(1000, 71)));
+  AddPointArrays(prepared);
+  vtkNew<vtkFloatArray> half;
+  half->SetName("Half");
+  half->SetNumberOfTuples(prepared->GetNumberOfPoints() / 2);
+  half->FillValue(1.0f);
+  prepared->GetPointData()->AddArray(half);
+  Algorithm algorithm = filter.Info.Make();
+  algorithm->SetInputData(prepared);
+  const Messages messages = Update(algorithm);
+  const std::string label = filter.Info.Name + " / point data array of half length";
+  PCS_CHECK(messages.Warnings > 0, label << ": no warning");
+  vtkPolyData* output = algorithm->GetOutput();
+  vtkPointData* pd = output->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    PCS_CHECK(pd->GetAbstractArray(a)->GetNumberOfTuples() == output->GetNumberOfPoints(),
+      label << ": output array " << pd->GetAbstractArray(a)->GetName() << " has "
+            << pd->GetAbstractArray(a)->GetNumberOfTuples() << " tuples for "
+            << output->GetNumberOfPoints() << " points");
+  }
+  PCS_CHECK(half->GetNumberOfTuples() == prepared->GetNumberOfPoints() / 2 &&
+      prepared->GetPointData()->GetArray("Half") == half,
+    label << ": the input was modified");
+  return CheckOutput(filter, label, prepared, output, true);
+}
+
 bool RunWithoutInput(const FilterEntry& filter)
 {
   Algorithm algorithm = filter.Info.Make();
@@ -1035,6 +1068,7 @@ int TestRobustness(int, char*[])
       ++cases;
     }
     failures += RunEquivalences(filter) ? 0 : 1;
+    failures += RunMismatchedPointData(filter) ? 0 : 1;
     failures += RunExtremes(filter) ? 0 : 1;
     std::cout << filter.Info.Name << ": " << cases << " inputs, " << filter.Extremes.size()
               << " parameter limits" << std::endl;

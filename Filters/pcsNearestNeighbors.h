@@ -21,16 +21,16 @@ namespace pcs
 /// The search uses radius queries on the locator's buckets, several times faster than
 /// FindClosestNPoints for surface samples: each query starts from a radius a little beyond the
 /// previous point's k-th neighbour (the first from the mean nearest-neighbour distance of a
-/// sample) and grows until the ball holds k other points. The buckets' point lists are copied
-/// once from the locator (GetBucketIds) and the buckets a ball overlaps are walked directly on
-/// `xyz`, as FindPointsWithinRadius does but without its per-point virtual GetPoint and
-/// per-call BuildLocator checks (2.2x fewer instructions on a 2 x 10^4-point sphere). The
-/// coordinates are copied once in bucket order, the queries run in that order (neighbouring
-/// queries one after the other), and only the candidates inside the ball are kept for the
-/// partial sort. The result does not depend on those radii, on the query order, nor on the
-/// number of threads (vtkSMPTools, in blocks). `progress` (optional) receives the fraction done
-/// between blocks; returning false stops the search (the function then returns false and the
-/// table is incomplete).
+/// sample) and grows until the ball holds k other points. The points are filed once into the
+/// locator's bucket grid (its divisions and bounds) by a counting sort, and the buckets a ball
+/// overlaps are walked directly on `xyz`, as FindPointsWithinRadius does but without its
+/// per-point virtual GetPoint and per-call BuildLocator checks (2.2x fewer instructions on a
+/// 2 x 10^4-point sphere). The coordinates are copied once in bucket order, the queries run in
+/// that order (neighbouring queries one after the other), and only the candidates inside the
+/// ball are kept for the partial sort. The result does not depend on those radii, on the query
+/// order, nor on the number of threads (vtkSMPTools, in blocks). `progress` (optional) receives
+/// the fraction done between blocks; returning false stops the search (the function then returns
+/// false and the table is incomplete).
 bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int32_t n, int k,
   std::vector<int32_t>& neighbors, const std::function<bool(double)>& progress = nullptr);
 

@@ -19,7 +19,10 @@ void SurfaceMesh::Initialize(int32_t numberOfVertices)
   this->Fans.assign(numberOfVertices, 0);
   this->FrontOut.assign(numberOfVertices, -1);
   this->FrontIn.assign(numberOfVertices, -1);
+  // One block per vertex that gets a triangle (most of them): reserved, not touched, so that
+  // the growing mesh does not copy its blocks at each reallocation.
   this->Blocks.clear();
+  this->Blocks.reserve(numberOfVertices);
   this->FreeBlocks.clear();
   this->NumberOfTriangles = 0;
   this->NumberOfBoundaryHalfEdges = 0;

@@ -123,9 +123,7 @@ public:
   {
     this->Mesh.Initialize(n);
     this->Mesh.ReserveTriangles(2 * static_cast<int64_t>(n));
-    this->Mark.assign(n, 0);
-    this->ProjectionStamp.assign(n, 0);
-    this->Projected.assign(2 * static_cast<size_t>(n), 0.0);
+    this->Scratch.assign(n, PointScratch());
     this->Touched.assign(n, 0);
     this->InTouchedSinceRetry.assign(n, 0);
     this->SeedFailed.assign(n, 0);
@@ -134,8 +132,11 @@ public:
   void Run();
 
   pcs::SurfaceMesh Mesh;
-  // Scan-line stretch of every point (3 per point, see pcs::AddOffLineNeighbors), or empty.
-  std::vector<double> Stretch;
+  // The points in the order the seeds are tried (paper, step 1: the extreme point first): x
+  // descending, then y, then z; a permutation of 0..N-1.
+  std::vector<Id> SeedOrder;
+  // The scan-line stretch of every point (3 per point, see pcs::AddOffLineNeighbors), or empty.
+  void SetStretch(std::vector<double>&& stretch);
   vtkIdType Seeds = 0;
   vtkIdType HolesClosed = 0;
   vtkIdType Inserted = 0;
@@ -164,15 +165,16 @@ private:
   void SetFrame(const double* origin, const double* u, const double* w);
   const double* P2(Id v)
   {
-    if (this->ProjectionStamp[v] != this->Frame)
+    PointScratch& scratch = this->Scratch[v];
+    if (scratch.Frame != this->Frame)
     {
-      this->ProjectionStamp[v] = this->Frame;
+      scratch.Frame = this->Frame;
       double d[3];
       Sub(this->P3(v), this->Origin, d);
-      this->Projected[2 * static_cast<size_t>(v)] = Dot(d, this->U);
-      this->Projected[2 * static_cast<size_t>(v) + 1] = Dot(d, this->V);
+      scratch.P[0] = Dot(d, this->U);
+      scratch.P[1] = Dot(d, this->V);
     }
-    return &this->Projected[2 * static_cast<size_t>(v)];
+    return scratch.P;
   }
   double Height(Id v) const
   {
@@ -232,7 +234,13 @@ private:
   // normal and its neighbours' (constraint 1), or -2 when invalid.
   double EarScore(Id v, Id u, Id w, double cosNormal, double minimumRatio);
   bool EdgeRatiosOk(Id x, Id y, Id z, double minimum) const;
-  double RatioLength2(Id u, Id v, double length2) const;
+  double RatioLength2(Id u, Id v, double length2) const
+  {
+    return this->Stretched.empty() || !(this->Stretched[u] | this->Stretched[v])
+      ? length2
+      : this->StretchedLength2(u, v, length2);
+  }
+  double StretchedLength2(Id u, Id v, double length2) const;
 
   // Commit a triangle: mesh, then Register (front queue, neighbourhood clock, labels).
   int64_t Commit(Id x, Id y, Id z);
@@ -264,6 +272,8 @@ private:
   const double* X;
   const Id N;
   const std::vector<Id>& Knn;
+  std::vector<double> Stretch;
+  std::vector<uint8_t> Stretched; // per point: a stretch not zero (empty: none anywhere)
   const int K;
   const Parameters Par;
   vtkAlgorithm* Algorithm;
@@ -292,17 +302,22 @@ private:
   std::vector<int32_t> LabelParent; // union-find over the seed labels
   std::vector<char> LabelReversed;  // per root label: its part was reversed once already
   std::vector<char> SeedFailed;
-  std::vector<Id> SeedOrder;
   size_t SeedCursor = 0;
   Id UsedVertices = 0;
   double MeanSpacing = -1.0; // mean nearest-neighbour distance, computed when first needed
   int64_t Work = 0;
 
   // Scratch.
-  std::vector<uint32_t> Mark;
+  // Per point, together (one cache line read): its projection in the current frame (P, valid
+  // when Frame is the current one) and its mark (set when Mark is MarkStamp).
+  struct PointScratch
+  {
+    double P[2] = { 0.0, 0.0 };
+    uint32_t Frame = 0;
+    uint32_t Mark = 0;
+  };
+  std::vector<PointScratch> Scratch;
   uint32_t MarkStamp = 0;
-  std::vector<uint32_t> ProjectionStamp;
-  std::vector<double> Projected;
   uint32_t Frame = 0;
   double Origin[3] = { 0, 0, 0 }, U[3] = { 1, 0, 0 }, V[3] = { 0, 1, 0 }, W[3] = { 0, 0, 1 };
   std::vector<Id> Near;     // neighbourhood vertices (not interior)
@@ -320,7 +335,10 @@ void Grower::SetFrame(const double* origin, const double* u, const double* w)
   ++this->Frame;
   if (this->Frame == 0) // wrapped around: forget every cached projection
   {
-    std::fill(this->ProjectionStamp.begin(), this->ProjectionStamp.end(), 0);
+    for (PointScratch& scratch : this->Scratch)
+    {
+      scratch.Frame = 0;
+    }
     this->Frame = 1;
   }
   std::copy(origin, origin + 3, this->Origin);
@@ -355,15 +373,18 @@ void Grower::CollectVertices(const Id* centers, int count)
 {
   if (++this->MarkStamp == 0)
   {
-    std::fill(this->Mark.begin(), this->Mark.end(), 0);
+    for (PointScratch& scratch : this->Scratch)
+    {
+      scratch.Mark = 0;
+    }
     this->MarkStamp = 1;
   }
   this->Near.clear();
   this->Centers.assign(centers, centers + count);
   auto add = [this](Id v) {
-    if (v >= 0 && this->Mark[v] != this->MarkStamp)
+    if (v >= 0 && this->Scratch[v].Mark != this->MarkStamp)
     {
-      this->Mark[v] = this->MarkStamp;
+      this->Scratch[v].Mark = this->MarkStamp;
       if (!this->Mesh.IsInterior(v))
       {
         this->Near.push_back(v);
@@ -411,7 +432,7 @@ void Grower::AddFrontEdges(Id v)
   const int ins = std::min(this->Mesh.GetBoundaryInVertices(v, buffer, 16), 16);
   for (int i = 0; i < ins; ++i)
   {
-    if (this->Mark[buffer[i]] != this->MarkStamp || this->Mesh.IsInterior(buffer[i]))
+    if (this->Scratch[buffer[i]].Mark != this->MarkStamp || this->Mesh.IsInterior(buffer[i]))
     {
       add(buffer[i], v); // else listed as the other's out edge
     }
@@ -431,11 +452,11 @@ void Grower::Extend(Id v)
   for (int j = 0; j < this->K; ++j)
   {
     const Id q = nb[j];
-    if (q < 0 || this->Mark[q] == this->MarkStamp)
+    if (q < 0 || this->Scratch[q].Mark == this->MarkStamp)
     {
       continue;
     }
-    this->Mark[q] = this->MarkStamp;
+    this->Scratch[q].Mark = this->MarkStamp;
     if (!this->Mesh.IsInterior(q))
     {
       this->Near.push_back(q);
@@ -611,16 +632,28 @@ bool Grower::Blocked(Id x, Id y, Id z)
   return false;
 }
 
+void Grower::SetStretch(std::vector<double>&& stretch)
+{
+  this->Stretch = std::move(stretch);
+  this->Stretched.clear();
+  for (size_t v = 0; 3 * v + 2 < this->Stretch.size(); ++v)
+  {
+    const double* s = &this->Stretch[3 * v];
+    if (s[0] != 0.0 || s[1] != 0.0 || s[2] != 0.0)
+    {
+      this->Stretched.resize(this->Stretch.size() / 3, 0);
+      this->Stretched[v] = 1;
+    }
+  }
+}
+
 // The squared length of the edge (u, v) for constraint 2, `length2` its Euclidean one: on a scan
 // line (stretch of u or v not zero) the component along the line is stretched by the sampling's
 // anisotropy there (averaged over u and v), so that a triangle between two scan lines, whose
-// edge along its line is the short one, has edges of comparable lengths.
-double Grower::RatioLength2(Id u, Id v, double length2) const
+// edge along its line is the short one, has edges of comparable lengths. (RatioLength2 returns
+// `length2` itself when neither is stretched: this formula gives it exactly then.)
+double Grower::StretchedLength2(Id u, Id v, double length2) const
 {
-  if (this->Stretch.empty())
-  {
-    return length2;
-  }
   const double* su = &this->Stretch[3 * static_cast<size_t>(u)];
   const double* sv = &this->Stretch[3 * static_cast<size_t>(v)];
   double w[3];
@@ -773,9 +806,9 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
   this->CollectVertices(centers, 2);
   for (Id v : { n, p })
   {
-    if (v >= 0 && this->Mark[v] != this->MarkStamp && !this->Mesh.IsInterior(v))
+    if (v >= 0 && this->Scratch[v].Mark != this->MarkStamp && !this->Mesh.IsInterior(v))
     {
-      this->Mark[v] = this->MarkStamp;
+      this->Scratch[v].Mark = this->MarkStamp;
       this->Near.push_back(v);
     }
   }
@@ -1175,17 +1208,6 @@ bool Grower::TrySeed(Id p1, bool relaxed)
 
 bool Grower::PlantSeed()
 {
-  if (this->SeedOrder.empty())
-  {
-    this->SeedOrder.resize(this->N);
-    std::iota(this->SeedOrder.begin(), this->SeedOrder.end(), 0);
-    const double* x = this->X;
-    vtkSMPTools::Sort(this->SeedOrder.begin(), this->SeedOrder.end(), [x](Id i, Id j) {
-      const double* p = x + 3 * static_cast<size_t>(i);
-      const double* q = x + 3 * static_cast<size_t>(j);
-      return p[0] != q[0] ? p[0] > q[0] : (p[1] != q[1] ? p[1] > q[1] : p[2] > q[2]);
-    });
-  }
   for (; this->SeedCursor < this->SeedOrder.size(); ++this->SeedCursor)
   {
     const Id p1 = this->SeedOrder[this->SeedCursor];
@@ -1630,7 +1652,10 @@ bool Grower::FillNarrowLoop(const std::vector<Id>& frontLoop)
   // The input points around the loop: its vertices and their K nearest neighbours.
   if (++this->MarkStamp == 0)
   {
-    std::fill(this->Mark.begin(), this->Mark.end(), 0);
+    for (PointScratch& scratch : this->Scratch)
+    {
+      scratch.Mark = 0;
+    }
     this->MarkStamp = 1;
   }
   std::vector<Id> around;
@@ -1640,9 +1665,9 @@ bool Grower::FillNarrowLoop(const std::vector<Id>& frontLoop)
     for (int j = -1; j < this->K; ++j)
     {
       const Id q = j < 0 ? v : nb[j];
-      if (q >= 0 && this->Mark[q] != this->MarkStamp)
+      if (q >= 0 && this->Scratch[q].Mark != this->MarkStamp)
       {
-        this->Mark[q] = this->MarkStamp;
+        this->Scratch[q].Mark = this->MarkStamp;
         around.push_back(q);
       }
     }
@@ -2128,7 +2153,9 @@ int vtkLocalOptimumGrowth::RequestData(
   }
 
   // Internal order along a Hilbert curve; exact duplicates merged into the first of their group.
+  // The distinct points' ids in lexicographic (x, y, z) order are kept for the seeds' order.
   pcs::HilbertSort(xyz.data(), 3, ids.data(), ids.data() + ids.size());
+  std::vector<Id> lexicographic;
   {
     std::vector<Id> rank(ids.size());
     std::iota(rank.begin(), rank.end(), 0);
@@ -2164,6 +2191,14 @@ int vtkLocalOptimumGrowth::RequestData(
         }
       }
       representative->SetValue(id, rep);
+    }
+    lexicographic.reserve(ids.size() - this->NumberOfDuplicatePoints);
+    for (Id r : rank)
+    {
+      if (keep[r])
+      {
+        lexicographic.push_back(ids[r]);
+      }
     }
     size_t kept = 0;
     for (size_t k = 0; k < ids.size(); ++k)
@@ -2301,7 +2336,23 @@ int vtkLocalOptimumGrowth::RequestData(
   parameters.MaxHoleEdges = this->MaximumHoleEdges;
   parameters.Relax = this->RelaxConstraints;
   Grower grower(x.data(), n, knn, parameters, this);
-  grower.Stretch = std::move(stretch);
+  grower.SetStretch(std::move(stretch));
+  {
+    // Seeds: the points in decreasing lexicographic order (internal ids; outliers left out).
+    std::vector<Id> internal(static_cast<size_t>(numberOfPoints), -1);
+    for (Id i = 0; i < n; ++i)
+    {
+      internal[ids[i]] = i;
+    }
+    grower.SeedOrder.reserve(n);
+    for (auto it = lexicographic.rbegin(); it != lexicographic.rend(); ++it)
+    {
+      if (internal[*it] >= 0)
+      {
+        grower.SeedOrder.push_back(internal[*it]);
+      }
+    }
+  }
   if (!this->GetAbortExecute())
   {
     grower.Run();

@@ -341,7 +341,9 @@ void Grower::SetFrame(const double* origin, const double* u, const double* w)
     }
     this->Frame = 1;
   }
-  std::copy(origin, origin + 3, this->Origin);
+  this->Origin[0] = origin[0];
+  this->Origin[1] = origin[1];
+  this->Origin[2] = origin[2];
   // W = w normalized; U = u made orthogonal to W, normalized; V = W x U.
   double length = std::sqrt(Dot(w, w));
   for (int i = 0; i < 3; ++i)

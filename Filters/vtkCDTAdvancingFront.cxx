@@ -254,74 +254,35 @@ vtkIdType RemovePinches(pcs::SurfaceMesh& mesh)
 }
 
 //------------------------------------------------------------------------------------------------
-// The automatic bins of vtkStaticPointLocator are sized for points filling their bounding box
-// (a few points per bin over its volume): on a surface sample a bin is then about ten point
-// spacings wide, and every neighbourhood query of the front (a few spacings) visits many points
-// it does not return. The bins are resized to about twice the mean spacing, estimated on a
-// subset of at most 500 points (at most 4 bins per point). This changes the cost of the queries,
-// never their answers. Returns the estimated spacing (0 if none).
-double ResizeBins(vtkStaticPointLocator* locator, const double* xyz, Id n)
+// The locator of the points of `cloud`, with bins sized for a surface sample
+// (pcs::SetSurfaceSampleDivisions, about 4 bins per point over the box's volume, area or length):
+// VTK's automatic bins suit points filling their box, and on a surface sample a bin would be
+// about ten point spacings wide, so that every neighbourhood query of the front (a few spacings)
+// would visit many points it does not return. On the benchmark clouds a bin is 2.5 to 5 mean
+// spacings wide. This changes the cost of the queries, never their answers. One build: the bins
+// were earlier resized after a first automatic build, from a spacing estimated by 500
+// FindClosestNPoints queries on those coarse bins (up to a tenth of the time on 2,775 points).
+void BuildSurfaceLocator(vtkStaticPointLocator* locator, vtkPolyData* cloud, Id n)
 {
-  const Id step = std::max<Id>(1, n / 500);
-  vtkNew<vtkIdList> closest;
-  double sum = 0.0;
-  int count = 0;
-  for (Id k = 0; k < n; k += step)
-  {
-    locator->FindClosestNPoints(4, xyz + 3 * static_cast<size_t>(k), closest);
-    for (vtkIdType j = 0; j < closest->GetNumberOfIds(); ++j)
-    {
-      const double d2 = Distance2(xyz + 3 * closest->GetId(j), xyz + 3 * static_cast<size_t>(k));
-      if (d2 > 0.0)
-      {
-        sum += std::sqrt(d2);
-        ++count;
-        break;
-      }
-    }
-  }
   double bounds[6];
-  locator->GetDataSet()->GetBounds(bounds);
-  const double estimate = count > 0 ? sum / count : 0.0;
-  double size = 2.0 * estimate;
-  if (!(size > 0.0) || !std::isfinite(size))
-  {
-    return 0.0;
-  }
-  for (int attempt = 0; attempt < 64; ++attempt)
-  {
-    double bins = 1.0;
-    int divisions[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      const double extent = bounds[2 * c + 1] - bounds[2 * c];
-      divisions[c] = static_cast<int>(std::min(1e6, std::max(1.0, std::ceil(extent / size))));
-      bins *= divisions[c];
-    }
-    if (bins <= 4.0 * static_cast<double>(n) + 64.0)
-    {
-      locator->AutomaticOff();
-      locator->SetDivisions(divisions);
-      locator->ForceBuildLocator();
-      return estimate;
-    }
-    size *= 1.26; // twice fewer bins
-  }
-  return estimate;
+  cloud->GetBounds(bounds);
+  pcs::SetSurfaceSampleDivisions(locator, bounds, n);
+  locator->SetDataSet(cloud);
+  locator->BuildLocator();
 }
 
 //------------------------------------------------------------------------------------------------
-// The points within a radius, read from the bins of the vtkStaticPointLocator (after ResizeBins):
-// the same bins and the same answers as its FindPointsWithinRadius (as a set), but the bins are
-// copied once into flat arrays (the ids of each row of bins contiguous, with their coordinates),
-// so that a query reads memory in order and makes no virtual call per point; the front makes
-// two such queries per candidate triangle, which made FindPointsWithinRadius more than 40 % of
-// the filter's time. Bucket b holds the points of bin (i, j, k) with b = i + j nx + k nx ny (the
-// locator's numbering); Build checks that every point lies in the bin its coordinates give, up
-// to one bin of rounding, and otherwise leaves the queries to the locator. When every point lies
-// exactly in the bin given by Index (the locator's own formula, clamped), the bins a query
-// visits are exactly those its box overlaps (Index is monotone); otherwise one more bin on each
-// side is visited.
+// The points within a radius, found in the bins of the vtkStaticPointLocator (its divisions and
+// bounds) held in flat arrays: the ids of each row of bins contiguous, with their coordinates, so
+// that a query reads memory in order and makes no virtual call per point; the front makes two
+// such queries per candidate triangle, which made FindPointsWithinRadius more than 40 % of the
+// filter's time. Bucket b holds the points of bin (i, j, k) with b = i + j nx + k nx ny (the
+// locator's numbering). The points are sorted into the bins here (a counting sort, in id order),
+// by Index, the bin of a coordinate clamped to the grid; Index is monotone, so the bins a query
+// visits (those its box, widened by a hair against rounding, overlaps) hold every point within
+// its radius: the answers are those of FindPointsWithinRadius (as a set) whatever bin the locator
+// itself gives a point on a bin boundary. (Copying the locator's own bucket lists, one
+// GetBucketIds call per bucket, took as long as building the locator.)
 class LocatorBins
 {
 public:
@@ -330,7 +291,6 @@ public:
     this->Locator = locator;
     this->Points = xyz;
     this->Valid = false;
-    this->Margin = 0;
     locator->GetDivisions(this->Divisions);
     const double* bounds = locator->GetBounds();
     const double* spacing = locator->GetSpacing();
@@ -345,49 +305,32 @@ public:
       this->Origin[c] = bounds[2 * c];
       this->Inverse[c] = spacing[c] > 0.0 ? 1.0 / spacing[c] : 0.0;
     }
+    const int64_t nx = this->Divisions[0];
+    const int64_t nxy = nx * this->Divisions[1];
+    auto bucketOf = [&](Id id)
+    {
+      const double* p = xyz + 3 * static_cast<size_t>(id);
+      return this->Clamped(p[0], 0) + nx * this->Clamped(p[1], 1) + nxy * this->Clamped(p[2], 2);
+    };
     this->Offsets.assign(static_cast<size_t>(buckets) + 1, 0);
-    this->Ids.resize(static_cast<size_t>(n));
-    this->XYZ.resize(3 * static_cast<size_t>(n));
-    vtkNew<vtkIdList> ids;
-    int64_t filled = 0;
+    for (Id id = 0; id < n; ++id)
+    {
+      ++this->Offsets[bucketOf(id) + 1];
+    }
     for (int64_t b = 0; b < buckets; ++b)
     {
-      this->Offsets[b] = filled;
-      if (locator->GetNumberOfPointsInBucket(b) == 0)
-      {
-        continue;
-      }
-      locator->GetBucketIds(b, ids);
-      const int bin[3] = { static_cast<int>(b % this->Divisions[0]),
-        static_cast<int>((b / this->Divisions[0]) % this->Divisions[1]),
-        static_cast<int>(b / (int64_t(this->Divisions[0]) * this->Divisions[1])) };
-      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-      {
-        const vtkIdType id = ids->GetId(k);
-        if (id < 0 || id >= n || filled >= n)
-        {
-          return;
-        }
-        const double* p = xyz + 3 * id;
-        for (int c = 0; c < 3; ++c)
-        {
-          const int index = this->Index(p[c], c);
-          if (std::abs(index - bin[c]) > 1)
-          {
-            return; // not the numbering assumed: the locator answers
-          }
-          if (std::max(0, std::min(this->Divisions[c] - 1, index)) != bin[c])
-          {
-            this->Margin = 1;
-          }
-        }
-        this->Ids[filled] = static_cast<Id>(id);
-        std::copy_n(p, 3, &this->XYZ[3 * filled]);
-        ++filled;
-      }
+      this->Offsets[b + 1] += this->Offsets[b];
     }
-    this->Offsets[buckets] = filled;
-    this->Valid = filled == n;
+    std::vector<int64_t> fill(this->Offsets.begin(), this->Offsets.end() - 1);
+    this->Ids.resize(static_cast<size_t>(n));
+    this->XYZ.resize(3 * static_cast<size_t>(n));
+    for (Id id = 0; id < n; ++id)
+    {
+      const int64_t slot = fill[bucketOf(id)]++;
+      this->Ids[slot] = id;
+      std::copy_n(xyz + 3 * static_cast<size_t>(id), 3, &this->XYZ[3 * slot]);
+    }
+    this->Valid = true;
   }
 
   // The ids of the points within `radius` of x (in no particular order) and, when `distances2`
@@ -415,14 +358,11 @@ public:
       return;
     }
     int low[3], high[3];
+    const double margin = radius * (1.0 + 1e-9);
     for (int c = 0; c < 3; ++c)
     {
-      low[c] = std::max(0, this->Index(x[c] - radius, c) - this->Margin);
-      high[c] = std::min(this->Divisions[c] - 1, this->Index(x[c] + radius, c) + this->Margin);
-      if (low[c] > high[c])
-      {
-        return;
-      }
+      low[c] = this->Clamped(x[c] - margin, c);
+      high[c] = this->Clamped(x[c] + margin, c);
     }
     const double r2 = radius * radius;
     const int64_t nx = this->Divisions[0];
@@ -451,17 +391,16 @@ public:
   }
 
 private:
-  // Bin index of coordinate v along axis c (may be outside [0, divisions - 1]).
-  int Index(double v, int c) const
+  // Bin index of coordinate v along axis c, clamped to [0, divisions - 1] (monotone in v).
+  int Clamped(double v, int c) const
   {
     const double f = std::floor((v - this->Origin[c]) * this->Inverse[c]);
-    return static_cast<int>(std::max(-2.0, std::min(f, 2.0 + this->Divisions[c])));
+    return static_cast<int>(std::max(0.0, std::min(f, this->Divisions[c] - 1.0)));
   }
 
   vtkStaticPointLocator* Locator = nullptr;
   const double* Points = nullptr; // the coordinates the locator was built on
   bool Valid = false;
-  int Margin = 1; // bins visited beyond a query's box on each side
   int Divisions[3] = { 1, 1, 1 };
   double Origin[3] = { 0, 0, 0 };
   double Inverse[3] = { 0, 0, 0 };
@@ -1640,13 +1579,7 @@ int vtkCDTAdvancingFront::RequestData(
   vtkNew<vtkPolyData> cloud;
   cloud->SetPoints(localPoints);
   vtkNew<vtkStaticPointLocator> locator;
-  locator->SetDataSet(cloud);
-  locator->BuildLocator();
-  const double spacingEstimate = ResizeBins(locator, xyz.data(), local);
-  if (this->GetAbortExecute())
-  {
-    return finish();
-  }
+  BuildSurfaceLocator(locator, cloud, local);
   LocatorBins bins;
   bins.Build(locator, xyz.data(), local);
   this->UpdateProgress(0.02);
@@ -1743,9 +1676,7 @@ int vtkCDTAdvancingFront::RequestData(
     vtkNew<vtkPolyData> distinctCloud;
     distinctCloud->SetPoints(distinctPoints);
     vtkNew<vtkStaticPointLocator> distinctLocator;
-    distinctLocator->SetDataSet(distinctCloud);
-    distinctLocator->BuildLocator();
-    ResizeBins(distinctLocator, distinctXYZ.data(), distinctCount);
+    BuildSurfaceLocator(distinctLocator, distinctCloud, distinctCount);
     std::vector<double> distinctNormals;
     std::vector<int32_t> distinctTable; // not the table of all the points
     int distinctOthers = 0;
@@ -1915,14 +1846,16 @@ int vtkCDTAdvancingFront::RequestData(
   {
     // The smallest non-zero distance to another point: from the table of nearest neighbours
     // (nearest first) when one of them is distinct, else among the points within a radius, the
-    // radius doubled from the estimated spacing until one is found or the ball holds the whole
+    // radius doubled from the width of a bin until one is found or the ball holds the whole
     // cloud.
     double bounds[6];
     cloud->GetBounds(bounds);
     const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
       (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
       (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-    const double first = spacingEstimate > 0.0 ? 1.5 * spacingEstimate : diagonal;
+    const double* binSize = locator->GetSpacing();
+    const double widest = std::max({ binSize[0], binSize[1], binSize[2] });
+    const double first = widest > 0.0 ? widest : diagonal;
     vtkSMPThreadLocalObject<vtkIdList> lists;
     vtkSMPThreadLocal<std::vector<Id>> balls;
     vtkSMPTools::For(0, local,

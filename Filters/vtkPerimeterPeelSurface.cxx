@@ -53,6 +53,7 @@ public:
   {
     const int64_t cells = dt.GetNumberOfCells();
     this->Inside.assign(cells, 0);
+    this->Bottleneck.assign(cells, std::numeric_limits<float>::infinity());
     this->Count.assign(numberOfPoints, 0);
     this->OutsideCount.assign(numberOfPoints, 0);
     for (int64_t c = 0; c < cells; ++c)
@@ -71,6 +72,34 @@ public:
   }
 
   bool IsInside(int64_t c) const { return this->Inside[c] != 0; }
+
+  // The widest way in to the inside cell c, whose largest exterior facet measures m: over its
+  // exterior facets, the largest of min(the facet's measure, the Bottleneck of the outside cell
+  // behind it). When every such Bottleneck is over `above` (often: the infinite cells), the
+  // answer is m if m <= above and over `above` otherwise, and m is returned (no facet measured).
+  double WidestWayIn(int64_t c, double m, double above) const
+  {
+    bool bounded = false;
+    for (int j = 0; j < 4 && !bounded; ++j)
+    {
+      const int64_t n = this->DT.Neighbor(c, j);
+      bounded = !this->Inside[n] && this->Bottleneck[n] <= above;
+    }
+    if (!bounded)
+    {
+      return m;
+    }
+    double widest = -1.0;
+    for (int j = 0; j < 4; ++j)
+    {
+      const int64_t n = this->DT.Neighbor(c, j);
+      if (!this->Inside[n] && this->Bottleneck[n] > widest)
+      {
+        widest = std::max(widest, std::min<double>(this->Bottleneck[n], this->FacetMeasure(c, j)));
+      }
+    }
+    return widest;
+  }
 
   // Facet j of c (opposite vertex j) is exterior: c inside, its neighbour across j not.
   bool IsExterior(int64_t c, int j) const
@@ -374,6 +403,11 @@ public:
   const double* XYZ;
   int Measure;
   std::vector<uint8_t> Inside;
+  // For each removed cell: the smallest facet the peel passed through on the widest way to it
+  // (its WidestWayIn when it went; for a group's cells, that of the group's first cell); infinite
+  // for the infinite cells (the hull) and the inside ones. Single precision: it feeds a factor-1.5
+  // test (rule 2 of the class docs).
+  std::vector<float> Bottleneck;
   std::vector<int32_t> Count;        // inside cells around each vertex
   std::vector<int32_t> OutsideCount; // outside cells (removed or infinite) around each vertex
   std::vector<double> Spacing;       // local spacing of each point (relative measures only)
@@ -1093,17 +1127,22 @@ int vtkPerimeterPeelSurface::RequestData(
                         : threshold * groupFactor;
   };
   // Whether the inside cell c, whose exterior facets are `mask` and the largest of them m, may
-  // not be removed now. With ManifoldOutput, a cell whose facet is not clearly too large for the
-  // surface (at most GroupFactor x threshold) is not removed when it would show a facet more than
-  // 1.5 times larger (a cave under a true surface triangle; neighbouring surface triangles of a
-  // uniform random sample differ by less), nor a cell whose exterior facets are all within the
-  // cave limit when it would show one over it (a cave dug in steps of less than 1.5 times).
+  // not be removed now. With ManifoldOutput, a cell is not removed when it would show a facet more
+  // than 1.5 times larger than the bottleneck of its widest way in (WidestWayIn: the smallest facet
+  // the peel passed through to reach it, at most m) if that is not clearly too large for the
+  // surface (at most GroupFactor x threshold): a cave under a true surface triangle, dug at once or
+  // in steps that each grow by less than 1.5 times (neighbouring surface triangles of a uniform
+  // random sample differ by less; a peel coming from the hull meets shrinking facets). Nor is a
+  // cell whose exterior facets are all within the cave limit when it would show one over it. With
+  // the AREA measure the bottleneck is m (slivers give surface triangles of nearly no area).
   // Each rule, once true, stays true while the other cells go and none of c's face neighbours
   // does: the counts of inside cells only drop, a boundary vertex or edge stays on the boundary,
-  // and c's own facets change only with its neighbours (which offer c again when they go).
+  // and c's own facets and its widest way in change only with its neighbours (which offer c again
+  // when they go).
   // `edgeRule` false leaves out the sculpting rule of two exterior facets (a walk around an edge,
   // the costliest test; when a cell is offered it nearly always passes, so it is left to the
   // cell's turn in the queue).
+  const bool pathRule = this->FacetMeasure != AREA;
   auto refused = [&](int64_t c, int mask, double m, bool edgeRule)
   {
     if (solid.Orphans(c))
@@ -1114,7 +1153,8 @@ int vtkPerimeterPeelSurface::RequestData(
     {
       return false;
     }
-    if (m <= threshold * groupFactor && solid.LargestFacet(c, 15 & ~mask) > 1.5 * m)
+    const double smallest = pathRule ? solid.WidestWayIn(c, m, threshold * groupFactor) : m;
+    if (smallest <= threshold * groupFactor && solid.LargestFacet(c, 15 & ~mask) > 1.5 * smallest)
     {
       return true;
     }
@@ -1193,6 +1233,8 @@ int vtkPerimeterPeelSurface::RequestData(
         }
         continue; // refused; offered again when a neighbour goes
       }
+      solid.Bottleneck[c] =
+        static_cast<float>(solid.WidestWayIn(c, m, std::numeric_limits<float>::max()));
       solid.SetInside(c, false);
       for (int k = 0; k < 4; ++k)
       {
@@ -1256,9 +1298,16 @@ int vtkPerimeterPeelSurface::RequestData(
         for (const Entry& candidate : candidates)
         {
           const int64_t c = candidate.second;
-          if (aborted || !solid.IsInside(c) || groups->HasFailed(c) ||
-            solid.LargestExteriorFacet(c) <= threshold ||
-            !groups->Try(c, threshold, threshold * handleFactor))
+          if (aborted || !solid.IsInside(c) || groups->HasFailed(c))
+          {
+            continue;
+          }
+          const double m = solid.LargestExteriorFacet(c);
+          // The group's cells are on the widest way in to its first cell (rule 2): a group
+          // started under a small bottleneck (a cave's wall) does not open a free way inwards.
+          const double way = pathRule ? solid.WidestWayIn(c, m, std::numeric_limits<float>::max())
+                                      : std::numeric_limits<double>::infinity();
+          if (m <= threshold || !groups->Try(c, threshold, threshold * handleFactor))
           {
             continue;
           }
@@ -1266,6 +1315,7 @@ int vtkPerimeterPeelSurface::RequestData(
           ++groupCount;
           for (int64_t g : groups->Group)
           {
+            solid.Bottleneck[g] = static_cast<float>(way);
             removed();
             for (int k = 0; k < 4; ++k)
             {

@@ -13,6 +13,9 @@
 // - a goblet (paper Fig. 1; 8,000 random points, uniform by area): closed, manifold, genus 0,
 //   >= 99 %, and its cup stays hollow (points on the axis inside the cup are outside the solid);
 // - dense random samples (100,000 points): spheres genus 0 (no spurious handle), a torus genus 1;
+// - noisy random samples (20,000 points of the sphere and the torus, Gaussian noise of 0.1 mean
+//   spacing): closed, manifold, genus 0 / 1, >= 97 % of the points, volume within 3 % of the true
+//   volume (not hollowed), every triangle centroid within one mean spacing of the surface;
 // - ManifoldOutput off (the paper's peeling): no point left in no tetrahedron;
 // - the field data agree with the mesh (triangles, used points, Used array).
 #include "vtkPerimeterPeelSurface.h"
@@ -23,6 +26,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkMath.h"
 #include "vtkPointData.h"
 #include "vtkSelectEnclosedPoints.h"
 
@@ -30,7 +34,9 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <map>
+#include <random>
 #include <string>
 
 namespace
@@ -294,6 +300,86 @@ bool CheckGradedTorus()
   return ok;
 }
 
+// Random samples of the unit sphere and of the torus (20,000 points) with Gaussian noise of 0.1
+// mean spacing in each coordinate, as scans have. Before the peel compared the facets it shows
+// with the smallest facet on its way in (not only with the facet it came through), it dug under
+// the noisy surface layer in steps of less than 1.5 times (hull facets over the noise are 9-10
+// local spacings, above the cave limit) and hollowed both shapes: a double layer, closed,
+// manifold, genus 0 or 1 and over 95 % of the points, enclosing 0.7 % of the sphere's volume and
+// 4 % of the torus's. Now: within 3 % of the true volume, every triangle within one spacing of the
+// surface, most points used (a few lie under the noisy layer, inside the solid).
+bool CheckNoisy()
+{
+  const int n = 20000;
+  struct Shape
+  {
+    const char* Label;
+    std::vector<double> Points;
+    double Spacing, Volume;
+    int Genus;
+    std::function<double(const double*)> Distance;
+  };
+  const Shape shapes[] = {
+    { "noisy sphere",
+      SpherePoints(n, 7),
+      std::sqrt(4 * M_PI / n),
+      4 * M_PI / 3,
+      0,
+      [](const double* p) { return std::fabs(std::sqrt(vtkMath::Dot(p, p)) - 1.0); } },
+    { "noisy torus",
+      TorusPoints(n, 7),
+      std::sqrt(4 * M_PI * M_PI * 0.35 / n),
+      2 * M_PI * M_PI * 0.35 * 0.35,
+      1,
+      [](const double* p)
+      { return std::fabs(std::hypot(std::hypot(p[0], p[1]) - 1.0, p[2]) - 0.35); } },
+  };
+  bool ok = true;
+  for (const Shape& shape : shapes)
+  {
+    std::vector<double> xyz = shape.Points;
+    std::mt19937_64 rng(11);
+    std::normal_distribution<double> noise(0.0, 0.1 * shape.Spacing);
+    for (double& x : xyz)
+    {
+      x += noise(rng);
+    }
+    auto mesh = Peel(xyz);
+    auto q = Measure(mesh);
+    const std::string label = shape.Label;
+    PCS_CHECK(FieldValue(q, "NumberOfBoundaryEdges") == 0, label << ": closed");
+    PCS_CHECK(FieldValue(q, "NumberOfNonManifoldEdges") == 0 &&
+        FieldValue(q, "NumberOfNonManifoldVertices") == 0,
+      label << ": manifold");
+    PCS_CHECK(FieldValue(q, "NumberOfConnectedComponents") == 1, label << ": one component");
+    PCS_CHECK(FieldValue(q, "Genus") == shape.Genus, label << ": genus " << FieldValue(q, "Genus"));
+    PCS_CHECK(FieldValue(q, "OrientationConsistency") == 1.0, label << ": orientation");
+    PCS_CHECK(
+      FieldValue(q, "Coverage") >= 0.97, label << ": coverage " << FieldValue(q, "Coverage"));
+    const double volume = SignedVolume6(mesh) / 6.0 / shape.Volume;
+    double farthest = 0.0;
+    for (const auto& t : pcstest::CellTuples<3>(mesh.GetPointer()))
+    {
+      double c[3] = { 0, 0, 0 };
+      for (int k = 0; k < 3; ++k)
+      {
+        double p[3];
+        mesh->GetPoint(t[k], p);
+        vtkMath::MultiplyScalar(p, 1.0 / 3.0);
+        vtkMath::Add(c, p, c);
+      }
+      farthest = std::max(farthest, shape.Distance(c) / shape.Spacing);
+    }
+    std::cout << label << ": volume / true volume " << volume << ", farthest triangle " << farthest
+              << " spacings, coverage " << FieldValue(q, "Coverage") << ", genus "
+              << FieldValue(q, "Genus") << std::endl;
+    PCS_CHECK(std::fabs(volume - 1.0) <= 0.03, label << ": volume ratio " << volume);
+    PCS_CHECK(farthest <= 1.0, label << ": farthest triangle " << farthest << " spacings");
+    ok = CheckConsistentFields(label.c_str(), mesh) && ok;
+  }
+  return ok;
+}
+
 // Dense random samples of a sphere (100,000 points): the surface is the convex hull, genus 0; no
 // group removal may open a handle. Before a handle needed a start facet over 2 x GroupFactor x
 // threshold, these two seeds got small spurious tunnels between two dents (genus 1 and 2; seeds
@@ -328,5 +414,6 @@ int TestPerimeterPeelSurface(int, char*[])
   ok = CheckGoblet() && ok;
   ok = CheckDenseSpheres() && ok;
   ok = CheckDenseTorus() && ok;
+  ok = CheckNoisy() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -333,29 +333,28 @@ public:
     this->Valid = true;
   }
 
-  // The ids of the points within `radius` of x (in no particular order) and, when `distances2`
-  // is given, their squared distances to x (the value Distance2(point, x) gives). `scratch` serves
-  // the locator's query when the bins were not copied (thread safe with one scratch per thread).
-  void FindPointsWithinRadius(double radius, const double* x, std::vector<Id>& result,
-    vtkIdList* scratch, std::vector<double>* distances2 = nullptr) const
+  // Calls visit(id, d2) for each point within `radius` of x, in no particular order, with d2 its
+  // squared distance to x (the value Distance2(point, x) gives), until visit returns false.
+  // Returns false when visit stopped the walk. `scratch` serves the locator's query when the bins
+  // were not built (thread safe with one scratch per thread).
+  template<typename Visit>
+  bool ForEachPointWithinRadius(double radius,
+    const double* x,
+    vtkIdList* scratch,
+    Visit&& visit) const
   {
-    result.clear();
-    if (distances2)
-    {
-      distances2->clear();
-    }
     if (!this->Valid)
     {
       this->Locator->FindPointsWithinRadius(radius, x, scratch);
       for (vtkIdType k = 0; k < scratch->GetNumberOfIds(); ++k)
       {
-        result.push_back(static_cast<Id>(scratch->GetId(k)));
-        if (distances2)
+        const vtkIdType id = scratch->GetId(k);
+        if (!visit(static_cast<Id>(id), Distance2(this->Points + 3 * id, x)))
         {
-          distances2->push_back(Distance2(this->Points + 3 * scratch->GetId(k), x));
+          return false;
         }
       }
-      return;
+      return true;
     }
     int low[3], high[3];
     const double margin = radius * (1.0 + 1e-9);
@@ -375,19 +374,33 @@ public:
         const int64_t end = this->Offsets[row + high[0] + 1];
         for (int64_t m = this->Offsets[row + low[0]]; m < end; ++m)
         {
-          const double* p = &this->XYZ[3 * m];
-          const double d2 = Distance2(p, x);
-          if (d2 <= r2)
+          const double d2 = Distance2(&this->XYZ[3 * m], x);
+          if (d2 <= r2 && !visit(this->Ids[m], d2))
           {
-            result.push_back(this->Ids[m]);
-            if (distances2)
-            {
-              distances2->push_back(d2);
-            }
+            return false;
           }
         }
       }
     }
+    return true;
+  }
+
+  // The ids of the points within `radius` of x (in no particular order), as
+  // ForEachPointWithinRadius visits them.
+  void FindPointsWithinRadius(double radius,
+    const double* x,
+    std::vector<Id>& result,
+    vtkIdList* scratch) const
+  {
+    result.clear();
+    this->ForEachPointWithinRadius(radius,
+      x,
+      scratch,
+      [&result](Id id, double)
+      {
+        result.push_back(id);
+        return true;
+      });
   }
 
 private:
@@ -665,11 +678,9 @@ private:
   // The points within `radius` of x. Every query centre lies in the bounding box of the points,
   // so a ball larger than its diagonal holds them all: the radius is capped there (a huge radius
   // would overflow the locator's squared distances).
-  void FindPoints(double radius, const double* x, std::vector<Id>& result,
-    std::vector<double>* distances2 = nullptr)
+  void FindPoints(double radius, const double* x, std::vector<Id>& result)
   {
-    this->Bins.FindPointsWithinRadius(
-      std::min(radius, this->Diagonal), x, result, this->Scratch, distances2);
+    this->Bins.FindPointsWithinRadius(std::min(radius, this->Diagonal), x, result, this->Scratch);
   }
 
   // Point x projected along its normal onto the plane through `origin` with normal `normal`
@@ -722,8 +733,9 @@ private:
   // Scratch.
   vtkNew<vtkIdList> Scratch;
   std::vector<Id> Near;
-  std::vector<Id> Ball;
-  std::vector<double> BallDistance2; // of each Ball point to the centroid of the triangle tested
+  // The points stamped by the II.D walk of the triangle tested, with their squared distances to
+  // its centroid.
+  std::vector<std::pair<Id, double>> StampedEnds;
   std::vector<std::pair<double, Id>> Candidates;
   std::vector<Id> Neighbors;
   std::vector<int64_t> VertexTriangles;
@@ -1002,24 +1014,37 @@ bool Front::PassesProjectionTests(
   const double edgeReach =
     this->EdgeReach.Reach(centroid, 1.01 * pointReach, this->LongestEdge) * 1.000001;
   const double segmentReach2 = 1.0201 * pointReach * pointReach;
-  this->FindPoints(edgeReach, centroid, this->Ball, &this->BallDistance2);
-  const vtkIdType count = static_cast<vtkIdType>(this->Ball.size());
   const double pointReach2 = pointReach * pointReach;
   const double triangleReach2 = 1.0201 * reach * reach; // the triangle's ball, 1 % of margin
-
-  // II.D.1: neighbouring points (Fig. 3).
-  for (vtkIdType k = 0; k < count; ++k)
+  if (++this->CurrentStamp == 0)                        // wrapped around: no stale stamp may match
   {
-    const Id p = static_cast<Id>(this->Ball[k]);
-    if (this->BallDistance2[k] > pointReach2 || p == e0 || p == e1 || p == third ||
-      this->Status[p] != Usable)
+    std::fill(this->Stamp.begin(), this->Stamp.end(), 0u);
+    std::fill(this->ProjectedStamp.begin(), this->ProjectedStamp.end(), 0u);
+    this->CurrentStamp = 1;
+  }
+
+  // One walk over the ball: each point is tested by II.D.1 (Fig. 3), and stamped as an end point
+  // of the edges II.D.2 tests after the walk when it may be the nearer end of an edge passing
+  // within the segment reach s (within sqrt(s^2 + L^2 / 4) of g for its longest edge L; every
+  // edge that may cross has at least one stamped end point, and is tested from its stamped end
+  // point of smaller id).
+  this->StampedEnds.clear();
+  auto testPoint = [&](Id p, double distance2)
+  {
+    if (distance2 <= segmentReach2 + 0.25 * this->MaxIncident[p] * this->MaxIncident[p] &&
+      !this->Mesh.IsFree(p))
     {
-      continue;
+      this->Stamp[p] = this->CurrentStamp;
+      this->StampedEnds.emplace_back(p, distance2);
+    }
+    if (distance2 > pointReach2 || p == e0 || p == e1 || p == third || this->Status[p] != Usable)
+    {
+      return true;
     }
     const double* np = this->N(p);
     if (Dot(np, n0) <= 0.0 || Dot(np, n1) <= 0.0 || Dot(np, n2) <= 0.0)
     {
-      continue; // Fig. 3b: the other side of a thin sheet
+      return true; // Fig. 3b: the other side of a thin sheet
     }
     // It blocks when its normal line crosses the open triangle (exact) at a ray parameter of at
     // most MaximumRay. The parameter is tested first, and when the line is not nearly parallel
@@ -1030,7 +1055,7 @@ bool Front::PassesProjectionTests(
     if (!pcs::projected::RayParameter(this->P(p), np, this->P(e0), normal, t) ||
       !(std::fabs(t) <= maximumRay))
     {
-      continue;
+      return true;
     }
     if (std::fabs(Dot(np, normal)) >= 0.1 * length)
     {
@@ -1038,46 +1063,23 @@ bool Front::PassesProjectionTests(
       const double hit[3] = { x[0] + t * np[0], x[1] + t * np[1], x[2] + t * np[2] };
       if (Distance2(hit, centroid) > triangleReach2)
       {
-        continue;
+        return true;
       }
     }
-    if (pcs::projected::LineCrossesTriangle(
-          this->P(p), np, this->P(e0), this->P(e1), this->P(third)))
-    {
-      return false;
-    }
+    return !pcs::projected::LineCrossesTriangle(
+      this->P(p), np, this->P(e0), this->P(e1), this->P(third));
+  };
+  if (!this->Bins.ForEachPointWithinRadius(
+        std::min(edgeReach, this->Diagonal), centroid, this->Scratch, testPoint))
+  {
+    return false;
   }
 
-  // II.D.2: projected neighbouring edges (Fig. 4), each edge once (from its end point in the
-  // ball of smaller id, or the one end point in the ball).
-  if (++this->CurrentStamp == 0) // wrapped around: no stale stamp may match
+  // II.D.2: projected neighbouring edges (Fig. 4), each edge once.
+  for (const auto& stamped : this->StampedEnds)
   {
-    std::fill(this->Stamp.begin(), this->Stamp.end(), 0u);
-    std::fill(this->ProjectedStamp.begin(), this->ProjectedStamp.end(), 0u);
-    this->CurrentStamp = 1;
-  }
-  // The end points that may be the nearer end of an edge passing within the segment reach s
-  // (within sqrt(s^2 + L^2 / 4) of g for their longest edge L) are stamped; every edge that may
-  // cross has at least one stamped end point, and is tested from its stamped end point of smaller
-  // id.
-  for (vtkIdType k = 0; k < count; ++k)
-  {
-    const Id u = static_cast<Id>(this->Ball[k]);
-    if (this->BallDistance2[k] <=
-        segmentReach2 + 0.25 * this->MaxIncident[u] * this->MaxIncident[u] &&
-      !this->Mesh.IsFree(u))
-    {
-      this->Stamp[u] = this->CurrentStamp;
-    }
-  }
-  for (vtkIdType k = 0; k < count; ++k)
-  {
-    const Id u = static_cast<Id>(this->Ball[k]);
-    if (this->Stamp[u] != this->CurrentStamp)
-    {
-      continue; // no edge of u reaches the triangle, or not from u
-    }
-    const double uDistance2 = this->BallDistance2[k]; // (within s: every edge of u passes)
+    const Id u = stamped.first;
+    const double uDistance2 = stamped.second; // (within s: every edge of u passes)
     const Id* ends = &this->Adjacent[AdjacentCapacity * static_cast<size_t>(u)];
     int numberOfEnds = this->AdjacentCount[u];
     if (numberOfEnds == Overflow)

@@ -462,29 +462,40 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
           {
             continue;
           }
-          locator->FindPointsWithinRadius(radiusFactor * reach, p, ball);
-          offLine.clear();
-          for (vtkIdType j = 0; j < ball->GetNumberOfIds(); ++j)
+          // The points off the line within `radius` of p.
+          auto collectOffLine = [&](double radius)
           {
-            const int32_t id = static_cast<int32_t>(ball->GetId(j));
-            const double* q = xyz + 3 * static_cast<size_t>(id);
-            if (id == i || id < 0 || id >= n || !IsFinite(q))
+            offLine.clear();
+            locator->FindPointsWithinRadius(radius, p, ball);
+            for (vtkIdType j = 0; j < ball->GetNumberOfIds(); ++j)
             {
-              continue;
+              const int32_t id = static_cast<int32_t>(ball->GetId(j));
+              const double* q = xyz + 3 * static_cast<size_t>(id);
+              if (id == i || id < 0 || id >= n || !IsFinite(q))
+              {
+                continue;
+              }
+              Candidate candidate;
+              candidate.Id = id;
+              const double v[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+              const double along = vtkMath::Dot(v, e);
+              for (int c = 0; c < 3; ++c)
+              {
+                candidate.Across[c] = v[c] - along * e[c];
+              }
+              if (vtkMath::Dot(candidate.Across, candidate.Across) > along * along)
+              {
+                candidate.Distance2 = vtkMath::Dot(v, v);
+                offLine.push_back(candidate);
+              }
             }
-            Candidate candidate;
-            candidate.Id = id;
-            const double v[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
-            const double along = vtkMath::Dot(v, e);
-            for (int c = 0; c < 3; ++c)
-            {
-              candidate.Across[c] = v[c] - along * e[c];
-            }
-            if (vtkMath::Dot(candidate.Across, candidate.Across) > along * along)
-            {
-              candidate.Distance2 = vtkMath::Dot(v, v);
-              offLine.push_back(candidate);
-            }
+          };
+          // Within 4 dk first, and within radiusFactor dk only when no point is off the line
+          // there: the same answer where the nearest lines are within 4 dk, a smaller ball.
+          collectOffLine(std::min(4.0, radiusFactor) * reach);
+          if (offLine.empty() && radiusFactor > 4.0)
+          {
+            collectOffLine(radiusFactor * reach);
           }
           if (offLine.empty())
           {
@@ -557,6 +568,29 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
     return -1;
   }
   return changed;
+}
+
+bool OnOneScanLine(const double* xyz, const double* stretch, int32_t a, int32_t b, int32_t c)
+{
+  auto along = [&](int32_t p, int32_t q)
+  {
+    const double* pp = xyz + 3 * static_cast<size_t>(p);
+    const double* pq = xyz + 3 * static_cast<size_t>(q);
+    const double w[3] = { pq[0] - pp[0], pq[1] - pp[1], pq[2] - pp[2] };
+    for (int32_t end : { p, q })
+    {
+      const double* s = stretch + 3 * static_cast<size_t>(end);
+      double cross[3];
+      vtkMath::Cross(w, s, cross);
+      const double dot = vtkMath::Dot(w, s);
+      if (dot != 0.0 && vtkMath::Dot(cross, cross) <= dot * dot)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  return along(a, b) && along(b, c) && along(c, a);
 }
 
 void SetSurfaceSampleDivisions(

@@ -54,7 +54,8 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
 /// lie along a curve.
 ///
 /// For such a point p, with dk the distance to its k-th neighbour, a point q within
-/// `radiusFactor` dk of p (default 4: lines up to about 4 k / 2 spacings apart) is off the line
+/// `radiusFactor` dk of p (default 4: lines up to about 4 k / 2 spacings apart; a larger factor
+/// is searched only where no point within 4 dk is off the line) is off the line
 /// when its distance to the line p + t e exceeds its distance along it (|(q - p) x e| > |(q - p) .
 /// e|: within 45 degrees of the plane normal to e, so the line's own points, even bent, are not
 /// taken). The off-line points are split in two sides by the sign of their component normal to e
@@ -91,6 +92,28 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
   double radiusFactor = 4.0,
   double minimumShare = 0.0,
   const std::function<bool(double)>& progress = nullptr);
+
+/// The squared length of the offset `w` in the scan-line sampling's metric between two points
+/// whose stretches (3 values each, as made by AddOffLineNeighbors; null for none) are `sa` and
+/// `sb`: |w|^2 + max((w . sa)^2, (w . sb)^2). The larger of the two components: the stretches of
+/// two neighbours on one line are nearly parallel, and an offset along a line stays long where
+/// one end (the end of a line, the edge of a scanned region) got no stretch. |w|^2 where both
+/// are zero.
+inline double StretchedLength2(const double w[3], const double* sa, const double* sb)
+{
+  const double alongA = sa ? w[0] * sa[0] + w[1] * sa[1] + w[2] * sa[2] : 0.0;
+  const double alongB = sb ? w[0] * sb[0] + w[1] * sb[1] + w[2] * sb[2] : 0.0;
+  const double along2 = alongA * alongA > alongB * alongB ? alongA * alongA : alongB * alongB;
+  return w[0] * w[0] + w[1] * w[1] + w[2] * w[2] + along2;
+}
+
+/// True when the triangle (a, b, c) of points of `xyz` lies along one scan line: each of its three
+/// edges runs along the line at one of its ends, within 45 degrees of the stretch there (|w x s|
+/// <= |w . s|: AddOffLineNeighbors' rule for a line's own points; `stretch` 3 values per point).
+/// Such a triangle is a sliver of three points of one line (in the sampling's metric an angle
+/// near 180 degrees), never part of the surface between the lines. False where the stretches are
+/// zero.
+bool OnOneScanLine(const double* xyz, const double* stretch, int32_t a, int32_t b, int32_t c);
 
 /// Bin grid of `locator` (divisions set, Automatic off) for a sample of a surface: `n` points in
 /// the box `bounds`, about `binsPerPoint` bins per point over the box's volume (its area when

@@ -356,7 +356,10 @@ bool EstimateNormals(vtkStaticPointLocator* locator,
   std::vector<double>& variation,
   std::vector<int32_t>& neighbors,
   int& k,
-  const std::function<bool(double)>& progress)
+  const std::function<bool(double)>& progress,
+  std::vector<double>* stretch,
+  double scanLineShare,
+  double scanLineRadiusFactor)
 {
   normals.assign(3 * static_cast<size_t>(std::max(n, 0)), 0.0);
   variation.assign(static_cast<size_t>(std::max(n, 0)), 1.0);
@@ -372,6 +375,12 @@ bool EstimateNormals(vtkStaticPointLocator* locator,
     return false;
   }
   k = others;
+  if (stretch &&
+    AddOffLineNeighbors(
+      locator, xyz, n, others, neighbors, stretch, 0.05, scanLineRadiusFactor, scanLineShare) <= 0)
+  {
+    stretch->clear();
+  }
   EstimatePlaneNormals(xyz, n, neighbors, others, normals, variation);
   if (progress && !progress(0.9))
   {

@@ -75,6 +75,13 @@ bool OrientNormals(const double* xyz,
 /// number of neighbours per point, min(sampleSize, n) - 1; 0 until the table is complete).
 /// `progress` (optional) receives the fraction done (the search is the first 80 %); returning
 /// false stops the estimation and the function returns false (outputs incomplete).
+///
+/// With `stretch` (optional), scan-line sampling is handled before the planes: the table is
+/// extended by AddOffLineNeighbors (pcsNearestNeighbors.h; `scanLineShare` its minimumShare,
+/// `scanLineRadiusFactor` its radiusFactor), whose stretch vectors `stretch` receives (3 n
+/// values). On lines 6 or more times denser along
+/// than across, the nearest points of a point lie on its own line and their plane, any plane
+/// through the line, is not the surface's; with the points of the lines beside it, it is.
 bool EstimateNormals(vtkStaticPointLocator* locator,
   const double* xyz,
   int32_t n,
@@ -84,7 +91,10 @@ bool EstimateNormals(vtkStaticPointLocator* locator,
   std::vector<double>& variation,
   std::vector<int32_t>& neighbors,
   int& k,
-  const std::function<bool(double)>& progress = nullptr);
+  const std::function<bool(double)>& progress = nullptr,
+  std::vector<double>* stretch = nullptr,
+  double scanLineShare = 0.5,
+  double scanLineRadiusFactor = 4.0);
 }
 
 #endif

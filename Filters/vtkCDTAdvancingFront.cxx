@@ -85,6 +85,31 @@ inline double Distance2(const double* a, const double* b)
   return Dot(d, d);
 }
 
+// Scan-line sampling is taken for the pattern of a region when at least this share of a point's
+// nearest lie along their lines too (pcs::AddOffLineNeighbors' minimumShare). Higher than the
+// greedy filter's 1/2: the line test reads the 4 nearest of the 9 of the normal estimation, which
+// line up by chance far more often than 6 of 12 (at 1/2: 145 of 10^5 random samples of bunny00,
+// 50 points of the noisy camel; at 0.9 none, and every point of the scan clouds still).
+constexpr double ScanLineShare = 0.9;
+// The off-line points are searched within this many times a point's NormalSampleSize - 1-th
+// neighbour distance (pcs::AddOffLineNeighbors' radiusFactor): with the default 10 points, lines
+// up to about 36 spacings apart (4, its default, reaches 18: not the 20x scans).
+constexpr double ScanLineRadiusFactor = 8.0;
+
+// The squared distance between points a and b of `xyz` in the scan-line sampling's metric
+// (pcs::StretchedLength2; `stretch` 3 values per point).
+inline double StretchedDistance2(const std::vector<double>& stretch,
+  const double* xyz,
+  vtkIdType a,
+  vtkIdType b)
+{
+  const double* pa = xyz + 3 * static_cast<size_t>(a);
+  const double* pb = xyz + 3 * static_cast<size_t>(b);
+  const double w[3] = { pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2] };
+  return pcs::StretchedLength2(
+    w, &stretch[3 * static_cast<size_t>(a)], &stretch[3 * static_cast<size_t>(b)]);
+}
+
 // Squared distance from x to the segment a b.
 inline double SegmentDistance2(const double* a, const double* b, const double* x)
 {
@@ -547,18 +572,28 @@ struct Parameters
   // longer than LongEar must have no angle whose cosine exceeds MaximumLongEarCos.
   double LongEar = 0;
   double MaximumLongEarCos = 1;
+  // Scan lines: a triangle of three points of one line is refused (pcs::OnOneScanLine). Not in
+  // hole filling, where the cap inside a closed line (a pole's circle) has only such ears.
+  bool RefuseOneLineTriangles = true;
 };
 
 class Front
 {
 public:
-  Front(vtkCDTAdvancingFront* self, const double* xyz, const double* normals, const double* scale,
-    const std::vector<uint8_t>& status, vtkStaticPointLocator* locator, const LocatorBins& bins,
+  Front(vtkCDTAdvancingFront* self,
+    const double* xyz,
+    const double* normals,
+    const double* scale,
+    const double* stretch,
+    const std::vector<uint8_t>& status,
+    vtkStaticPointLocator* locator,
+    const LocatorBins& bins,
     pcs::SurfaceMesh& mesh)
     : Self(self)
     , XYZ(xyz)
     , Normals(normals)
     , Scale(scale)
+    , Stretch(stretch)
     , Status(status)
     , Locator(locator)
     , Bins(bins)
@@ -627,6 +662,23 @@ public:
 private:
   const double* P(Id i) const { return this->XYZ + 3 * static_cast<size_t>(i); }
   const double* N(Id i) const { return this->Normals + 3 * static_cast<size_t>(i); }
+
+  // The squared distance from `centre` to point x that ranks candidates: Euclidean, and on scan
+  // lines in the sampling's metric at the points a and b (pcs::StretchedLength2), in which the
+  // next line's points come before the far points of the own line.
+  double RankDistance2(const double* centre, Id x, Id a, Id b) const
+  {
+    const double* sa = this->Stretch ? this->Stretch + 3 * static_cast<size_t>(a) : nullptr;
+    const double* sb = this->Stretch ? this->Stretch + 3 * static_cast<size_t>(b) : nullptr;
+    auto zero = [](const double* v) { return !v || (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0); };
+    if (zero(sa) && zero(sb))
+    {
+      return Distance2(this->P(x), centre);
+    }
+    const double* p = this->P(x);
+    const double w[3] = { p[0] - centre[0], p[1] - centre[1], p[2] - centre[2] };
+    return pcs::StretchedLength2(w, sa, sb);
+  }
 
   // Is the oriented triangle (e0, e1, third) valid? (e0, e1) is the edge it is built on,
   // `opposite` the third vertex of the triangle already on that edge (None for a seed).
@@ -723,6 +775,7 @@ private:
   const double* XYZ;
   const double* Normals;
   const double* Scale; // per point: its local spacing over the mean spacing, at most 1
+  const double* Stretch; // per point: its scan-line stretch (3 values), null when none has one
   const std::vector<uint8_t>& Status;
   vtkStaticPointLocator* Locator;
   const LocatorBins& Bins;
@@ -737,6 +790,7 @@ private:
   // its centroid.
   std::vector<std::pair<Id, double>> StampedEnds;
   std::vector<std::pair<double, Id>> Candidates;
+  std::vector<std::pair<double, Id>> Pending; // BestThirdPoint on scan lines: for the next ring
   std::vector<Id> Neighbors;
   std::vector<int64_t> VertexTriangles;
   std::vector<std::pair<Id, Id>> HalfEdges;
@@ -882,7 +936,9 @@ private:
 
 bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& parameters)
 {
-  if (this->Status[third] != Usable)
+  if (this->Status[third] != Usable ||
+    (this->Stretch && parameters.RefuseOneLineTriangles &&
+      pcs::OnOneScanLine(this->XYZ, this->Stretch, e0, e1, third)))
   {
     return false;
   }
@@ -1138,9 +1194,13 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
   // order, hence the result, is the one of a single sorted list: a ring holds the points of its
   // query ball (squared distance at most the squared query radius, as the query computes it)
   // that are not in the previous one; the last ring has no outer bound (III.C ears).
+  // On scan lines the candidates are ranked in the sampling's metric (RankDistance2), which is
+  // never shorter than the Euclidean distance: a candidate of a ring ranked beyond the ring's
+  // radius waits for the next ring (Pending), so the order is still that of one sorted list.
   constexpr int rings = 3;
   const double radii[rings] = { 0.25 * parameters.Radius, 0.5 * parameters.Radius,
     parameters.Radius };
+  this->Pending.clear();
   this->ProjectionTests = 0;
   // Besides the projection tests, a bound on the candidates examined (the cheap tests reject
   // without counting one): a dense cluster puts thousands of points in every ring, and sorting
@@ -1160,7 +1220,8 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
       const double d2 = Distance2(this->P(x), midpoint);
       if (d2 > inner2 && d2 <= outer2)
       {
-        this->Candidates.emplace_back(d2, x);
+        this->Candidates.emplace_back(
+          this->Stretch ? this->RankDistance2(midpoint, x, e0, e1) : d2, x);
       }
     };
     for (vtkIdType k = 0; k < static_cast<vtkIdType>(this->Near.size()); ++k)
@@ -1191,18 +1252,26 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
         }
       }
     }
+    this->Candidates.insert(this->Candidates.end(), this->Pending.begin(), this->Pending.end());
+    this->Pending.clear();
     SortNearest(this->Candidates, examinedBudget - examined);
     this->Candidates.erase(
       std::unique(this->Candidates.begin(), this->Candidates.end()), this->Candidates.end());
-    for (const auto& candidate : this->Candidates)
+    for (auto candidate = this->Candidates.begin(); candidate != this->Candidates.end();
+         ++candidate)
     {
+      if (candidate->first > outer2)
+      {
+        this->Pending.assign(candidate, this->Candidates.end()); // scan lines only
+        break;
+      }
       if (++examined > examinedBudget)
       {
         return None;
       }
-      if (this->IsValid(e0, e1, candidate.second, opposite, parameters))
+      if (this->IsValid(e0, e1, candidate->second, opposite, parameters))
       {
-        return candidate.second;
+        return candidate->second;
       }
       if (this->ProjectionTests >= parameters.MaximumCandidates)
       {
@@ -1307,7 +1376,7 @@ bool Front::Seed(Id p, const Parameters& parameters)
     if (q != p && this->Status[q] == Usable && Dot(this->N(p), this->N(q)) > 0.0 &&
       !this->Mesh.IsInterior(q))
     {
-      firsts.emplace_back(Distance2(this->P(p), this->P(q)), q);
+      firsts.emplace_back(this->RankDistance2(this->P(p), q, p, q), q);
     }
   }
   // One budget of projection tests for the seed point (over all its first edges), and one of
@@ -1336,7 +1405,7 @@ bool Front::Seed(Id p, const Parameters& parameters)
       const Id x = static_cast<Id>(this->Near[k]);
       if (x != p && x != q && this->Status[x] == Usable && !this->Mesh.IsInterior(x))
       {
-        this->Candidates.emplace_back(Distance2(this->P(x), midpoint), x);
+        this->Candidates.emplace_back(this->RankDistance2(midpoint, x, p, q), x);
       }
     }
     SortNearest(this->Candidates, examinedBudget - examined);
@@ -1616,18 +1685,24 @@ int vtkCDTAdvancingFront::RequestData(
   // the table of all the points.
   std::vector<int32_t> knn;
   int knnOthers = 0;
+  // Scan-line sampling (pcs::AddOffLineNeighbors): the points' stretch, 3 per point (empty when
+  // none has one), and whether it was looked for on a table of all the points.
+  std::vector<double> stretch;
+  bool scanLinesChecked = false;
   auto estimateNormalsOn = [&](const double* pts,
                              Id count,
                              vtkStaticPointLocator* loc,
                              std::vector<double>& estimatedNormals,
                              std::vector<int32_t>& table,
-                             int& tableOthers)
+                             int& tableOthers,
+                             std::vector<double>* tableStretch)
   {
     // The neighbourhood of a point: itself and its NormalSampleSize - 1 nearest other points (the
     // NormalSampleSize nearest points of vtkPCANormalEstimation, which include the point), for
     // its plane and its edges in the orientation graph.
     std::vector<double> variation;
-    pcs::EstimateNormals(loc,
+    pcs::EstimateNormals(
+      loc,
       pts,
       count,
       this->NormalSampleSize,
@@ -1640,7 +1715,10 @@ int vtkCDTAdvancingFront::RequestData(
       {
         this->UpdateProgress(0.02 + 0.08 * fraction);
         return !this->GetAbortExecute();
-      });
+      },
+      tableStretch,
+      ScanLineShare,
+      ScanLineRadiusFactor);
   };
   // Exact duplicates would fill a neighbourhood with copies of one point (a zero covariance):
   // with duplicates, the normals are estimated on the distinct points and copied to the others.
@@ -1661,7 +1739,8 @@ int vtkCDTAdvancingFront::RequestData(
     }
     if (static_cast<Id>(distinct.size()) == local)
     {
-      estimateNormalsOn(xyz.data(), local, locator, estimatedNormals, knn, knnOthers);
+      estimateNormalsOn(xyz.data(), local, locator, estimatedNormals, knn, knnOthers, &stretch);
+      scanLinesChecked = knnOthers > 0;
       return;
     }
     std::vector<double> distinctXYZ(3 * distinct.size());
@@ -1682,8 +1761,14 @@ int vtkCDTAdvancingFront::RequestData(
     std::vector<double> distinctNormals;
     std::vector<int32_t> distinctTable; // not the table of all the points
     int distinctOthers = 0;
-    estimateNormalsOn(distinctXYZ.data(), distinctCount, distinctLocator, distinctNormals,
-      distinctTable, distinctOthers);
+    std::vector<double> distinctStretch; // planes across scan lines; the stretch is found later
+    estimateNormalsOn(distinctXYZ.data(),
+      distinctCount,
+      distinctLocator,
+      distinctNormals,
+      distinctTable,
+      distinctOthers,
+      &distinctStretch);
     estimatedNormals.assign(3 * static_cast<size_t>(local), 0.0);
     if (distinctNormals.size() != 3 * distinct.size())
     {
@@ -1831,10 +1916,12 @@ int vtkCDTAdvancingFront::RequestData(
   }
   // The table of nearest neighbours for the local spacing (the automatic MaximumRayDistance):
   // LocalSpacingNeighbors per point (that of the normal estimation when it has that size).
+  // It is also the table on which scan-line sampling is looked for when the normals were not
+  // estimated on all the points (given, or estimated on the distinct points).
   constexpr int LocalSpacingNeighbors = 9;
   const bool localRay = this->MaximumRayDistance <= 0.0;
   const int localOthers = std::min<int>(LocalSpacingNeighbors, local - 1);
-  if (localRay && knnOthers != localOthers)
+  if ((localRay || !scanLinesChecked) && knnOthers != localOthers)
   {
     knnOthers = 0;
     if (!pcs::FindNearestNeighbors(locator, xyz.data(), static_cast<int32_t>(local), localOthers,
@@ -1843,6 +1930,19 @@ int vtkCDTAdvancingFront::RequestData(
       return finish();
     }
     knnOthers = localOthers;
+  }
+  if (!scanLinesChecked && knnOthers > 0 &&
+    pcs::AddOffLineNeighbors(locator,
+      xyz.data(),
+      static_cast<int32_t>(local),
+      knnOthers,
+      knn,
+      &stretch,
+      0.05,
+      ScanLineRadiusFactor,
+      ScanLineShare) <= 0)
+  {
+    stretch.clear();
   }
   std::vector<double> nearest(local, -1.0);
   {
@@ -1876,7 +1976,14 @@ int vtkCDTAdvancingFront::RequestData(
             const Id w = knn[static_cast<size_t>(k) * knnOthers + j];
             const double d2 =
               w >= 0 ? Distance2(&xyz[3 * static_cast<size_t>(w)], &xyz[3 * k]) : 0.0;
-            if (d2 > 0.0)
+            if (d2 > 0.0 && !stretch.empty())
+            {
+              // Scan lines: the nearest in the sampling's metric, about the spacing across
+              // the lines.
+              const double stretched = std::sqrt(StretchedDistance2(stretch, xyz.data(), k, w));
+              nearest[k] = nearest[k] < 0.0 ? stretched : std::min(nearest[k], stretched);
+            }
+            else if (d2 > 0.0)
             {
               nearest[k] = std::sqrt(d2);
               break;
@@ -1983,7 +2090,15 @@ int vtkCDTAdvancingFront::RequestData(
 
   // III.A and III.B: seeds in input order, each grown by the advancing front.
   pcs::SurfaceMesh mesh(local);
-  Front front(this, xyz.data(), normals.data(), scale.data(), status, locator, bins, mesh);
+  Front front(this,
+    xyz.data(),
+    normals.data(),
+    scale.data(),
+    stretch.empty() ? nullptr : stretch.data(),
+    status,
+    locator,
+    bins,
+    mesh);
   front.SetEdgeReachCellSize(2.0 * strict.Radius);
   for (Id p = 0; p < local && !front.Aborted; ++p)
   {
@@ -2003,6 +2118,7 @@ int vtkCDTAdvancingFront::RequestData(
   relaxed.Radius = this->HoleFillingRadiusFactor * strict.Radius;
   relaxed.MinimumNormalDot = this->HoleFillingMinimumNormalDot;
   relaxed.CloseTriangularHoles = true;
+  relaxed.RefuseOneLineTriangles = false;
   relaxed.ShortTrianglesSkipNormalAgreement = true;
   // An ear that adds an edge longer than the neighbourhood radius must have no angle below 15
   // degrees (see IsAcceptableEar).

@@ -106,6 +106,28 @@
  *   this opens are filled again with the III.C rules, pinches no longer allowed. The output has
  *   no non-manifold edge or vertex.
  *
+ * Scan-line sampling (ours; laser-line and LiDAR scans: points 6 to 20 times denser along lines
+ * than across them). There the nearest points of a point lie on its own line: its estimated plane
+ * was any plane through the line, the mean spacing (hence NeighborhoodRadius and
+ * MaximumRayDistance) the spacing along the lines, and every triangle joined three points of one
+ * line (a sheet of 16 lines: hundreds of components, none spanning two lines). Where the
+ * (NormalSampleSize - 1) / 2 nearest of a point lie along one line, and so do those of at least
+ * half of its nearest points (the pattern of a region, not of a few points of an ordinary sample
+ * that happen to line up), the point gets the nearest points of the lines beside it (searched
+ * within 8 times its neighbourhood's radius: lines up to about 36 spacings apart with the default
+ * 10 points) and a stretch s along its line (pcs::AddOffLineNeighbors, shared with
+ * vtkLocalOptimumGrowth and vtkGreedySurfaceTriangulation). Then: the planes and the orientation
+ * graph use those neighbours; the mean spacing (`MeanSpacing`, the unit of the automatic
+ * NeighborhoodRadius and MaximumRayDistance) and the local spacing measure a point's nearest
+ * distance in the sampling's metric sqrt(|w|^2 + (w . s)^2) (the larger of the two end points'
+ * components), about the spacing across the lines; candidates (II.A, and the seeds' points) are
+ * ranked by that metric's distance to the edge's midpoint, so the next line's points come before
+ * the far points of the own line; and a triangle each of whose edges runs along a line (within 45
+ * degrees of the line at one end: three points of one line) is refused, except in hole filling,
+ * which closes the cap inside a closed line (a pole's circle) with them. A sheet gives the strip
+ * triangulation of its lines, a sphere sampled on latitude circles a closed genus-0 mesh. Clouds
+ * without such regions are not affected.
+ *
  * Output (vtkPolyData): all input points and their point data, plus point data `Used` (1 for a
  * triangle vertex) and `Normals` (when estimated); consistently oriented triangles with cell
  * data `HoleFilled` (1: made by the hole-filling step) and `HoleTriangle` (1: an edge with a

@@ -182,7 +182,6 @@ public:
 
   const double* P(int32_t i) const { return &this->X[3 * static_cast<size_t>(i)]; }
   double SamplingDistance(int32_t a, int32_t b) const;
-  bool OnOneScanLine(int32_t a, int32_t b, int32_t c) const;
 
   bool Progress(double fraction)
   {
@@ -296,12 +295,8 @@ void Reconstruction::FindNeighbors(double begin, double end)
   this->Spacing = counted > 0 ? sum / counted : 0.0;
 }
 
-// The length of the edge ab in the sampling's metric: Euclidean, except on scan lines (see
-// pcs::AddOffLineNeighbors), where the offset w = b - a measures sqrt(|w|^2 + (w . s)^2) with s
-// the stretch of a or of b, whichever gives the larger component (the stretch vectors of two
-// neighbours on one line are nearly parallel; taking the larger keeps an edge along a line long
-// even where one end, at the end of a line or between scan patterns, got no stretch). The
-// spacing along a line then measures about the spacing across the lines.
+// The length of the edge ab in the sampling's metric (pcs::StretchedLength2): Euclidean, except
+// on scan lines, where the spacing along a line measures about the spacing across the lines.
 double Reconstruction::SamplingDistance(int32_t a, int32_t b) const
 {
   if (this->Stretch.empty())
@@ -310,39 +305,8 @@ double Reconstruction::SamplingDistance(int32_t a, int32_t b) const
   }
   double w[3];
   vtkMath::Subtract(this->P(b), this->P(a), w);
-  const double alongA = vtkMath::Dot(w, &this->Stretch[3 * static_cast<size_t>(a)]);
-  const double alongB = vtkMath::Dot(w, &this->Stretch[3 * static_cast<size_t>(b)]);
-  return std::sqrt(vtkMath::Dot(w, w) + std::max(alongA * alongA, alongB * alongB));
-}
-
-// True when the three points lie along one scan line: each of the three edges runs along the
-// line at one of its ends, within 45 degrees of the stretch there (|w x s| <= |w . s|, the rule
-// by which pcs::AddOffLineNeighbors tells a line's own points). Such a triangle is a sliver of
-// the line (in the sampling's metric an angle near 180 degrees), never part of the surface
-// between the lines; where the surface must close on one line (a pole's circle) it is a hole.
-bool Reconstruction::OnOneScanLine(int32_t a, int32_t b, int32_t c) const
-{
-  if (this->Stretch.empty())
-  {
-    return false;
-  }
-  auto along = [this](int32_t p, int32_t q)
-  {
-    double w[3], cross[3];
-    vtkMath::Subtract(this->P(q), this->P(p), w);
-    for (int32_t end : { p, q })
-    {
-      const double* s = &this->Stretch[3 * static_cast<size_t>(end)];
-      vtkMath::Cross(w, s, cross);
-      const double dot = vtkMath::Dot(w, s);
-      if (dot != 0.0 && vtkMath::Dot(cross, cross) <= dot * dot)
-      {
-        return true;
-      }
-    }
-    return false;
-  };
-  return along(a, b) && along(b, c) && along(c, a);
+  return std::sqrt(pcs::StretchedLength2(
+    w, &this->Stretch[3 * static_cast<size_t>(a)], &this->Stretch[3 * static_cast<size_t>(b)]));
 }
 
 // The local uniformity factor m of paper section 3 (see the class documentation).
@@ -645,8 +609,10 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
     bool degenerate = false;
     for (int c = 0; c < numberOfCommon && !degenerate; ++c)
     {
+      // Three points of one scan line: a sliver along it (pcs::OnOneScanLine).
       degenerate = pcs::projected::Collinear(this->P(a), this->P(b), this->P(common[c])) ||
-        this->OnOneScanLine(a, b, common[c]);
+        (!this->Stretch.empty() &&
+          pcs::OnOneScanLine(this->X.data(), this->Stretch.data(), a, b, common[c]));
     }
     if (degenerate)
     {

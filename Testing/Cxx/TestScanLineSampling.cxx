@@ -8,17 +8,21 @@
 //   adjacent lines (none skips a line, none on one line: 2 (N - 1) triangles per strip of two
 //   lines of N points). vtkLocalOptimumGrowth on z = 2 sin(x / 7) cos(y / 5), 10 lines y = 0..9,
 //   a point every 0.08 along x (500 per line, 12.5 times closer); vtkGreedySurfaceTriangulation
-//   on z = 0.1 sin(3 x), 16 lines 0.1 apart, 6 and 20 times closer along them (150 and 500 per
-//   line);
+//   and vtkCDTAdvancingFront on z = 0.1 sin(3 x), 16 lines 0.1 apart, 6 and 20 times closer along
+//   them (150 and 500 per line);
 // - a unit sphere sampled on 20 latitude circles (theta from 0.05 to pi - 0.05, 0.157 apart) of
 //   800 sin(theta) + 3 points each (0.0079 apart, 20 times closer), and on 40 circles (0.078
 //   apart) of 500 sin(theta) + 3 points (0.0126 apart, 6.2 times closer: the K nearest reach the
 //   next circle, the K / 2 nearest do not): closed, manifold, oriented, genus 0, 2V - 4
-//   triangles, every point used (vtkLocalOptimumGrowth, vtkGreedySurfaceTriangulation).
+//   triangles, every point used (vtkLocalOptimumGrowth, vtkGreedySurfaceTriangulation,
+//   vtkCDTAdvancingFront).
 // Before pcs::AddOffLineNeighbors every triangle of LOG's sheet and of the first sphere was
 // alone (three points of one line); the second sphere had 149 components. The greedy filter made
 // 3 to 1,143 triangles of the sheets and the spheres, most of their points unused, before it
-// measured its edges in the sampling's metric (issue 7).
+// measured its edges in the sampling's metric (issue 7); vtkCDTAdvancingFront made only
+// triangles of three points of one line (its search radius came from the spacing along the
+// lines), in hundreds of components (issue 6).
+#include "vtkCDTAdvancingFront.h"
 #include "vtkGreedySurfaceTriangulation.h"
 #include "vtkLocalOptimumGrowth.h"
 #include "vtkReconstructionQuality.h"
@@ -216,5 +220,9 @@ int TestScanLineSampling(int, char*[])
     ok;
   ok = TestSphere<vtkGreedySurfaceTriangulation>("greedy sphere", 20, 800) && ok;
   ok = TestSphere<vtkGreedySurfaceTriangulation>("greedy sphere", 40, 500) && ok;
+  ok = TestSheet<vtkCDTAdvancingFront>("CDT sheet 6x", 16, 150, 0.1, 0.1 / 6, ShortWave) && ok;
+  ok = TestSheet<vtkCDTAdvancingFront>("CDT sheet 20x", 16, 500, 0.1, 0.1 / 20, ShortWave) && ok;
+  ok = TestSphere<vtkCDTAdvancingFront>("CDT sphere", 20, 800) && ok;
+  ok = TestSphere<vtkCDTAdvancingFront>("CDT sphere", 40, 500) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -298,6 +298,45 @@ void SurfaceMesh::UpdateVertex(int32_t v)
   }
 }
 
+// After AddWedge(v, out, in) of a triangle whose half-edges were free: the common cases from the
+// cached state, the same answer as UpdateVertex. A free vertex gets one open fan. On a vertex with
+// one open fan and nothing else (front edges v->FrontOut and FrontIn->v), the new wedge extends
+// the fan at its out side (in == FrontOut: it owns the twin of v->FrontOut), at its in side
+// (out == FrontIn), or at both (the umbrella closes); no other wedge can meet it, as v->out and
+// in->v were unused. Anything else (a second fan: a pinch) is recomputed.
+void SurfaceMesh::UpdateVertexAfterAdd(int32_t v, int32_t out, int32_t in)
+{
+  if (this->State[v] == static_cast<uint8_t>(VertexState::Free))
+  {
+    this->State[v] = static_cast<uint8_t>(VertexState::Boundary);
+    this->Fans[v] = 1;
+    this->FrontOut[v] = out;
+    this->FrontIn[v] = in;
+    return;
+  }
+  if (this->FrontOut[v] >= 0)
+  {
+    const bool atOut = in == this->FrontOut[v], atIn = out == this->FrontIn[v];
+    if (atOut && atIn)
+    {
+      this->State[v] = static_cast<uint8_t>(VertexState::Interior);
+      this->FrontOut[v] = this->FrontIn[v] = -1;
+      return;
+    }
+    if (atOut)
+    {
+      this->FrontOut[v] = out;
+      return;
+    }
+    if (atIn)
+    {
+      this->FrontIn[v] = in;
+      return;
+    }
+  }
+  this->UpdateVertex(v);
+}
+
 //------------------------------------------------------------------------------------------------
 SurfaceMesh::Check SurfaceMesh::CanAddTriangle(
   int32_t a, int32_t b, int32_t c, int32_t* vertex) const
@@ -372,9 +411,9 @@ int64_t SurfaceMesh::AddTriangle(int32_t a, int32_t b, int32_t c)
   this->AddWedge(a, b, c, static_cast<int32_t>(t));
   this->AddWedge(b, c, a, static_cast<int32_t>(t));
   this->AddWedge(c, a, b, static_cast<int32_t>(t));
-  this->UpdateVertex(a);
-  this->UpdateVertex(b);
-  this->UpdateVertex(c);
+  this->UpdateVertexAfterAdd(a, b, c);
+  this->UpdateVertexAfterAdd(b, c, a);
+  this->UpdateVertexAfterAdd(c, a, b);
   ++this->NumberOfTriangles;
   return t;
 }
@@ -533,7 +572,7 @@ int SurfaceMesh::GetEdgeValence(int32_t a, int32_t b) const
   return (this->HasOut(a, b) ? 1 : 0) + (this->HasOut(b, a) ? 1 : 0);
 }
 
-bool SurfaceMesh::IsBoundaryHalfEdge(int32_t a, int32_t b) const
+bool SurfaceMesh::IsBoundaryHalfEdgeScan(int32_t a, int32_t b) const
 {
   const int32_t n = this->GetNumberOfVertices();
   if (a < 0 || b < 0 || a >= n || b >= n)
@@ -568,7 +607,7 @@ int SurfaceMesh::GetVertexDegree(int32_t v) const
   return degree;
 }
 
-int SurfaceMesh::GetBoundaryOutVertices(int32_t v, int32_t* out, int capacity) const
+int SurfaceMesh::GetBoundaryOutVerticesScan(int32_t v, int32_t* out, int capacity) const
 {
   if (this->State[v] != static_cast<uint8_t>(VertexState::Boundary))
   {
@@ -597,7 +636,7 @@ int SurfaceMesh::GetBoundaryOutVertices(int32_t v, int32_t* out, int capacity) c
   return count;
 }
 
-int SurfaceMesh::GetBoundaryInVertices(int32_t v, int32_t* in, int capacity) const
+int SurfaceMesh::GetBoundaryInVerticesScan(int32_t v, int32_t* in, int capacity) const
 {
   if (this->State[v] != static_cast<uint8_t>(VertexState::Boundary))
   {
@@ -641,7 +680,7 @@ int SurfaceMesh::GetVertexTriangles(int32_t v, int64_t* triangles, int capacity)
 }
 
 //------------------------------------------------------------------------------------------------
-int32_t SurfaceMesh::NextBoundaryVertex(int32_t a, int32_t b) const
+int32_t SurfaceMesh::NextBoundaryVertexWalk(int32_t a, int32_t b) const
 {
   if (!this->IsBoundaryHalfEdge(a, b))
   {
@@ -675,7 +714,7 @@ int32_t SurfaceMesh::NextBoundaryVertex(int32_t a, int32_t b) const
   return -1; // not reached for a consistent structure
 }
 
-int32_t SurfaceMesh::PreviousBoundaryVertex(int32_t a, int32_t b) const
+int32_t SurfaceMesh::PreviousBoundaryVertexWalk(int32_t a, int32_t b) const
 {
   if (!this->IsBoundaryHalfEdge(a, b))
   {

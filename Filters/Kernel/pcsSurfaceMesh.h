@@ -37,7 +37,8 @@
 // bounded degrees of surface meshes. A state byte and a fan count per vertex are cached.
 // Memory: 12 bytes per triangle, 128 bytes per used vertex (256 above degree 10), 14 bytes per
 // vertex (block index, state, fan count, and the two front neighbours of a single-fan vertex,
-// cached so that the front queries of the common case read no wedge list).
+// cached so that the front queries of the common case read no wedge list: those are inline, and
+// AddTriangle updates the cache without a scan when a triangle extends or closes a single fan).
 #ifndef pcsSurfaceMesh_h
 #define pcsSurfaceMesh_h
 
@@ -142,7 +143,15 @@ public:
   int GetEdgeValence(int32_t a, int32_t b) const;
 
   /// True when a->b has a triangle and b->a has none (a front edge).
-  bool IsBoundaryHalfEdge(int32_t a, int32_t b) const;
+  bool IsBoundaryHalfEdge(int32_t a, int32_t b) const
+  {
+    // A vertex with a single open fan (the common case) knows its front edge out: inline.
+    if (a >= 0 && a < this->GetNumberOfVertices() && this->FrontOut[a] >= 0)
+    {
+      return this->FrontOut[a] == b;
+    }
+    return this->IsBoundaryHalfEdgeScan(a, b);
+  }
 
   //----------------------------------------------------------------------------------------------
   // Vertex queries.
@@ -160,10 +169,18 @@ public:
 
   /// The neighbours x of v such that v->x is a front edge (one per open fan); returns how many,
   /// writes at most `capacity` of them.
-  int GetBoundaryOutVertices(int32_t v, int32_t* out, int capacity) const;
+  int GetBoundaryOutVertices(int32_t v, int32_t* out, int capacity) const
+  {
+    return this->FrontOut[v] >= 0 ? OneVertex(this->FrontOut[v], out, capacity)
+                                  : this->GetBoundaryOutVerticesScan(v, out, capacity);
+  }
 
   /// The neighbours x of v such that x->v is a front edge.
-  int GetBoundaryInVertices(int32_t v, int32_t* in, int capacity) const;
+  int GetBoundaryInVertices(int32_t v, int32_t* in, int capacity) const
+  {
+    return this->FrontIn[v] >= 0 ? OneVertex(this->FrontIn[v], in, capacity)
+                                 : this->GetBoundaryInVerticesScan(v, in, capacity);
+  }
 
   /// The triangles at v (ids), in storage order; returns how many, writes at most `capacity`.
   int GetVertexTriangles(int32_t v, int64_t* triangles, int capacity) const;
@@ -173,11 +190,26 @@ public:
 
   /// For the front edge a->b: the vertex z of the front edge b->z that follows it in its loop
   /// (turning around b through the fan of the triangle of a->b). -1 if a->b is not a front edge.
-  int32_t NextBoundaryVertex(int32_t a, int32_t b) const;
+  int32_t NextBoundaryVertex(int32_t a, int32_t b) const
+  {
+    if (a >= 0 && a < this->GetNumberOfVertices() && this->FrontOut[a] >= 0 && b >= 0 &&
+      b < this->GetNumberOfVertices() && this->FrontOut[b] >= 0)
+    {
+      return this->FrontOut[a] == b ? this->FrontOut[b] : -1;
+    }
+    return this->NextBoundaryVertexWalk(a, b);
+  }
 
   /// For the front edge a->b: the vertex z of the front edge z->a that precedes it. -1 if a->b
   /// is not a front edge.
-  int32_t PreviousBoundaryVertex(int32_t a, int32_t b) const;
+  int32_t PreviousBoundaryVertex(int32_t a, int32_t b) const
+  {
+    if (a >= 0 && a < this->GetNumberOfVertices() && this->FrontOut[a] >= 0)
+    {
+      return this->FrontOut[a] == b ? this->FrontIn[a] : -1;
+    }
+    return this->PreviousBoundaryVertexWalk(a, b);
+  }
 
   /// The ear at the front edge a->b on the side of b: the triangle (b, a, n) with n =
   /// NextBoundaryVertex(a, b); returns n (or -1). The ear on the side of a is (b, a, p) with
@@ -217,7 +249,22 @@ private:
   void RemoveWedge(int32_t v, int32_t tri);
   int32_t NewBlock();
   void UpdateVertex(int32_t v);
+  void UpdateVertexAfterAdd(int32_t v, int32_t out, int32_t in);
   bool HasOut(int32_t v, int32_t x) const;
+  // The general cases of the inline queries above (any number of fans).
+  static int OneVertex(int32_t x, int32_t* list, int capacity)
+  {
+    if (capacity > 0)
+    {
+      list[0] = x;
+    }
+    return 1;
+  }
+  bool IsBoundaryHalfEdgeScan(int32_t a, int32_t b) const;
+  int GetBoundaryOutVerticesScan(int32_t v, int32_t* out, int capacity) const;
+  int GetBoundaryInVerticesScan(int32_t v, int32_t* in, int capacity) const;
+  int32_t NextBoundaryVertexWalk(int32_t a, int32_t b) const;
+  int32_t PreviousBoundaryVertexWalk(int32_t a, int32_t b) const;
   bool HasIn(int32_t v, int32_t x) const;
 
   std::vector<int32_t> Triangles;

@@ -217,4 +217,17 @@ std::string DropMismatchedPointArrays(vtkSmartPointer<vtkPointSet>& input)
     "of tuples is not the number of points (" + std::to_string(numberOfPoints) + "): " + names +
     ".";
 }
+
+std::string NaNParametersError(std::initializer_list<std::pair<const char*, double>> parameters)
+{
+  std::string names;
+  for (const auto& parameter : parameters)
+  {
+    if (std::isnan(parameter.second))
+    {
+      names += (names.empty() ? "" : ", ") + std::string(parameter.first);
+    }
+  }
+  return names.empty() ? names : "NaN parameter(s): " + names + ". Nothing is computed.";
+}
 } // namespace pcs

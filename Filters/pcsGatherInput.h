@@ -6,7 +6,9 @@
 
 #include "vtkSmartPointer.h"
 
+#include <initializer_list>
 #include <string>
+#include <utility>
 
 class vtkDataObject;
 class vtkPointSet;
@@ -33,6 +35,12 @@ vtkSmartPointer<vtkPointSet> GatherInputOnFirstProcess(vtkPointSet* input);
 /// caller's data set is not modified). Returns the filter's warning naming them, empty when
 /// there are none. `input` may be null.
 std::string DropMismatchedPointArrays(vtkSmartPointer<vtkPointSet>& input);
+
+/// The filter's error naming the parameters that are NaN (empty when none). VTK's
+/// vtkSetClampMacro clamps infinities to the range but lets NaN through (every comparison is
+/// false); the filters refuse a NaN parameter with this error and compute nothing (the points
+/// pass through, unused).
+std::string NaNParametersError(std::initializer_list<std::pair<const char*, double>> parameters);
 }
 
 #endif

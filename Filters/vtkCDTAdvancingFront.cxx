@@ -1576,6 +1576,19 @@ int vtkCDTAdvancingFront::RequestData(
                                    << " are supported.");
     return finish();
   }
+  const std::string nanParameters =
+    pcs::NaNParametersError({ { "NeighborhoodRadius", this->NeighborhoodRadius },
+      { "NeighborhoodRadiusFactor", this->NeighborhoodRadiusFactor },
+      { "MinimumNormalDot", this->MinimumNormalDot },
+      { "MaximumRayDistance", this->MaximumRayDistance },
+      { "MinimumTriangleArea", this->MinimumTriangleArea },
+      { "HoleFillingRadiusFactor", this->HoleFillingRadiusFactor },
+      { "HoleFillingMinimumNormalDot", this->HoleFillingMinimumNormalDot } });
+  if (!nanParameters.empty())
+  {
+    vtkErrorMacro(<< nanParameters);
+    return finish();
+  }
 
   // Coordinates as doubles; the finite points form the cloud the locator and the normal
   // estimation see (local ids), mapped back to input ids at the end.

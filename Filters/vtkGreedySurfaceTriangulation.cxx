@@ -2921,6 +2921,22 @@ int vtkGreedySurfaceTriangulation::RequestData(
                                    << MaximumNumberOfPoints << " are supported.");
     return finish();
   }
+  const std::string nanParameters =
+    pcs::NaNParametersError({ { "OutlierFactor", this->OutlierFactor },
+      { "AutomaticCorrectFraction", this->AutomaticCorrectFraction },
+      { "UniformityAngle", this->UniformityAngle },
+      { "MaximumNormalDeviation", this->MaximumNormalDeviation },
+      { "BoundaryVectorRadius", this->BoundaryVectorRadius },
+      { "StatusNeutralAngle", this->StatusNeutralAngle },
+      { "MaximumBridgeLength", this->MaximumBridgeLength },
+      { "MinimumBridgeSeparation", this->MinimumBridgeSeparation },
+      { "MaximumHoleDiameter", this->MaximumHoleDiameter },
+      { "AuxiliaryPointDistance", this->AuxiliaryPointDistance } });
+  if (!nanParameters.empty())
+  {
+    vtkErrorMacro(<< nanParameters);
+    return finish();
+  }
 
   // Distinct finite points: non-finite ones are skipped, exact duplicates merged.
   std::vector<double> xyz(3 * static_cast<size_t>(numberOfPoints));

@@ -805,6 +805,16 @@ int vtkIncrementalDelaunay3D::RequestData(
     }
     return finish();
   }
+  const std::string nanParameters = pcs::NaNParametersError({ { "Tolerance", this->Tolerance } });
+  if (!nanParameters.empty())
+  {
+    vtkErrorMacro(<< nanParameters);
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    {
+      representative->SetValue(i, -1);
+    }
+    return finish();
+  }
 
   // Coordinates as doubles; non-finite points are skipped (RepresentativeId -1).
   std::vector<double> xyz(3 * static_cast<size_t>(numberOfPoints));

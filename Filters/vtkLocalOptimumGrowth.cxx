@@ -2110,6 +2110,19 @@ int vtkLocalOptimumGrowth::RequestData(
     this->NumberOfUnusedPoints = numberOfPoints;
     return finish();
   }
+  const std::string nanParameters =
+    pcs::NaNParametersError({ { "MaximumNormalAngle", this->MaximumNormalAngle },
+      { "MinimumEdgeRatio", this->MinimumEdgeRatio },
+      { "MaximumEdgeRatio", this->MaximumEdgeRatio },
+      { "MaximumBaseAngle", this->MaximumBaseAngle },
+      { "OutlierFactor", this->OutlierFactor } });
+  if (!nanParameters.empty())
+  {
+    vtkErrorMacro(<< nanParameters);
+    representative->FillValue(-1);
+    this->NumberOfUnusedPoints = numberOfPoints;
+    return finish();
+  }
 
   // Coordinates as doubles; those far from 1 in magnitude are scaled by a power of two (exact),
   // so that squared lengths and the predicates never overflow or underflow.

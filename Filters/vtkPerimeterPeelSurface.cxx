@@ -987,6 +987,20 @@ int vtkPerimeterPeelSurface::RequestData(
       "The input has " << numberOfPoints << " points; at most 150000000 are supported.");
     return finish();
   }
+  const std::string nanParameters =
+    pcs::NaNParametersError({ { "ThresholdFactor", this->ThresholdFactor },
+      { "ConvergenceTolerance", this->ConvergenceTolerance },
+      { "Threshold", this->Threshold },
+      { "GroupFactor", this->GroupFactor },
+      { "HandleFactor", this->HandleFactor },
+      { "CaveLimit", this->CaveLimit },
+      { "GroupStartLimit", this->GroupStartLimit },
+      { "OutlierFactor", this->OutlierFactor } });
+  if (!nanParameters.empty())
+  {
+    vtkErrorMacro(<< nanParameters);
+    return finish();
+  }
 
   // Finite coordinates, scaled by a power of two into the predicates' range when needed.
   std::vector<double> xyz(3 * static_cast<size_t>(numberOfPoints));

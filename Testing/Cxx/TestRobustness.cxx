@@ -18,7 +18,8 @@
 // beyond them, so the clamp is exercised too) on a regular input.
 //
 // The filters come from pcsTestFilters.h (a new filter of the module joins automatically); their
-// parameter limits are listed in ExtremesOf below.
+// parameter limits are listed in ExtremesOf below. Every double parameter set to NaN (which VTK's
+// clamp macros let through) gives an error and no triangles (DoubleParametersOf).
 #include "pcsTestFilters.h"
 #include "pcsTestUtilities.h"
 
@@ -1045,6 +1046,102 @@ bool RunMismatchedPointData(const FilterEntry& filter)
   return CheckOutput(filter, label, prepared, output, true);
 }
 
+// The double parameters of each filter (NaN passes VTK's clamp macros: every comparison is
+// false).
+using DoubleSetter = std::pair<std::string, std::function<void(vtkPolyDataAlgorithm*, double)>>;
+template<typename T>
+DoubleSetter Setter(const char* name, void (T::*set)(double))
+{
+  return { name, [set](vtkPolyDataAlgorithm* a, double v) { (static_cast<T*>(a)->*set)(v); } };
+}
+
+std::vector<DoubleSetter> DoubleParametersOf(const std::string& name)
+{
+  if (name == "vtkIncrementalDelaunay3D")
+  {
+    return { Setter("Tolerance", &vtkIncrementalDelaunay3D::SetTolerance) };
+  }
+#ifdef PCS_HAVE_PEEL
+  if (name == "vtkPerimeterPeelSurface")
+  {
+    using F = vtkPerimeterPeelSurface;
+    return { Setter("ThresholdFactor", &F::SetThresholdFactor),
+      Setter("ConvergenceTolerance", &F::SetConvergenceTolerance),
+      Setter("Threshold", &F::SetThreshold),
+      Setter("GroupFactor", &F::SetGroupFactor),
+      Setter("HandleFactor", &F::SetHandleFactor),
+      Setter("CaveLimit", &F::SetCaveLimit),
+      Setter("GroupStartLimit", &F::SetGroupStartLimit),
+      Setter("OutlierFactor", &F::SetOutlierFactor) };
+  }
+#endif
+#ifdef PCS_HAVE_CDT
+  if (name == "vtkCDTAdvancingFront")
+  {
+    using F = vtkCDTAdvancingFront;
+    return { Setter("NeighborhoodRadius", &F::SetNeighborhoodRadius),
+      Setter("NeighborhoodRadiusFactor", &F::SetNeighborhoodRadiusFactor),
+      Setter("MinimumNormalDot", &F::SetMinimumNormalDot),
+      Setter("MaximumRayDistance", &F::SetMaximumRayDistance),
+      Setter("MinimumTriangleArea", &F::SetMinimumTriangleArea),
+      Setter("HoleFillingRadiusFactor", &F::SetHoleFillingRadiusFactor),
+      Setter("HoleFillingMinimumNormalDot", &F::SetHoleFillingMinimumNormalDot) };
+  }
+#endif
+#ifdef PCS_HAVE_LOCAL_OPTIMUM
+  if (name == "vtkLocalOptimumGrowth")
+  {
+    using F = vtkLocalOptimumGrowth;
+    return { Setter("MaximumNormalAngle", &F::SetMaximumNormalAngle),
+      Setter("MinimumEdgeRatio", &F::SetMinimumEdgeRatio),
+      Setter("MaximumEdgeRatio", &F::SetMaximumEdgeRatio),
+      Setter("MaximumBaseAngle", &F::SetMaximumBaseAngle),
+      Setter("OutlierFactor", &F::SetOutlierFactor) };
+  }
+#endif
+#ifdef PCS_HAVE_GREEDY
+  if (name == "vtkGreedySurfaceTriangulation")
+  {
+    using F = vtkGreedySurfaceTriangulation;
+    return { Setter("OutlierFactor", &F::SetOutlierFactor),
+      Setter("AutomaticCorrectFraction", &F::SetAutomaticCorrectFraction),
+      Setter("UniformityAngle", &F::SetUniformityAngle),
+      Setter("MaximumNormalDeviation", &F::SetMaximumNormalDeviation),
+      Setter("BoundaryVectorRadius", &F::SetBoundaryVectorRadius),
+      Setter("StatusNeutralAngle", &F::SetStatusNeutralAngle),
+      Setter("MaximumBridgeLength", &F::SetMaximumBridgeLength),
+      Setter("MinimumBridgeSeparation", &F::SetMinimumBridgeSeparation),
+      Setter("MaximumHoleDiameter", &F::SetMaximumHoleDiameter),
+      Setter("AuxiliaryPointDistance", &F::SetAuxiliaryPointDistance) };
+  }
+#endif
+  return {};
+}
+
+// Each double parameter set to NaN, one at a time: an error and a valid output without
+// triangles. (NaN went through the clamp: most parameters then acted as some limit, silently;
+// a NaN NeighborhoodRadiusFactor left vtkCDTAdvancingFront without any triangle, a NaN
+// MinimumEdgeRatio changed vtkLocalOptimumGrowth's mesh, without an error.)
+bool RunNaNParameters(const FilterEntry& filter)
+{
+  auto prepared = filter.Prepare(pcstest::MakeCloud(Sphere(500, 81)));
+  for (const DoubleSetter& parameter : DoubleParametersOf(filter.Info.Name))
+  {
+    const std::string label = filter.Info.Name + " / " + parameter.first + " = NaN";
+    Algorithm algorithm = filter.Info.Make();
+    parameter.second(algorithm, std::numeric_limits<double>::quiet_NaN());
+    algorithm->SetInputData(prepared);
+    const Messages messages = Update(algorithm);
+    PCS_CHECK(messages.Errors > 0, label << ": no error");
+    PCS_CHECK(algorithm->GetOutput()->GetNumberOfPolys() == 0, label << ": triangles made");
+    if (!CheckOutput(filter, label, prepared, algorithm->GetOutput(), false))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 bool RunWithoutInput(const FilterEntry& filter)
 {
   Algorithm algorithm = filter.Info.Make();
@@ -1069,6 +1166,7 @@ int TestRobustness(int, char*[])
     }
     failures += RunEquivalences(filter) ? 0 : 1;
     failures += RunMismatchedPointData(filter) ? 0 : 1;
+    failures += RunNaNParameters(filter) ? 0 : 1;
     failures += RunExtremes(filter) ? 0 : 1;
     std::cout << filter.Info.Name << ": " << cases << " inputs, " << filter.Extremes.size()
               << " parameter limits" << std::endl;

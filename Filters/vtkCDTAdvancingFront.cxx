@@ -1672,6 +1672,12 @@ int vtkCDTAdvancingFront::RequestData(
     return finish();
   }
 
+  // Groups of exactly equal points (vtkStaticPointLocator::MergePoints with a zero tolerance;
+  // each point mapped to its group's representative): for the estimated normals and the
+  // duplicates below.
+  std::vector<vtkIdType> merged(static_cast<size_t>(local));
+  locator->MergePoints(0.0, merged.data());
+
   // Normals: the input's, else estimated (vtkPCANormalEstimation, consistently oriented). Input
   // normals that are zero-length or not finite count as missing: those are estimated too.
   std::vector<double> normals(3 * static_cast<size_t>(local), 0.0);
@@ -1737,8 +1743,6 @@ int vtkCDTAdvancingFront::RequestData(
   // with duplicates, the normals are estimated on the distinct points and copied to the others.
   auto estimateNormals = [&](std::vector<double>& estimatedNormals)
   {
-    std::vector<vtkIdType> merged(static_cast<size_t>(local));
-    locator->MergePoints(0.0, merged.data());
     std::vector<Id> distinct;
     std::vector<Id> slot(static_cast<size_t>(local), None);
     for (Id k = 0; k < local; ++k)
@@ -1894,12 +1898,10 @@ int vtkCDTAdvancingFront::RequestData(
                                   "when estimated: too few distinct neighbours).");
   }
 
-  // Exact duplicates (vtkStaticPointLocator::MergePoints with a zero tolerance): in each group of
-  // equal points the usable point of smallest id is kept. Then the mean spacing: the mean
-  // distance from a point to its nearest distinct point.
+  // Exact duplicates (the groups of `merged`): in each group of equal points the usable point of
+  // smallest id is kept. Then the mean spacing: the mean distance from a point to its nearest
+  // distinct point.
   {
-    std::vector<vtkIdType> merged(local);
-    locator->MergePoints(0.0, merged.data());
     std::vector<Id> kept(local, None); // per group (indexed by its merge target): the kept point
     for (Id k = 0; k < local; ++k)
     {

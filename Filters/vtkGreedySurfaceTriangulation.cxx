@@ -182,6 +182,7 @@ public:
 
   const double* P(int32_t i) const { return &this->X[3 * static_cast<size_t>(i)]; }
   double SamplingDistance(int32_t a, int32_t b) const;
+  void UseSamplingMetric(pcs::holes::HoleFiller& filler) const;
 
   bool Progress(double fraction)
   {
@@ -307,6 +308,26 @@ double Reconstruction::SamplingDistance(int32_t a, int32_t b) const
   vtkMath::Subtract(this->P(b), this->P(a), w);
   return std::sqrt(pcs::StretchedLength2(
     w, &this->Stretch[3 * static_cast<size_t>(a)], &this->Stretch[3 * static_cast<size_t>(b)]));
+}
+
+// On scan lines, step 6's 2D greedy triangulation orders its edges in the sampling's metric too
+// (SamplingDistance; 3D lengths for points added after the input's), as step 1 does: with 3D
+// lengths it joined the points of a line first, a fan of slivers along it.
+void Reconstruction::UseSamplingMetric(pcs::holes::HoleFiller& filler) const
+{
+  if (this->Stretch.empty())
+  {
+    return;
+  }
+  filler.Length2 = [this](int32_t a, int32_t b)
+  {
+    if (a < 0 || b < 0 || a >= this->N || b >= this->N)
+    {
+      return -1.0;
+    }
+    const double length = this->SamplingDistance(a, b);
+    return length * length;
+  };
 }
 
 // The local uniformity factor m of paper section 3 (see the class documentation).
@@ -1587,6 +1608,7 @@ void Reconstruction::Step6FillHoles(double begin, double end)
   // A vertex twice in a loop is a bridge end point and its copy (A, A').
   filler.SplitAtRepeatedVertices = false;
   filler.EdgeExists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
+  this->UseSamplingMetric(filler);
   vtkNew<vtkIdList> near;
   std::vector<int32_t> loop, candidates;
   std::vector<double> vectors;
@@ -1894,6 +1916,7 @@ void Reconstruction::CloseSmallLoops()
   filler.AuxiliaryDistance = this->Self->GetAuxiliaryPointDistance() * this->Spacing;
   filler.MaximumGreedyPoints = this->Self->GetMaximumHolePoints();
   filler.EdgeExists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
+  this->UseSamplingMetric(filler);
   std::vector<int32_t> loop;
   for (const auto& front : loops)
   {
@@ -2054,6 +2077,7 @@ void Reconstruction::CapOpenEnds()
   filler.AuxiliaryDistance = this->Self->GetAuxiliaryPointDistance() * this->Spacing;
   filler.MaximumGreedyPoints = this->Self->GetMaximumHolePoints();
   filler.EdgeExists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
+  this->UseSamplingMetric(filler);
   std::vector<int32_t> loop, sorted;
   for (const auto& front : loops)
   {

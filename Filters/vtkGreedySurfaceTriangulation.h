@@ -40,23 +40,24 @@
  *   across them; not in the paper). There the NumberOfNeighbors nearest of every point lie on its
  *   own line, step 1 took every edge along the lines first and made a few triangles of three
  *   points of one line (a sheet of 16 lines: 3 to 1,143 triangles, 97 to 99.8 % of the points
- *   unused). Where the nearest half of a point's neighbours lie along one line, and so do those
- *   of at least half of its neighbours (the pattern of a region, not of a few points of an
- *   ordinary sample that happen to line up), the point gets the nearest points of the lines
- *   beside it as neighbours and a stretch s along its line (pcs::AddOffLineNeighbors, shared with
+ *   unused). Where the nearest half of a point's neighbours lie along one line, and so do those of
+ *   at least half of its neighbours (the pattern of a region, not of a few points of an ordinary
+ *   sample that happen to line up), the point gets the nearest points of the lines beside it as
+ *   neighbours and a stretch s along its line (pcs::AddOffLineNeighbors, shared with
  *   vtkLocalOptimumGrowth). Lengths at such points are measured in the sampling's metric:
- *   sqrt(|w|^2 + (w . s)^2) for an offset w, with the larger of the two end points' components
- *   (an edge along a line stays long where one end got no stretch), so that the spacing along a
- *   line counts as the spacing across the lines. Step 1 takes its candidate edges in that
- *   length, and refuses, like a degenerate one, a triangle each of whose edges runs along a line
- *   (within 45 degrees of the line at one end): three points of one line, a sliver that the
- *   border lines of a sheet otherwise get. The mean spacing s is the mean distance to the
- *   nearest neighbour in that metric (about the spacing across the lines), so every length
- *   parameter below, from the boundary vectors' radius to the bridge and hole limits, is in
- *   units of the local sampling. A sheet gives the strip triangulation of its lines (2 (N - 1)
- *   triangles between two lines of N points, one boundary loop, every point used), a sphere
- *   sampled on latitude circles a closed genus-0 mesh (the caps inside the first and last
- *   circles filled by step 6). Clouds without such regions are not affected.
+ *   sqrt(|w|^2 + (w . s)^2) for an offset w, with the larger of the two end points' components (an
+ *   edge along a line stays long where one end got no stretch), so that the spacing along a line
+ *   counts as the spacing across the lines. Step 1 takes its candidate edges in that length (so
+ *   does step 6's 2D greedy triangulation, which joined the points of one line first in 3D
+ *   lengths), and refuses, like a degenerate one, a triangle each of whose edges runs along a line
+ *   (within 45 degrees of the line at one end): three points of one line, a sliver that the border
+ *   lines of a sheet otherwise get. The mean spacing s is the mean distance to the nearest
+ *   neighbour in that metric (about the spacing across the lines), so every length parameter
+ *   below, from the boundary vectors' radius to the bridge and hole limits, is in units of the
+ *   local sampling. A sheet gives the strip triangulation of its lines (2 (N - 1) triangles
+ *   between two lines of N points, one boundary loop, every point used), a sphere sampled on
+ *   latitude circles a closed genus-0 mesh (the caps inside the first and last circles filled by
+ *   step 6). Clouds without such regions are not affected.
  * - Step 2 (Fig. 7, 8): the umbrella test. A point is correct when its triangles form one
  *   closed chain (one open chain at a border), as in the paper, and -- the smoothness condition
  *   of section 3, which defines the well-sampled regions -- the normals of its triangles,
@@ -200,11 +201,11 @@
  * `NumberOfInsertedPoints`, `NumberOfSmallLoopsClosed`, `NumberOfSmallLoopsFilledByDihedral`,
  * `NumberOfEndsCapped`, `NumberOfAddedPoints`,
  * `NumberOfUnusedPoints`,
- * `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`, `NumberOfOutliers`, `MeanSpacing`, and the columns of the paper's
- * Table 1: `NumberOfPoints` (input points), `AverageUniformityInSSR` (mean m over the points of the
- * well-sampled regions, i.e. correct or boundary after step 2), `SSRAreaPercent` (area of the step
- * 1 triangles kept / output area), `SSRPointsPercent`, `StepsUsed` (a string such as "1, 2, 6"),
- * `Seconds`, `PointsPerSecond`.
+ * `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`, `NumberOfOutliers`, `MeanSpacing`, and the
+ * columns of the paper's Table 1: `NumberOfPoints` (input points), `AverageUniformityInSSR` (mean m
+ * over the points of the well-sampled regions, i.e. correct or boundary after step 2),
+ * `SSRAreaPercent` (area of the step 1 triangles kept / output area), `SSRPointsPercent`,
+ * `StepsUsed` (a string such as "1, 2, 6"), `Seconds`, `PointsPerSecond`.
  *
  * Cost: the neighbour search and the uniformity factors are threaded; step 1 is a sort of about
  * K N / 2 candidate edges and a linear pass; steps 2 to 4 are linear in the mesh and the loops;

@@ -329,8 +329,12 @@ int PointInPolygon(const std::vector<double>& uv, const double* p)
 }
 
 //------------------------------------------------------------------------------------------------
-bool GreedyTriangulation2D(const std::vector<double>& uv, const std::vector<double>& xyz, int n,
-  const std::function<bool(int, int)>& forbidden, std::vector<int32_t>& triangles)
+bool GreedyTriangulation2D(const std::vector<double>& uv,
+  const std::vector<double>& xyz,
+  int n,
+  const std::function<bool(int, int)>& forbidden,
+  std::vector<int32_t>& triangles,
+  const std::function<double(int, int)>& length2)
 {
   const int count = static_cast<int>(uv.size() / 2);
   const int m = count - n;
@@ -386,7 +390,8 @@ bool GreedyTriangulation2D(const std::vector<double>& uv, const std::vector<doub
       const double* a = &xyz[3 * static_cast<size_t>(i)];
       const double* b = &xyz[3 * static_cast<size_t>(j)];
       const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-      candidates.push_back({ d[0] * d[0] + d[1] * d[1] + d[2] * d[2], i, j });
+      candidates.push_back(
+        { length2 ? length2(i, j) : d[0] * d[0] + d[1] * d[1] + d[2] * d[2], i, j });
     }
   }
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
@@ -919,8 +924,20 @@ bool HoleFiller::FillPiece(const double* xyz, Piece& piece, std::vector<char>& t
     return (this->EdgeExists && this->EdgeExists(ids[i], ids[j])) ||
       (piece.Created && piece.Created->count(EdgeKey(ids[i], ids[j])));
   };
+  std::function<double(int, int)> length2;
+  if (this->Length2)
+  {
+    length2 = [this, &ids, &local3](int i, int j)
+    {
+      const double given = this->Length2(ids[i], ids[j]);
+      const double* a = &local3[3 * static_cast<size_t>(i)];
+      const double* b = &local3[3 * static_cast<size_t>(j)];
+      const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+      return given >= 0.0 ? given : d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    };
+  }
   std::vector<int32_t> local;
-  const bool complete = GreedyTriangulation2D(uv, local3, n, forbidden, local);
+  const bool complete = GreedyTriangulation2D(uv, local3, n, forbidden, local, length2);
   std::vector<char> usedLocal(ids.size(), 0);
   for (size_t t = 0; t < local.size(); t += 3)
   {

@@ -85,10 +85,15 @@ bool SegmentsIntersect(const double* p, const double* q, const double* r, const 
 /// (points 0..n-1 in order) with interior points n..n+m-1 (which must lie strictly inside and be
 /// pairwise distinct in 2D). `uv`: 2 coordinates per point; `xyz`: 3 per point (the lengths that
 /// order the candidates). `forbidden(i, j)` (optional) rejects an interior edge between local
-/// points i and j. Triangles (local ids, counter-clockwise) are appended to `triangles`. Returns
-/// true when the result is a complete triangulation (n + 2m - 2 triangles).
-bool GreedyTriangulation2D(const std::vector<double>& uv, const std::vector<double>& xyz, int n,
-  const std::function<bool(int, int)>& forbidden, std::vector<int32_t>& triangles);
+/// points i and j. `length2(i, j)` (optional) replaces the squared 3D length that orders the
+/// candidates (a sampling's metric). Triangles (local ids, counter-clockwise) are appended to
+/// `triangles`. Returns true when the result is a complete triangulation (n + 2m - 2 triangles).
+bool GreedyTriangulation2D(const std::vector<double>& uv,
+  const std::vector<double>& xyz,
+  int n,
+  const std::function<bool(int, int)>& forbidden,
+  std::vector<int32_t>& triangles,
+  const std::function<double(int, int)>& length2 = nullptr);
 
 /// Result of HoleFiller::Fill.
 struct FillResult
@@ -116,6 +121,11 @@ public:
   /// Optional: true when the mesh already has the edge {a, b} (point ids): such an edge may not
   /// be created inside the hole (it would get a third triangle).
   std::function<bool(int32_t, int32_t)> EdgeExists;
+
+  /// Optional: the squared length of the edge between points a and b (point ids) that orders
+  /// step 6's candidate edges instead of the 3D length (a sampling's metric, e.g. scan lines in
+  /// vtkGreedySurfaceTriangulation); a negative value falls back to the 3D length.
+  std::function<double(int32_t, int32_t)> Length2;
 
   /// A vertex met twice by the loop: true (default), the loop is cut there into two loops (a
   /// hole touching itself at a vertex); false, the two occurrences are distinct boundary points

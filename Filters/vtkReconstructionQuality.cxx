@@ -584,30 +584,24 @@ struct SurfaceSamples
   }
 };
 
-// A vtkPolyData holding the points `ids` of `points` (all of them when ids is null), no cells,
-// with double coordinates (only double points are shared): vtkStaticPointLocator (VTK 9.2)
-// crashed in FindClosestNPoints on a reference cloud of int or short points.
-vtkSmartPointer<vtkPolyData> PointCloud(vtkPoints* points, const std::vector<vtkIdType>* ids)
+// A vtkPolyData holding the points `ids` of `points` as doubles, no cells. (Sharing the points
+// instead crashed vtkStaticPointLocator's FindClosestNPoints (VTK 9.2) on a reference cloud of
+// int or short points.)
+vtkSmartPointer<vtkPolyData> PointCloud(vtkPoints* points, const std::vector<vtkIdType>& ids)
 {
   auto cloud = vtkSmartPointer<vtkPolyData>::New();
   if (!points)
   {
     return cloud;
   }
-  if (!ids && points->GetDataType() == VTK_DOUBLE)
-  {
-    cloud->SetPoints(points);
-    return cloud;
-  }
-  const vtkIdType size = ids ? static_cast<vtkIdType>(ids->size()) : points->GetNumberOfPoints();
   vtkNew<vtkPoints> subset;
   subset->SetDataTypeToDouble();
-  subset->SetNumberOfPoints(size);
-  for (vtkIdType i = 0; i < size; ++i)
+  subset->SetNumberOfPoints(static_cast<vtkIdType>(ids.size()));
+  for (size_t i = 0; i < ids.size(); ++i)
   {
     double x[3];
-    points->GetPoint(ids ? (*ids)[i] : i, x);
-    subset->SetPoint(i, x);
+    points->GetPoint(ids[i], x);
+    subset->SetPoint(static_cast<vtkIdType>(i), x);
   }
   cloud->SetPoints(subset);
   return cloud;
@@ -1994,8 +1988,8 @@ int vtkReconstructionQuality::RequestData(
   double meanSpacing = NaN;
   {
     vtkSmartPointer<vtkPolyData> cloud = referenceIsSurface
-      ? PointCloud(points, &meshSamples.Vertices)
-      : PointCloud(referencePoints, nullptr);
+      ? PointCloud(points, meshSamples.Vertices)
+      : PointCloud(referencePoints, referenceSamples.Vertices);
     if (cloud->GetNumberOfPoints() > 1)
     {
       const int exponent = ScaleSafely(cloud);

@@ -171,6 +171,130 @@ double OffsetCovariance(const double* xyz, const double* p, const int32_t* row, 
   return s0;
 }
 
+double QuadricHeightNoise(const double* xyz,
+  const double* normals,
+  const double* p,
+  const double* normal,
+  const int32_t* row,
+  int count,
+  double minimumNormalDot)
+{
+  // Tangent frame (t1, t2, normal); the lateral coordinates are divided by the largest offset
+  // for the conditioning of the normal equations. Two passes over the neighbours (the extent,
+  // then the sums), nothing stored.
+  double t1[3], t2[3];
+  vtkMath::Perpendiculars(normal, t1, t2, 0.0);
+  auto offset = [&](int j, double uvh[3])
+  {
+    if (row[j] < 0 ||
+      !(vtkMath::Dot(normals + 3 * static_cast<size_t>(row[j]), normal) >= minimumNormalDot))
+    {
+      return false;
+    }
+    const double* q = xyz + 3 * static_cast<size_t>(row[j]);
+    const double d[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+    uvh[0] = vtkMath::Dot(d, t1);
+    uvh[1] = vtkMath::Dot(d, t2);
+    uvh[2] = vtkMath::Dot(d, normal);
+    return std::isfinite(uvh[0]) && std::isfinite(uvh[1]) && std::isfinite(uvh[2]);
+  };
+  double extent = 0.0;
+  int m = 1; // p itself, at (0, 0, 0)
+  for (int j = 0; j < count; ++j)
+  {
+    double uvh[3];
+    if (offset(j, uvh))
+    {
+      extent = std::max({ extent, std::fabs(uvh[0]), std::fabs(uvh[1]) });
+      ++m;
+    }
+  }
+  constexpr int terms = 6;
+  if (m <= terms || !(extent > 0.0))
+  {
+    return -1.0;
+  }
+  // Normal equations of h = a + b u + c v + d u^2 + e u v + f v^2 (u, v scaled), and the sum of
+  // the squared heights: the residual is sum h^2 - beta . (X^T h).
+  double normalMatrix[terms][terms] = {};
+  double rightSide[terms] = {};
+  double heights2 = 0.0;
+  auto accumulate = [&](const double uvh[3])
+  {
+    const double u = uvh[0] / extent, v = uvh[1] / extent;
+    const double f[terms] = { 1.0, u, v, u * u, u * v, v * v };
+    for (int r = 0; r < terms; ++r)
+    {
+      rightSide[r] += f[r] * uvh[2];
+      for (int col = 0; col < terms; ++col)
+      {
+        normalMatrix[r][col] += f[r] * f[col];
+      }
+    }
+    heights2 += uvh[2] * uvh[2];
+  };
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  accumulate(origin);
+  for (int j = 0; j < count; ++j)
+  {
+    double uvh[3];
+    if (offset(j, uvh))
+    {
+      accumulate(uvh);
+    }
+  }
+  double projected[terms];
+  std::copy(rightSide, rightSide + terms, projected);
+  // Gaussian elimination with partial pivoting; a pivot below 1e-9 of the largest diagonal
+  // entry (the lateral coordinates are at most 1) means a singular fit.
+  double largest = 0.0;
+  for (int r = 0; r < terms; ++r)
+  {
+    largest = std::max(largest, normalMatrix[r][r]);
+  }
+  for (int col = 0; col < terms; ++col)
+  {
+    int pivot = col;
+    for (int r = col + 1; r < terms; ++r)
+    {
+      if (std::fabs(normalMatrix[r][col]) > std::fabs(normalMatrix[pivot][col]))
+      {
+        pivot = r;
+      }
+    }
+    if (!(std::fabs(normalMatrix[pivot][col]) > 1e-9 * largest))
+    {
+      return -1.0;
+    }
+    std::swap(normalMatrix[pivot], normalMatrix[col]);
+    std::swap(rightSide[pivot], rightSide[col]);
+    for (int r = col + 1; r < terms; ++r)
+    {
+      const double factor = normalMatrix[r][col] / normalMatrix[col][col];
+      for (int k = col; k < terms; ++k)
+      {
+        normalMatrix[r][k] -= factor * normalMatrix[col][k];
+      }
+      rightSide[r] -= factor * rightSide[col];
+    }
+  }
+  for (int r = terms - 1; r >= 0; --r)
+  {
+    for (int k = r + 1; k < terms; ++k)
+    {
+      rightSide[r] -= normalMatrix[r][k] * rightSide[k];
+    }
+    rightSide[r] /= normalMatrix[r][r];
+  }
+  double fitted = 0.0; // beta . (X^T h)
+  for (int r = 0; r < terms; ++r)
+  {
+    fitted += rightSide[r] * projected[r];
+  }
+  const double noise = std::sqrt(std::max(0.0, heights2 - fitted) / (m - terms));
+  return std::isfinite(noise) ? noise : -1.0;
+}
+
 // The covariance of a neighbourhood and the point (OffsetCovariance).
 void EstimatePlaneNormals(const double* pts,
   Id count,

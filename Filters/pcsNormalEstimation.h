@@ -28,6 +28,23 @@ void SmallestEigenvector(const double a[3][3], double values[3], double vector[3
 double OffsetCovariance(const double* xyz, const double* p, const int32_t* row, int count,
   bool withPoint, double covariance[3][3]);
 
+/// Height noise at the point `p` with unit normal `normal`: the root mean square residual of the
+/// least-squares quadric height field h(u, v) = a + b u + c v + d u^2 + e u v + f v^2 over the
+/// tangent frame of the normal, fitted to p and those of its neighbours `row` (`count` ids into
+/// `xyz`, -1 for none) whose unit normal (in `normals`) has a dot product of at least
+/// `minimumNormalDot` with `normal` (the same smooth sheet: not the other side of a crease or of
+/// a thin part), with m - 6 degrees of freedom for m points (an unbiased variance for Gaussian
+/// height noise). A smooth surface is a quadric up to third-order terms, so its curvature does
+/// not count as noise (a plane fit's residual would). Returns -1 when fewer than 7 points are
+/// usable or the fit is singular (the neighbours near a conic in the tangent plane).
+double QuadricHeightNoise(const double* xyz,
+  const double* normals,
+  const double* p,
+  const double* normal,
+  const int32_t* row,
+  int count,
+  double minimumNormalDot);
+
 /// Unoriented unit normal of each of the `n` points of `xyz` (packed x, y, z): the eigenvector
 /// of the smallest eigenvalue of the covariance of its neighbourhood, the point and its `k`
 /// nearest points (`neighbors`, n * k ids as made by FindNearestNeighbors, -1 for none): Hoppe

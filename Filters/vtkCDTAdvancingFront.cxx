@@ -557,6 +557,9 @@ struct Parameters
 {
   double Radius = 0;           // II.A neighbourhood of a front edge's midpoint
   double MinimumNormalDot = 0; // II.C.2
+  // II.C.2 within the noise band: a vertex whose normal fails the bound passes when the other
+  // vertices lie within the triangle's noise band (Front::NoiseBand) of its tangent plane.
+  bool NoiseBand = false;
   double MaximumRay = 0;       // II.D
   // II.D: MaximumRay scaled at each triangle by the largest local scale of its vertices
   // (Front::Scale, at most 1).
@@ -585,6 +588,7 @@ public:
     const double* normals,
     const double* scale,
     const double* stretch,
+    const double* noiseBand,
     const std::vector<uint8_t>& status,
     vtkStaticPointLocator* locator,
     const LocatorBins& bins,
@@ -594,6 +598,7 @@ public:
     , Normals(normals)
     , Scale(scale)
     , Stretch(stretch)
+    , NoiseBand(noiseBand)
     , Status(status)
     , Locator(locator)
     , Bins(bins)
@@ -686,8 +691,15 @@ private:
 
   // The projection tests of section II.D on the triangle (e0, e1, third) with the plane `plane`:
   // true when no neighbouring point or mesh edge blocks it.
-  bool PassesProjectionTests(Id e0, Id e1, Id third, const pcs::projected::TrianglePlane& plane,
-    const Parameters& parameters);
+  // With `ignoreNoiseBand`, a point (or both end points of an edge) within the noise band of the
+  // triangle's plane does not block it: its ray parameter t (along its normal) satisfies
+  // t^2 <= b^2 + B^2, b its noise band and B the largest of the triangle's vertices'.
+  bool PassesProjectionTests(Id e0,
+    Id e1,
+    Id third,
+    const pcs::projected::TrianglePlane& plane,
+    const Parameters& parameters,
+    bool ignoreNoiseBand = false);
 
   // III.C: may the ear (e0, e1, x) be a candidate? Not when it adds an edge longer than
   // LongEar and has an angle below the minimum: a sliver along the hole. (The paper takes the
@@ -767,6 +779,39 @@ private:
     return std::isnan(out[0]) ? nullptr : out;
   }
 
+  // II.C.2 within the noise band: does each other vertex of the triangle v lie within the noise
+  // band of the tangent plane of v[i]? The height of q over that plane is a difference of two
+  // noisy heights: its band is the root sum of squares of the two points' bands.
+  bool WithinNoiseBand(const Id v[3], int i) const
+  {
+    const double *p = this->P(v[i]), *n = this->N(v[i]);
+    const double band2 = this->NoiseBand[v[i]] * this->NoiseBand[v[i]];
+    for (int j = 1; j < 3; ++j)
+    {
+      const Id other = v[(i + j) % 3];
+      const double* q = this->P(other);
+      const double d[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+      const double height = Dot(n, d);
+      if (!(height * height <= band2 + this->NoiseBand[other] * this->NoiseBand[other]))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // PassesProjectionTests: is the end point x of an edge (a vertex of the triangle tested, or
+  // a point whose ray parameter t onto its plane passes `within`) in the noise band?
+  template<typename Within>
+  bool EndWithinNoiseBand(Id x, bool isVertex, const double* normal, const Within& within) const
+  {
+    double t;
+    return isVertex ||
+      (pcs::projected::RayParameter(this->P(x), this->N(x), this->Projected0, normal, t) &&
+        within(x, t));
+  }
+  const double* Projected0 = nullptr; // a point of the plane of the triangle tested
+
   bool CanAdd(Id a, Id b, Id c) const;
   int64_t Add(Id a, Id b, Id c, uint8_t origin);
   void Progress();
@@ -776,6 +821,7 @@ private:
   const double* Normals;
   const double* Scale; // per point: its local spacing over the mean spacing, at most 1
   const double* Stretch; // per point: its scan-line stretch (3 values), null when none has one
+  const double* NoiseBand; // per point: the height band of its sampling noise (II.C.2)
   const std::vector<uint8_t>& Status;
   vtkStaticPointLocator* Locator;
   const LocatorBins& Bins;
@@ -988,10 +1034,15 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
   if (!closesHole)
   {
     const double bound = parameters.MinimumNormalDot * length;
-    if (std::fabs(Dot(n0, normal)) < bound || std::fabs(Dot(n1, normal)) < bound ||
-      std::fabs(Dot(n2, normal)) < bound)
+    const Id v[3] = { e0, e1, third };
+    const double* n[3] = { n0, n1, n2 };
+    for (int i = 0; i < 3; ++i)
     {
-      return false;
+      if (std::fabs(Dot(n[i], normal)) < bound &&
+        !(parameters.NoiseBand && this->WithinNoiseBand(v, i)))
+      {
+        return false;
+      }
     }
   }
   // II.C.3: the third vertices of the two triangles of the edge lie on different sides of the
@@ -1021,6 +1072,13 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
     return false;
   }
   ++this->ProjectionTests;
+  // III.C within the noise band: the last triangle of a hole is not blocked by points and edges
+  // within the noise band of its plane (see PassesProjectionTests). That decision depends on the
+  // mesh (the hole), so it is not remembered in Blocked.
+  if (closesHole && parameters.NoiseBand)
+  {
+    return this->PassesProjectionTests(e0, e1, third, plane, parameters, true);
+  }
   std::array<Id, 3> key = { e0, e1, third };
   std::sort(key.begin(), key.end());
   if (this->Blocked.Contains(key))
@@ -1035,8 +1093,12 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
   return true;
 }
 
-bool Front::PassesProjectionTests(
-  Id e0, Id e1, Id third, const pcs::projected::TrianglePlane& plane, const Parameters& parameters)
+bool Front::PassesProjectionTests(Id e0,
+  Id e1,
+  Id third,
+  const pcs::projected::TrianglePlane& plane,
+  const Parameters& parameters,
+  bool ignoreNoiseBand)
 {
   const double *n0 = this->N(e0), *n1 = this->N(e1), *n2 = this->N(third);
   const double* normal = plane.GetNormal();
@@ -1066,6 +1128,12 @@ bool Front::PassesProjectionTests(
   const double maximumRay = parameters.LocalRay ? parameters.MaximumRay *
       std::max(this->Scale[e0], std::max(this->Scale[e1], this->Scale[third]))
                                                 : parameters.MaximumRay;
+  const double triangleBand2 = ignoreNoiseBand
+    ? std::pow(std::max({ this->NoiseBand[e0], this->NoiseBand[e1], this->NoiseBand[third] }), 2)
+    : 0.0;
+  this->Projected0 = this->P(e0);
+  auto withinNoiseBand = [&](Id x, double t)
+  { return ignoreNoiseBand && t * t <= this->NoiseBand[x] * this->NoiseBand[x] + triangleBand2; };
   const double pointReach = reach + maximumRay;
   const double edgeReach =
     this->EdgeReach.Reach(centroid, 1.01 * pointReach, this->LongestEdge) * 1.000001;
@@ -1109,7 +1177,7 @@ bool Front::PassesProjectionTests(
     // triangle: the exact test is skipped. Same decisions, fewer exact tests.
     double t;
     if (!pcs::projected::RayParameter(this->P(p), np, this->P(e0), normal, t) ||
-      !(std::fabs(t) <= maximumRay))
+      !(std::fabs(t) <= maximumRay) || (!this->Mesh.IsFree(p) && withinNoiseBand(p, t)))
     {
       return true;
     }
@@ -1175,7 +1243,9 @@ bool Front::PassesProjectionTests(
         pu ? this->Project(w, wIsVertex, normal, this->P(e0), maximumRay) : nullptr;
       // A projected segment that stays out of the triangle's ball (1 % of margin) cannot cross.
       if (pw && SegmentDistance2(pu, pw, centroid) <= triangleReach2 &&
-        plane.SegmentCrosses(pu, pw))
+        plane.SegmentCrosses(pu, pw) &&
+        !(ignoreNoiseBand && this->EndWithinNoiseBand(u, uIsVertex, normal, withinNoiseBand) &&
+          this->EndWithinNoiseBand(w, wIsVertex, normal, withinNoiseBand)))
       {
         return false;
       }
@@ -1929,14 +1999,15 @@ int vtkCDTAdvancingFront::RequestData(
     vtkWarningMacro("Ignored " << this->NumberOfDuplicatePoints
                                << " exact duplicate point(s) (the copy of smallest id is meshed).");
   }
-  // The table of nearest neighbours for the local spacing (the automatic MaximumRayDistance):
-  // LocalSpacingNeighbors per point (that of the normal estimation when it has that size).
-  // It is also the table on which scan-line sampling is looked for when the normals were not
-  // estimated on all the points (given, or estimated on the distinct points).
+  // The table of nearest neighbours for the local spacing (the automatic MaximumRayDistance) and
+  // the noise band: LocalSpacingNeighbors per point (that of the normal estimation when it has
+  // that size). It is also the table on which scan-line sampling is looked for when the normals
+  // were not estimated on all the points (given, or estimated on the distinct points).
   constexpr int LocalSpacingNeighbors = 9;
   const bool localRay = this->MaximumRayDistance <= 0.0;
+  const bool noiseBand = this->NoiseBandFactor > 0.0;
   const int localOthers = std::min<int>(LocalSpacingNeighbors, local - 1);
-  if ((localRay || !scanLinesChecked) && knnOthers != localOthers)
+  if ((localRay || noiseBand || !scanLinesChecked) && knnOthers != localOthers)
   {
     knnOthers = 0;
     if (!pcs::FindNearestNeighbors(locator, xyz.data(), static_cast<int32_t>(local), localOthers,
@@ -2085,12 +2156,46 @@ int vtkCDTAdvancingFront::RequestData(
       });
   }
 
+  // II.C.2 within the noise band: NoiseBandFactor times the height noise of each point (the
+  // residual of a quadric height field over its tangent plane fitted to the point and those of
+  // its LocalSpacingNeighbors nearest others whose normals are within 60 degrees of its own,
+  // pcs::QuadricHeightNoise), at most the mean spacing. (With all the neighbours, the points
+  // along the sharp rim of a lens, normals 100 degrees apart across it, got a band of a mean
+  // spacing and the front left 68 boundary edges along the rim.)
+  constexpr double SameSheetNormalDot = 0.5;
+  std::vector<double> band(static_cast<size_t>(local), 0.0);
+  if (noiseBand && knnOthers > 0)
+  {
+    const int others = knnOthers;
+    vtkSMPTools::For(0,
+      local,
+      [&](Id begin, Id end)
+      {
+        for (Id i = begin; i < end; ++i)
+        {
+          if (status[i] != Usable)
+          {
+            continue;
+          }
+          const double noise = pcs::QuadricHeightNoise(xyz.data(),
+            normals.data(),
+            &xyz[3 * static_cast<size_t>(i)],
+            &normals[3 * static_cast<size_t>(i)],
+            &knn[static_cast<size_t>(i) * others],
+            others,
+            SameSheetNormalDot);
+          band[i] = noise > 0.0 ? std::min(this->NoiseBandFactor * noise, meanSpacing) : 0.0;
+        }
+      });
+  }
+
   // The parameters in the (scaled) units of xyz.
   Parameters strict;
   strict.Radius = this->NeighborhoodRadius > 0.0 ? std::ldexp(this->NeighborhoodRadius, exponent)
                                                  : this->NeighborhoodRadiusFactor * meanSpacing;
   strict.LocalRay = localRay;
   strict.MinimumNormalDot = this->MinimumNormalDot;
+  strict.NoiseBand = noiseBand;
   strict.MaximumRay = this->MaximumRayDistance > 0.0
     ? std::ldexp(this->MaximumRayDistance, exponent)
     : 2.0 * meanSpacing;
@@ -2110,6 +2215,7 @@ int vtkCDTAdvancingFront::RequestData(
     normals.data(),
     scale.data(),
     stretch.empty() ? nullptr : stretch.data(),
+    band.data(),
     status,
     locator,
     bins,
@@ -2252,6 +2358,7 @@ void vtkCDTAdvancingFront::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumRayDistance: " << this->MaximumRayDistance << "\n";
   os << indent << "MinimumTriangleArea: " << this->MinimumTriangleArea << "\n";
   os << indent << "MaximumNumberOfCandidates: " << this->MaximumNumberOfCandidates << "\n";
+  os << indent << "NoiseBandFactor: " << this->NoiseBandFactor << "\n";
   os << indent << "HoleFilling: " << (this->HoleFilling ? "On" : "Off") << "\n";
   os << indent << "HoleFillingRadiusFactor: " << this->HoleFillingRadiusFactor << "\n";
   os << indent << "HoleFillingMinimumNormalDot: " << this->HoleFillingMinimumNormalDot << "\n";

@@ -1,5 +1,6 @@
 #include "pcsNearestNeighbors.h"
 
+#include "pcsDuplicatePoints.h"
 #include "pcsNormalEstimation.h"
 
 #include "vtkDataSet.h"
@@ -208,24 +209,11 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
         byBucket[fill[bucketOf[i]]++] = i;
       }
     }
-    auto finite = [xyz](int32_t id) { return IsFinite(xyz + 3 * static_cast<size_t>(id)); };
-    auto before = [xyz, &finite](int32_t a, int32_t b)
+    auto before = [xyz](int32_t a, int32_t b)
     {
-      const bool fa = finite(a), fb = finite(b);
-      if (fa != fb || !fa)
-      {
-        return fa != fb ? fa : a < b;
-      }
-      const double* qa = xyz + 3 * static_cast<size_t>(a);
-      const double* qb = xyz + 3 * static_cast<size_t>(b);
-      for (int c = 0; c < 3; ++c)
-      {
-        if (qa[c] != qb[c])
-        {
-          return qa[c] < qb[c];
-        }
-      }
-      return a < b;
+      const int c =
+        ComparePositions(xyz + 3 * static_cast<size_t>(a), xyz + 3 * static_cast<size_t>(b), 3);
+      return c != 0 ? c < 0 : a < b;
     };
     // Bucket b holds byBucket[first, last) (bucketStart, rewritten to entry indices on the way).
     int32_t first = 0;
@@ -241,8 +229,7 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
       for (int32_t j = 0; j < count; ++j)
       {
         const double* q = xyz + 3 * static_cast<size_t>(ids[j]);
-        const bool same = j > 0 && finite(ids[j]) && finite(ids[j - 1]) &&
-          std::equal(q, q + 3, xyz + 3 * static_cast<size_t>(ids[j - 1]));
+        const bool same = j > 0 && SamePosition(q, xyz + 3 * static_cast<size_t>(ids[j - 1]), 3);
         if (!same)
         {
           entryStart.push_back(static_cast<int32_t>(members.size()));

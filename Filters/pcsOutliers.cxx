@@ -1,5 +1,6 @@
 #include "pcsOutliers.h"
 
+#include "pcsDuplicatePoints.h"
 #include "pcsNearestNeighbors.h"
 
 #include "vtkDoubleArray.h"
@@ -23,28 +24,22 @@ namespace pcs
 namespace
 {
 // The distinct positions among `ids` in lexicographic order (packed x, y, z), and for each entry
-// of `ids` the index of its position.
+// of `ids` the index of its position (pcs::FindExactDuplicates).
 void DistinctPositions(const double* xyz, const std::vector<int32_t>& ids,
   std::vector<double>& distinct, std::vector<int32_t>& positionOf)
 {
-  auto at = [xyz](int32_t id) { return xyz + 3 * static_cast<size_t>(id); };
-  std::vector<int32_t> order(ids.size());
-  std::iota(order.begin(), order.end(), 0);
-  vtkSMPTools::Sort(order.begin(), order.end(), [&](int32_t r, int32_t s) {
-    const double* p = at(ids[r]);
-    const double* q = at(ids[s]);
-    return std::lexicographical_compare(p, p + 3, q, q + 3);
-  });
+  std::vector<int32_t> first, sorted;
+  FindExactDuplicates(xyz, 3, ids.data(), static_cast<int32_t>(ids.size()), first, &sorted);
   distinct.clear();
   positionOf.assign(ids.size(), -1);
-  for (size_t j = 0; j < order.size(); ++j)
+  for (const int32_t j : sorted)
   {
-    const double* p = at(ids[order[j]]);
-    if (j == 0 || !std::equal(p, p + 3, at(ids[order[j - 1]])))
+    if (first[j] == j)
     {
+      const double* p = xyz + 3 * static_cast<size_t>(ids[j]);
       distinct.insert(distinct.end(), p, p + 3);
     }
-    positionOf[order[j]] = static_cast<int32_t>(distinct.size() / 3 - 1);
+    positionOf[j] = static_cast<int32_t>(distinct.size() / 3 - 1);
   }
 }
 

@@ -1,6 +1,7 @@
 #include "vtkCDTAdvancingFront.h"
 
 #include "pcsCoordinateScaling.h"
+#include "pcsDuplicatePoints.h"
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 #include "pcsNearestNeighbors.h"
@@ -1742,11 +1743,10 @@ int vtkCDTAdvancingFront::RequestData(
     return finish();
   }
 
-  // Groups of exactly equal points (vtkStaticPointLocator::MergePoints with a zero tolerance;
-  // each point mapped to its group's representative): for the estimated normals and the
-  // duplicates below.
-  std::vector<vtkIdType> merged(static_cast<size_t>(local));
-  locator->MergePoints(0.0, merged.data());
+  // Groups of exactly equal points (pcs::FindExactDuplicates; firstCopy[k]: the copy of smallest
+  // id at point k's position): for the estimated normals and the duplicates below.
+  std::vector<Id> firstCopy;
+  pcs::FindExactDuplicates(xyz.data(), 3, nullptr, local, firstCopy);
 
   // Normals: the input's, else estimated (vtkPCANormalEstimation, consistently oriented). Input
   // normals that are zero-length or not finite count as missing: those are estimated too.
@@ -1817,8 +1817,7 @@ int vtkCDTAdvancingFront::RequestData(
     std::vector<Id> slot(static_cast<size_t>(local), None);
     for (Id k = 0; k < local; ++k)
     {
-      const vtkIdType target = merged[k];
-      if (target == k || target < 0 || target >= local || merged[target] != target)
+      if (firstCopy[k] == k)
       {
         slot[k] = static_cast<Id>(distinct.size());
         distinct.push_back(k);
@@ -1863,7 +1862,7 @@ int vtkCDTAdvancingFront::RequestData(
     }
     for (Id k = 0; k < local; ++k)
     {
-      const Id d = slot[k] != None ? slot[k] : slot[merged[k]];
+      const Id d = slot[firstCopy[k]];
       std::copy_n(&distinctNormals[3 * static_cast<size_t>(d)], 3,
         &estimatedNormals[3 * static_cast<size_t>(k)]);
     }
@@ -1968,21 +1967,19 @@ int vtkCDTAdvancingFront::RequestData(
                                   "when estimated: too few distinct neighbours).");
   }
 
-  // Exact duplicates (the groups of `merged`): in each group of equal points the usable point of
-  // smallest id is kept. Then the mean spacing: the mean distance from a point to its nearest
-  // distinct point.
+  // Exact duplicates (firstCopy): in each group of equal points the usable point of smallest id
+  // is kept. Then the mean spacing: the mean distance from a point to its nearest distinct point.
   {
-    std::vector<Id> kept(local, None); // per group (indexed by its merge target): the kept point
+    std::vector<Id> kept(local, None); // per group (indexed by its first copy): the kept point
     for (Id k = 0; k < local; ++k)
     {
-      const vtkIdType group = merged[k];
-      if (status[k] != Usable || group < 0 || group >= local)
+      if (status[k] != Usable)
       {
         continue;
       }
-      if (kept[group] == None)
+      if (kept[firstCopy[k]] == None)
       {
-        kept[group] = k;
+        kept[firstCopy[k]] = k;
       }
       else
       {

@@ -1,6 +1,7 @@
 #include "vtkGreedySurfaceTriangulation.h"
 
 #include "pcsCoordinateScaling.h"
+#include "pcsDuplicatePoints.h"
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 #include "pcsHoleFilling.h"
@@ -3015,44 +3016,21 @@ int vtkGreedySurfaceTriangulation::RequestData(
                                 << this->OutlierFactor
                                 << "): point data Used = 0, Status 4, field data NumberOfOutliers.");
   }
-  vtkSMPTools::Sort(order.begin(), order.end(), [&xyz](int32_t a, int32_t b) {
-    const double* pa = &xyz[3 * static_cast<size_t>(a)];
-    const double* pb = &xyz[3 * static_cast<size_t>(b)];
-    for (int i = 0; i < 3; ++i)
-    {
-      if (pa[i] != pb[i])
-      {
-        return pa[i] < pb[i];
-      }
-    }
-    return a < b;
-  });
-  localOf.assign(numberOfPoints, -1);
+  // Exact duplicates: each copy is mapped to the copy of smallest id (order is ascending).
+  std::vector<std::pair<int32_t, int32_t>> merged;
+  duplicates = pcs::MergeExactDuplicates(xyz.data(), 3, order, merged);
   std::vector<int32_t> representative(numberOfPoints, -1);
-  for (size_t k = 0; k < order.size(); ++k)
+  for (const auto& copy : merged)
   {
-    const int32_t id = order[k];
-    if (k > 0)
-    {
-      const int32_t previous = order[k - 1];
-      if (std::equal(&xyz[3 * static_cast<size_t>(id)], &xyz[3 * static_cast<size_t>(id)] + 3,
-            &xyz[3 * static_cast<size_t>(previous)]))
-      {
-        representative[id] = representative[previous];
-        ++duplicates;
-        continue;
-      }
-    }
-    representative[id] = id;
+    representative[copy.first] = copy.second;
   }
   // Local ids in input order.
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  localOf.assign(numberOfPoints, -1);
+  for (int32_t id : order)
   {
-    if (representative[i] == i)
-    {
-      localOf[i] = static_cast<int32_t>(inputIds.size());
-      inputIds.push_back(i);
-    }
+    representative[id] = id;
+    localOf[id] = static_cast<int32_t>(inputIds.size());
+    inputIds.push_back(id);
   }
   if (duplicates > 0)
   {

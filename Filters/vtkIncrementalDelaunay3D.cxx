@@ -2,9 +2,10 @@
 
 #include "pcsCoordinateScaling.h"
 #include "pcsDelaunay2D.h"
+#include "pcsDelaunay3D.h"
+#include "pcsDuplicatePoints.h"
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
-#include "pcsDelaunay3D.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -230,44 +231,16 @@ ProjectionFrame BestFitFrame(const double* xyz, const std::vector<int32_t>& ids)
 }
 
 //------------------------------------------------------------------------------------------------
-// Exact duplicates (dim = 2: of the projected coordinates): sort lexicographically, ties by id,
-// and map each point to the first of its group.
+// Exact duplicates (dim = 2: of the projected coordinates), removed from `ids` (ascending) and
+// mapped to the copy of smallest id (pcs::MergeExactDuplicates).
 void MergeExactDuplicates(
   const double* coords, int dim, std::vector<int32_t>& ids, vtkIdTypeArray* representative)
 {
-  std::vector<int32_t> sorted(ids);
-  vtkSMPTools::Sort(sorted.begin(), sorted.end(), [coords, dim](int32_t a, int32_t b) {
-    const double* pa = coords + dim * static_cast<int64_t>(a);
-    const double* pb = coords + dim * static_cast<int64_t>(b);
-    for (int i = 0; i < dim; ++i)
-    {
-      if (pa[i] != pb[i])
-      {
-        return pa[i] < pb[i];
-      }
-    }
-    return a < b;
-  });
-  bool merged = false;
-  for (size_t i = 1, first = 0; i < sorted.size(); ++i)
+  std::vector<std::pair<int32_t, int32_t>> merged;
+  pcs::MergeExactDuplicates(coords, dim, ids, merged);
+  for (const auto& copy : merged)
   {
-    const double* p = coords + dim * static_cast<int64_t>(sorted[i]);
-    const double* q = coords + dim * static_cast<int64_t>(sorted[first]);
-    if (std::equal(p, p + dim, q))
-    {
-      representative->SetValue(sorted[i], sorted[first]);
-      merged = true;
-    }
-    else
-    {
-      first = i;
-    }
-  }
-  if (merged)
-  {
-    ids.erase(std::remove_if(ids.begin(), ids.end(),
-                [representative](int32_t id) { return representative->GetValue(id) != id; }),
-      ids.end());
+    representative->SetValue(copy.first, copy.second);
   }
 }
 

@@ -1,6 +1,7 @@
 #include "vtkLocalOptimumGrowth.h"
 
 #include "pcsCoordinateScaling.h"
+#include "pcsDuplicatePoints.h"
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 #include "pcsHoleFilling.h"
@@ -2167,63 +2168,23 @@ int vtkLocalOptimumGrowth::RequestData(
     }
   }
 
-  // Internal order along a Hilbert curve; exact duplicates merged into the first of their group.
-  // The distinct points' ids in lexicographic (x, y, z) order are kept for the seeds' order.
+  // Internal order along a Hilbert curve; exact duplicates merged into the first of their group
+  // along the curve (pcs::MergeExactDuplicates keeps the order of `ids`). The distinct points'
+  // ids in lexicographic (x, y, z) order are kept for the seeds' order.
   pcs::HilbertSort(xyz.data(), 3, ids.data(), ids.data() + ids.size());
   std::vector<Id> lexicographic;
   {
-    std::vector<Id> rank(ids.size());
-    std::iota(rank.begin(), rank.end(), 0);
-    const double* x = xyz.data();
-    vtkSMPTools::Sort(rank.begin(), rank.end(), [x, &ids](Id r, Id s) {
-      const double* p = x + 3 * static_cast<size_t>(ids[r]);
-      const double* q = x + 3 * static_cast<size_t>(ids[s]);
-      if (p[0] != q[0])
-      {
-        return p[0] < q[0];
-      }
-      if (p[1] != q[1])
-      {
-        return p[1] < q[1];
-      }
-      return p[2] != q[2] ? p[2] < q[2] : r < s;
-    });
-    std::vector<char> keep(ids.size(), 1);
-    for (size_t k = 0; k < rank.size(); ++k)
+    std::vector<std::pair<int32_t, int32_t>> merged;
+    this->NumberOfDuplicatePoints =
+      pcs::MergeExactDuplicates(xyz.data(), 3, ids, merged, &lexicographic);
+    for (const Id id : ids)
     {
-      const Id id = ids[rank[k]];
-      Id rep = id;
-      if (k > 0)
-      {
-        const Id previous = ids[rank[k - 1]];
-        const double* p = &xyz[3 * static_cast<size_t>(id)];
-        const double* q = &xyz[3 * static_cast<size_t>(previous)];
-        if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2])
-        {
-          rep = static_cast<Id>(representative->GetValue(previous));
-          keep[rank[k]] = 0;
-          ++this->NumberOfDuplicatePoints;
-        }
-      }
-      representative->SetValue(id, rep);
+      representative->SetValue(id, id);
     }
-    lexicographic.reserve(ids.size() - this->NumberOfDuplicatePoints);
-    for (Id r : rank)
+    for (const auto& copy : merged)
     {
-      if (keep[r])
-      {
-        lexicographic.push_back(ids[r]);
-      }
+      representative->SetValue(copy.first, copy.second);
     }
-    size_t kept = 0;
-    for (size_t k = 0; k < ids.size(); ++k)
-    {
-      if (keep[k])
-      {
-        ids[kept++] = ids[k];
-      }
-    }
-    ids.resize(kept);
   }
   if (this->NumberOfDuplicatePoints > 0)
   {

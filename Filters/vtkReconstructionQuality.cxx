@@ -4,6 +4,7 @@
 #include "pcsGatherInput.h"
 
 #include "pcsCoordinateScaling.h"
+#include "pcsDuplicatePoints.h"
 #include "pcsProjectedTests.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -1990,51 +1991,30 @@ int vtkReconstructionQuality::RequestData(
     vtkSmartPointer<vtkPolyData> cloud = referenceIsSurface
       ? PointCloud(points, meshSamples.Vertices)
       : PointCloud(referencePoints, referenceSamples.Vertices);
-    if (cloud->GetNumberOfPoints() > 1)
+    // (pcs::FindExactDuplicates numbers points with 32-bit ids: larger clouds get no spacing.)
+    if (cloud->GetNumberOfPoints() > 1 &&
+      cloud->GetNumberOfPoints() <= std::numeric_limits<int32_t>::max())
     {
       const int exponent = ScaleSafely(cloud);
       vtkNew<vtkStaticPointLocator> locator;
       locator->SetDataSet(cloud);
       locator->BuildLocator();
       std::vector<double> spacing(cloud->GetNumberOfPoints(), NaN);
-      // Exact duplicates grouped by sorting on the coordinates (non-finite points stay single).
+      // Exact duplicates grouped by sorting on the coordinates (non-finite points stay single):
+      // one query per group, its first copy.
       const vtkIdType n = cloud->GetNumberOfPoints();
       std::vector<double> xyz(3 * static_cast<size_t>(n));
       for (vtkIdType i = 0; i < n; ++i)
       {
         cloud->GetPoint(i, &xyz[3 * i]);
       }
-      auto finite = [&xyz](vtkIdType i)
-      {
-        return std::isfinite(xyz[3 * i]) && std::isfinite(xyz[3 * i + 1]) &&
-          std::isfinite(xyz[3 * i + 2]);
-      };
-      std::vector<vtkIdType> order(n);
-      std::iota(order.begin(), order.end(), 0);
-      std::sort(order.begin(), order.end(),
-        [&xyz, &finite](vtkIdType a, vtkIdType b)
-        {
-          const bool fa = finite(a), fb = finite(b);
-          if (fa != fb || !fa)
-          {
-            return fa != fb ? fa : a < b;
-          }
-          for (int c = 0; c < 3; ++c)
-          {
-            if (xyz[3 * a + c] != xyz[3 * b + c])
-            {
-              return xyz[3 * a + c] < xyz[3 * b + c];
-            }
-          }
-          return a < b;
-        });
+      std::vector<int32_t> firstCopy, order;
+      pcs::FindExactDuplicates(xyz.data(), 3, nullptr, static_cast<int32_t>(n), firstCopy, &order);
       std::vector<vtkIdType> queries, copies, groupStart;
       for (vtkIdType j = 0; j < n; ++j)
       {
-        const vtkIdType a = order[j];
-        const bool same = j > 0 && finite(a) && finite(order[j - 1]) &&
-          std::equal(&xyz[3 * a], &xyz[3 * a] + 3, &xyz[3 * order[j - 1]]);
-        if (!same)
+        const int32_t a = order[j];
+        if (firstCopy[a] == a)
         {
           queries.push_back(a);
           copies.push_back(0);

@@ -1,6 +1,7 @@
 #include "pcsHoleFilling.h"
 
 #include "pcsCoordinateScaling.h"
+#include "pcsDuplicatePoints.h"
 #include "pcsPredicates.h"
 #include "pcsProjectedTests.h"
 
@@ -263,24 +264,6 @@ bool IsSimplePolygon(const std::vector<double>& uv)
   }
   return true;
 }
-
-namespace
-{
-// A projected position, compared exactly (lost points that coincide in projection are used once).
-struct ProjectedKey
-{
-  double U, V;
-  bool operator==(const ProjectedKey& other) const { return U == other.U && V == other.V; }
-};
-
-struct ProjectedKeyHash
-{
-  size_t operator()(const ProjectedKey& key) const
-  {
-    return std::hash<double>()(key.U) * 31 + std::hash<double>()(key.V); // +0 and -0 alike
-  }
-};
-} // namespace
 
 namespace
 {
@@ -848,7 +831,6 @@ bool HoleFiller::FillPiece(const double* xyz, Piece& piece, std::vector<char>& t
   std::vector<int32_t> inside;
   std::vector<double> insideUV;
   std::vector<double> insideHeight; // distance to the plane
-  std::unordered_set<ProjectedKey, ProjectedKeyHash> seen;
   for (size_t k = 0; k < candidates.size(); ++k)
   {
     if (taken[k])
@@ -871,11 +853,30 @@ bool HoleFiller::FillPiece(const double* xyz, Piece& piece, std::vector<char>& t
     {
       continue; // only a zero-area triangle would join it to that edge
     }
-    if (seen.insert({ q[0], q[1] }).second)
+    inside.push_back(static_cast<int32_t>(k));
+    insideUV.insert(insideUV.end(), { q[0], q[1] });
+    insideHeight.push_back(height);
+  }
+  // Points coinciding in projection: the first in candidate order is used, the others stay lost.
+  {
+    std::vector<int32_t> first;
+    const int32_t count = static_cast<int32_t>(inside.size());
+    if (FindExactDuplicates(insideUV.data(), 2, nullptr, count, first) < count)
     {
-      inside.push_back(static_cast<int32_t>(k));
-      insideUV.insert(insideUV.end(), { q[0], q[1] });
-      insideHeight.push_back(height);
+      size_t kept = 0;
+      for (int32_t j = 0; j < count; ++j)
+      {
+        if (first[j] == j)
+        {
+          inside[kept] = inside[j];
+          insideUV[2 * kept] = insideUV[2 * static_cast<size_t>(j)];
+          insideUV[2 * kept + 1] = insideUV[2 * static_cast<size_t>(j) + 1];
+          insideHeight[kept++] = insideHeight[j];
+        }
+      }
+      inside.resize(kept);
+      insideUV.resize(2 * kept);
+      insideHeight.resize(kept);
     }
   }
 

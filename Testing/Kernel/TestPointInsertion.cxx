@@ -4,6 +4,7 @@
 // result is known by construction: the operation chosen (split into three, edge split, attach
 // across a boundary edge, refusal), the triangle count, the new vertex's state, and the mesh's
 // own consistency check.
+#include "pcsKernelTest.h"
 #include "pcsPointInsertion.h"
 
 #include <iostream>
@@ -12,17 +13,7 @@
 
 namespace
 {
-int Failures = 0;
-
-#define EXPECT(condition, message)                                                                 \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      ++Failures;                                                                                  \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": " #condition " -- " << message << std::endl; \
-    }                                                                                              \
-  } while (false)
+using pcstest::Failures;
 
 // The square's 4 corners and the point q (id 4).
 struct Square

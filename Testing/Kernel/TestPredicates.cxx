@@ -13,6 +13,7 @@
 // moved by a few units in the last place, exactly coplanar / cospherical integer points, a
 // large offset with a tiny extent. The test also checks that such inputs defeat a plain
 // floating-point evaluation (otherwise it would not exercise the exact arithmetic).
+#include "pcsKernelTest.h"
 #include "pcsPredicates.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -33,22 +34,8 @@ using Rational = CGAL::Exact_rational;
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Vec3 = std::array<double, 3>;
 
-int Failures = 0;
-long long Checks = 0;
-
-#define EXPECT(condition, message)                                                                 \
-  do                                                                                               \
-  {                                                                                                \
-    ++Checks;                                                                                      \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      if (Failures++ < 25)                                                                         \
-      {                                                                                            \
-        std::cerr << __FILE__ << ":" << __LINE__ << ": " #condition " -- " << message            \
-                  << std::endl;                                                                    \
-      }                                                                                            \
-    }                                                                                              \
-  } while (false)
+using pcstest::Checks;
+using pcstest::Failures;
 
 std::ostream& operator<<(std::ostream& os, const Vec3& p)
 {

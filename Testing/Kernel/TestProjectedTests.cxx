@@ -15,6 +15,7 @@
 //      crosses the open triangle, against the exact intersection of CGAL's Line_3 and Triangle_3;
 //    - EdgePlaneSide against CGAL's exact orientation with the same plane point a + normal;
 //    - Collinear against CGAL::collinear.
+#include "pcsKernelTest.h"
 #include "pcsProjectedTests.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -32,22 +33,8 @@ namespace T = pcs::projected;
 using K = CGAL::Exact_predicates_exact_constructions_kernel;
 using Vec3 = std::array<double, 3>;
 
-int Failures = 0;
-long long Checks = 0;
-
-#define EXPECT(condition, message)                                                                 \
-  do                                                                                               \
-  {                                                                                                \
-    ++Checks;                                                                                      \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      if (Failures++ < 25)                                                                         \
-      {                                                                                            \
-        std::cerr << __FILE__ << ":" << __LINE__ << ": " #condition " -- " << message              \
-                  << std::endl;                                                                    \
-      }                                                                                            \
-    }                                                                                              \
-  } while (false)
+using pcstest::Checks;
+using pcstest::Failures;
 
 std::ostream& operator<<(std::ostream& os, const Vec3& p)
 {

@@ -7,6 +7,7 @@
 // hole's perimeter), a torus grid added in random order (closed, V - E + F = 0), random add/remove
 // sequences that end empty, and component reversal. After every change the cached structure is
 // compared with an independent recomputation from the triangle list (CheckConsistency).
+#include "pcsKernelTest.h"
 #include "pcsSurfaceMesh.h"
 
 #include <algorithm>
@@ -24,22 +25,8 @@ using pcs::SurfaceMesh;
 using Check = SurfaceMesh::Check;
 using State = SurfaceMesh::VertexState;
 
-int Failures = 0;
-long long Checks = 0;
-
-#define EXPECT(condition, message)                                                                 \
-  do                                                                                               \
-  {                                                                                                \
-    ++Checks;                                                                                      \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      if (Failures++ < 25)                                                                         \
-      {                                                                                            \
-        std::cerr << __FILE__ << ":" << __LINE__ << ": " #condition " -- " << message              \
-                  << std::endl;                                                                    \
-      }                                                                                            \
-    }                                                                                              \
-  } while (false)
+using pcstest::Checks;
+using pcstest::Failures;
 
 void ExpectConsistent(const SurfaceMesh& mesh, const std::string& where)
 {

@@ -3,8 +3,12 @@
 Rules (k = 8 nearest neighbours; a point's reach = mean distance to them):
   SOR25xF  VTK's vtkStatisticalOutlierRemoval (SampleSize 25, StandardDeviationFactor F)
   L FxGy   reach > x times the median reach of its 8 neighbours, or > y times the cloud's median
-  D Fx     the rule kept (pcs::FindOutliers): reach > 4 x the cloud's median reach ("sparse") and
-           > x times the median reach of its 8 nearest non-sparse points
+  D Fx     reach > 4 x the cloud's median reach ("sparse") and > x times the median reach of its
+           8 nearest non-sparse points (pcs::FindOutliers until 2026-11-24)
+  DP Fx    the rule kept (pcs::FindOutliers): D Fx, except a point whose 8 nearest points are all
+           sparse and a flat disc (covariance eigenvalues: smallest < 0.02, middle >=
+           0.1 of the sum) with the point within 0.1 x its reach of their plane, and at least
+           half of those 8 passing the same test (a sparse part of a sampled surface)
 Modes:
   fp MODE  false positives on the vertex sets of every CGAL demo mesh of >= 32 distinct points
            (MODE vertices or noisy: Gaussian noise of 0.4 mean spacings per coordinate), or on
@@ -76,6 +80,31 @@ def dense_rule(p, F, S=4.0, k=8):
     return flag
 
 
+def dense_plane_rule(p, F, S=4.0, k=8):
+    """The rule kept since 2026-11-24: dense_rule, except points on the flat sample of their
+    own nearest points (a sparse part of the surface)."""
+    if len(p) < 4 * k:
+        return np.zeros(len(p), bool)
+    _, r, i = reach_of(p, k)
+    flag = dense_rule(p, F, S, k)
+    idx = np.where(r > S * upper_median(r, 0))[0]
+    if len(idx):
+        q = p[i[idx]]
+        c = q.mean(axis=1)
+        d = q - c[:, None, :]
+        cov = np.einsum("mki,mkj->mij", d, d) / k
+        w, v = np.linalg.eigh(cov)
+        flat = (w[:, 0] < 0.02 * w.sum(axis=1)) & (w[:, 1] >= 0.1 * w.sum(axis=1))
+        h = np.abs(np.einsum("mi,mi->m", c - p[idx], v[:, :, 0]))
+        sparse = r > S * upper_median(r, 0)
+        among = sparse[i[idx]].all(axis=1)
+        ok = np.zeros(len(p), bool)
+        ok[idx[flat & among & (h < 0.1 * r[idx])]] = True
+        surface = ok & (2 * ok[i].sum(axis=1) >= k)
+        flag[surface] = False
+    return flag
+
+
 def sor(p, F, k=25):
     import vtk
     from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
@@ -100,7 +129,7 @@ RULES = {
     "SOR25x3": lambda p: sor(p, 3.0), "SOR25x5": lambda p: sor(p, 5.0),
     "SOR25x10": lambda p: sor(p, 10.0), "L F5 G20": lambda p: local_rule(p, 5.0, 20.0),
     "D F6": lambda p: dense_rule(p, 6.0), "D F8": lambda p: dense_rule(p, 8.0),
-    "D F10": lambda p: dense_rule(p, 10.0),
+    "D F10": lambda p: dense_rule(p, 10.0), "DP F8": lambda p: dense_plane_rule(p, 8.0),
 }
 
 

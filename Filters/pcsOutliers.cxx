@@ -2,6 +2,7 @@
 
 #include "pcsDuplicatePoints.h"
 #include "pcsNearestNeighbors.h"
+#include "pcsNormalEstimation.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
@@ -43,6 +44,53 @@ void DistinctPositions(const double* xyz, const std::vector<int32_t>& ids,
   }
 }
 
+// Whether the point i lies on the surface its k nearest points sample: all of them are sparse
+// too, they form a flat disc (the smallest eigenvalue of their covariance under
+// OutlierPlaneVariation of the sum, the middle one at least OutlierPlaneSpread of it: not a
+// line) and the point is within OutlierPlaneHeight x its reach of their plane. A sparse part of a sampled surface
+// (a region scanned from farther away, next to a much denser patch that holds most of the
+// points) passes; a point off a surface (its nearest points a small disc below it) and clutter
+// or a clump (nearest points spread in 3D) do not.
+bool OnSampledPlane(const double* x, const int32_t* row, int k, int32_t i,
+  const std::vector<double>& reach, double sparse)
+{
+  const double* p = &x[3 * static_cast<size_t>(i)];
+  int sparseNeighbors = 0;
+  for (int j = 0; j < k; ++j)
+  {
+    sparseNeighbors += reach[row[j]] > sparse ? 1 : 0;
+  }
+  if (sparseNeighbors < k)
+  {
+    return false; // next to the dense sample: an isolated point or a clump beside the surface
+  }
+  double covariance[3][3];
+  if (OffsetCovariance(x, p, row, k, false, covariance) < k)
+  {
+    return false;
+  }
+  double values[3], normal[3];
+  SmallestEigenvector(covariance, values, normal);
+  const double sum = values[0] + values[1] + values[2];
+  if (!(sum > 0.0) || !(values[2] < OutlierPlaneVariation * sum) ||
+    !(values[1] >= OutlierPlaneSpread * sum))
+  {
+    return false;
+  }
+  // The neighbours' centroid relative to p: the mean offset.
+  double mean[3] = { 0, 0, 0 };
+  for (int j = 0; j < k; ++j)
+  {
+    const double* q = &x[3 * static_cast<size_t>(row[j])];
+    for (int c = 0; c < 3; ++c)
+    {
+      mean[c] += (q[c] - p[c]) / k;
+    }
+  }
+  const double height = std::fabs(mean[0] * normal[0] + mean[1] * normal[1] + mean[2] * normal[2]);
+  return height < OutlierPlaneHeight * reach[i];
+}
+
 double Median(std::vector<double> values)
 {
   const auto middle = values.begin() + values.size() / 2;
@@ -82,6 +130,25 @@ int64_t FlagOutliers(const double* x, int32_t n, const std::vector<int32_t>& knn
   // OutlierSparseFactor x the median), next to an outlier or clutter they are the sampled
   // surface.
   const double sparse = OutlierSparseFactor * Median(reach);
+  // Sparse points on the flat sample of their own nearest points; one counts as a sampled part of
+  // the surface (never an outlier) when at least half of its nearest points are too: a point of
+  // clutter whose nearest points happen to lie flat around it has neighbours that do not.
+  std::vector<uint8_t> flat(n, 0);
+  vtkSMPTools::For(0, n, [&](int32_t begin, int32_t end) {
+    for (int32_t i = begin; i < end; ++i)
+    {
+      flat[i] = reach[i] > sparse &&
+        OnSampledPlane(x, &knn[static_cast<size_t>(i) * width], k, i, reach, sparse);
+    }
+  });
+  auto onSampledSurface = [&](int32_t i) {
+    int flatNeighbors = 0;
+    for (int j = 0; j < k; ++j)
+    {
+      flatNeighbors += flat[knn[static_cast<size_t>(i) * width + j]];
+    }
+    return flat[i] && 2 * flatNeighbors >= k;
+  };
   std::vector<int32_t> denseIds;
   for (int32_t i = 0; i < n; ++i)
   {
@@ -133,7 +200,7 @@ int64_t FlagOutliers(const double* x, int32_t n, const std::vector<int32_t>& knn
       if (!around.empty())
       {
         std::nth_element(around.begin(), around.begin() + around.size() / 2, around.end());
-        far[i] = reach[i] > factor * around[around.size() / 2];
+        far[i] = reach[i] > factor * around[around.size() / 2] && !onSampledSurface(i);
       }
     }
   });

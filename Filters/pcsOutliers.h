@@ -13,6 +13,15 @@ namespace pcs
 constexpr int OutlierNeighbors = 8;
 /// Only points whose reach exceeds this factor times the cloud's median reach are candidates.
 constexpr double OutlierSparseFactor = 4.0;
+/// A sparse point whose OutlierNeighbors nearest points are all sparse and form a flat disc
+/// (eigenvalues of their covariance: the smallest under OutlierPlaneVariation of the sum, the
+/// middle at least OutlierPlaneSpread of it) and whose height over their plane is under
+/// OutlierPlaneHeight x its reach, and at least half of whose nearest points pass the same
+/// test, lies on a sparsely sampled part of the surface: never a far outlier, however much denser
+/// the rest of the cloud.
+constexpr double OutlierPlaneVariation = 0.02;
+constexpr double OutlierPlaneSpread = 0.1;
+constexpr double OutlierPlaneHeight = 0.1;
 
 /// Flags the far outliers among the points `ids` of `xyz` (packed x, y, z): `outlier` gets one
 /// byte per entry of `ids` (1: outlier) and the function returns how many are flagged.
@@ -21,7 +30,10 @@ constexpr double OutlierSparseFactor = 4.0;
 /// (pcs::FindNearestNeighbors; exact copies of a point count as that point and share its
 /// verdict). A point is sparse when its reach exceeds OutlierSparseFactor times the median reach
 /// of the cloud, dense otherwise. A sparse point is an outlier when its reach also exceeds
-/// `factor` times the median reach of its OutlierNeighbors nearest dense points. In a graded
+/// `factor` times the median reach of its OutlierNeighbors nearest dense points, unless it lies
+/// on the flat sample of its own nearest points (OutlierPlaneVariation, OutlierPlaneHeight:
+/// a sparse part of the surface far from the dense part, e.g. a region scanned from farther
+/// away; without this a patch holding most of the points made the rest "outliers"). In a graded
 /// sample the dense points nearest to a sparse region lie at its edge, where the density has
 /// fallen gradually to the sparse limit (their reach is close to it); next to an isolated point,
 /// a clump or sparse clutter they are the sampled surface, however far, so that clutter whose

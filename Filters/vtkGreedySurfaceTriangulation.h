@@ -288,7 +288,9 @@ public:
    * Status 4, field data NumberOfOutliers, counted in NumberOfUnusedPoints, a warning): the rule
    * of vtkPerimeterPeelSurface::OutlierFactor (pcs::FindOutliers), same meaning: a point whose
    * reach (mean distance to its 8 nearest points) is over 4 times the cloud's median reach and
-   * over OutlierFactor times the median reach of its 8 nearest points that are not. Default 8.0;
+   * over OutlierFactor times the median reach of its 8 nearest points that are not, unless it
+   * lies on a sparse part of the surface (its 8 nearest sparse too and flat around it: see the
+   * peel's docs). Default 8.0;
    * range [0, 1000]; 0: off.
    */
   vtkSetClampMacro(OutlierFactor, double, 0.0, 1000.0);

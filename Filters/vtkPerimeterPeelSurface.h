@@ -143,7 +143,11 @@
  *   sparse point is a far outlier when its reach is over OutlierFactor times the median reach of
  *   its 8 nearest non-sparse points. In a graded sample those are at the edge of the sparse
  *   region, where the density has fallen gradually to the sparse limit; next to an outlier or
- *   clutter they are the surface. Points within about 8 surface reaches (some 20 mean spacings)
+ *   clutter they are the surface. A sparse point on a sparse part of the surface is not one
+ *   (all its 8 nearest points sparse, a flat disc around it, and half of them passing the same
+ *   test; pcsOutliers.h), however much denser the rest of the cloud (a dense patch holding most
+ *   of the points made the rest "outliers" before 2026-11-24). Points within about 8 surface
+ *   reaches (some 20 mean spacings)
  *   of the surface are not far outliers (they may be a sparse part of the surface). Measured
  *   (2026-11-23, against VTK's vtkStatisticalOutlierRemoval, Benchmarks/results/peel.md): no
  *   point flagged on the 9 CGAL

@@ -10,7 +10,9 @@
 //   with OutlierFactor 0 (off) the outliers are not reported; vtkLocalOptimumGrowth with 6
 //   neighbours (the rule's own search instead of the growth's table) reports the same outliers;
 // - clean clouds flag nothing: a torus sampled 25 times more densely on one side, and a sphere
-//   with Gaussian noise of 0.4 mean spacings per coordinate.
+//   with Gaussian noise of 0.4 mean spacings per coordinate;
+// - a sparse part of a surface next to a dense patch holding most of the points is not flagged
+//   (the flat-sample exemption of pcs::FindOutliers).
 #include "vtkGreedySurfaceTriangulation.h"
 #include "vtkLocalOptimumGrowth.h"
 #include "vtkPerimeterPeelSurface.h"
@@ -170,6 +172,45 @@ bool CheckCleanClouds()
   PCS_CHECK(FieldCount(Run(growth, noisy), "NumberOfOutliers") == 0, "LOG, noisy sphere");
   return true;
 }
+// A sparse part of a sampled surface is not an outlier, however much denser the rest: 2,000
+// random points of the unit sphere plus 5,000 in the cap within 0.3 rad of +z (about 110 times
+// denser, a reach about 10 times smaller, so the whole sparse part is past the sparse limit and
+// past OutlierFactor 8 against the cap's points). Before the flat-sample exemption 871 of the
+// sparse points were flagged, all over the sphere; now only points at the cap's rim may be (their
+// nearest points are partly cap points): at most 40 outliers, and at most 1 % of the sparse points
+// more than 40 degrees from +z unused (the peel may leave a few inside its solid).
+bool CheckDensePatch()
+{
+  std::vector<double> xyz = SpherePoints(2000, 8);
+  const std::vector<double> many = SpherePoints(300000, 9);
+  for (size_t i = 0; i < many.size() && xyz.size() < 3 * 7000; i += 3)
+  {
+    if (many[i + 2] > std::cos(0.3))
+    {
+      xyz.insert(xyz.end(), &many[i], &many[i] + 3);
+    }
+  }
+  PCS_CHECK(xyz.size() == 3 * 7000, "dense patch: 5,000 cap points");
+  vtkNew<vtkPerimeterPeelSurface> peel;
+  vtkNew<vtkLocalOptimumGrowth> growth;
+  vtkNew<vtkGreedySurfaceTriangulation> greedy;
+  for (vtkPolyDataAlgorithm* filter :
+    { static_cast<vtkPolyDataAlgorithm*>(peel), static_cast<vtkPolyDataAlgorithm*>(growth),
+      static_cast<vtkPolyDataAlgorithm*>(greedy) })
+  {
+    auto mesh = Run(filter, xyz);
+    const std::string name = filter->GetClassName();
+    PCS_CHECK(FieldCount(mesh, "NumberOfOutliers") <= 40, name << ", dense patch: outliers");
+    vtkDataArray* used = mesh->GetPointData()->GetArray("Used");
+    int unusedFar = 0;
+    for (vtkIdType i = 0; i < 2000; ++i)
+    {
+      unusedFar += used->GetTuple1(i) == 0 && xyz[3 * i + 2] < std::cos(40.0 * M_PI / 180.0);
+    }
+    PCS_CHECK(unusedFar <= 20, name << ", dense patch: " << unusedFar << " sparse points unused");
+  }
+  return true;
+}
 } // namespace
 
 int TestOutliers(int, char*[])
@@ -179,5 +220,6 @@ int TestOutliers(int, char*[])
   ok = CheckExcluded<vtkGreedySurfaceTriangulation>("greedy", 5) && ok;
   ok = CheckFewNeighbors() && ok;
   ok = CheckCleanClouds() && ok;
+  ok = CheckDensePatch() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -58,6 +58,10 @@ bool OnSampledPlane(const double* x, const int32_t* row, int k, int32_t i,
   int sparseNeighbors = 0;
   for (int j = 0; j < k; ++j)
   {
+    if (row[j] < 0)
+    {
+      return false;
+    }
     sparseNeighbors += reach[row[j]] > sparse ? 1 : 0;
   }
   if (sparseNeighbors < k)
@@ -142,12 +146,16 @@ int64_t FlagOutliers(const double* x, int32_t n, const std::vector<int32_t>& knn
     }
   });
   auto onSampledSurface = [&](int32_t i) {
+    if (!flat[i])
+    {
+      return false; // (a flat point's row is complete: OnSampledPlane checked it)
+    }
     int flatNeighbors = 0;
     for (int j = 0; j < k; ++j)
     {
       flatNeighbors += flat[knn[static_cast<size_t>(i) * width + j]];
     }
-    return flat[i] && 2 * flatNeighbors >= k;
+    return 2 * flatNeighbors >= k;
   };
   std::vector<int32_t> denseIds;
   for (int32_t i = 0; i < n; ++i)

@@ -285,13 +285,16 @@ public:
 
   ///@{
   /**
-   * Section II.C.2 within the noise band (ours): a vertex whose normal fails MinimumNormalDot
-   * (or HoleFillingMinimumNormalDot) against a new triangle still passes when the triangle's
-   * other two vertices lie within the triangle's noise band of the vertex's tangent plane. The
-   * noise band of a point is this factor times its height noise (the root mean square residual
-   * of a quadric height field fitted over its tangent plane to the point and its 9 nearest
-   * others), at most the mean spacing; the triangle's band is the largest of its vertices'.
-   * Default 3; range [0, 10]; 0 gives the paper's rule. See "Noise" in the class docs.
+   * Sections II.C.2 and III.C within the noise band (ours). The noise band of a point is this
+   * factor times its height noise (the root mean square residual of a quadric height field
+   * fitted over its tangent plane to the point and those of its 9 nearest others whose normals
+   * are within 60 degrees), at most the mean spacing. II.C.2: a vertex whose normal fails
+   * MinimumNormalDot (or HoleFillingMinimumNormalDot) against a new triangle still passes when
+   * the height of each other vertex over its tangent plane is within the root sum of squares of
+   * the two points' bands. III.C: the last triangle of a hole is not blocked (II.D) by a mesh
+   * point or edge end whose height t over its plane has t^2 <= b^2 + B^2 (b its band, B the
+   * largest of the triangle's vertices'). Default 3; range [0, 10]; 0 gives the paper's rules.
+   * See "Noise" in the class docs.
    */
   vtkSetClampMacro(NoiseBandFactor, double, 0.0, 10.0);
   vtkGetMacro(NoiseBandFactor, double);

@@ -27,11 +27,6 @@ inline double Distance2(const double* a, const double* b)
   return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
 }
 
-inline bool IsFinite(const double* q)
-{
-  return std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2]);
-}
-
 // Whether the nearest half of the neighbours `row` (k ids, nearest first, -1 for none) of point
 // p spread along one direction only, none off that line (see AddOffLineNeighbors); if so, that
 // direction (unit) and the distance to the farthest of all k.
@@ -43,7 +38,7 @@ bool SpreadsAlongCurve(const double* xyz,
   double direction[3],
   double& reach)
 {
-  if (!IsFinite(p))
+  if (!IsFinitePosition(p, 3))
   {
     return false;
   }
@@ -458,7 +453,7 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
             {
               const int32_t id = static_cast<int32_t>(ball->GetId(j));
               const double* q = xyz + 3 * static_cast<size_t>(id);
-              if (id == i || id < 0 || id >= n || !IsFinite(q))
+              if (id == i || id < 0 || id >= n || !IsFinitePosition(q, 3))
               {
                 continue;
               }

@@ -1075,8 +1075,10 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
   ++this->ProjectionTests;
   // III.C within the noise band: the last triangle of a hole is not blocked by points and edges
   // within the noise band of its plane (see PassesProjectionTests). That decision depends on the
-  // mesh (the hole), so it is not remembered in Blocked.
-  if (closesHole && parameters.NoiseBand)
+  // mesh (the hole), so it is not remembered in Blocked. Where the three vertices have no band
+  // (an exact plane, or no fit) nothing is exempt: the usual, cached tests.
+  if (closesHole && parameters.NoiseBand &&
+    std::max({ this->NoiseBand[e0], this->NoiseBand[e1], this->NoiseBand[third] }) > 0.0)
   {
     return this->PassesProjectionTests(e0, e1, third, plane, parameters, true);
   }
@@ -1654,7 +1656,8 @@ int vtkCDTAdvancingFront::RequestData(
       { "MaximumRayDistance", this->MaximumRayDistance },
       { "MinimumTriangleArea", this->MinimumTriangleArea },
       { "HoleFillingRadiusFactor", this->HoleFillingRadiusFactor },
-      { "HoleFillingMinimumNormalDot", this->HoleFillingMinimumNormalDot } });
+      { "HoleFillingMinimumNormalDot", this->HoleFillingMinimumNormalDot },
+      { "NoiseBandFactor", this->NoiseBandFactor } });
   if (!nanParameters.empty())
   {
     vtkErrorMacro(<< nanParameters);

@@ -141,7 +141,7 @@
  * MaximumRayDistance) the spacing along the lines, and every triangle joined three points of one
  * line (a sheet of 16 lines: hundreds of components, none spanning two lines). Where the
  * (NormalSampleSize - 1) / 2 nearest of a point lie along one line, and so do those of at least
- * half of its nearest points (the pattern of a region, not of a few points of an ordinary sample
+ * 90 % of its nearest points (the pattern of a region, not of a few points of an ordinary sample
  * that happen to line up), the point gets the nearest points of the lines beside it (searched
  * within 8 times its neighbourhood's radius: lines up to about 36 spacings apart with the default
  * 10 points) and a stretch s along its line (pcs::AddOffLineNeighbors, shared with

@@ -2214,6 +2214,8 @@ int vtkLocalOptimumGrowth::RequestData(
   std::vector<Id> knn;
   std::vector<double> stretch;
   int k = 0;
+  bool neighborsFound = false;
+  vtkSmartPointer<vtkStaticPointLocator> builtLocator;
   auto findNeighbors = [&]() {
     x.resize(3 * static_cast<size_t>(n));
     for (Id i = 0; i < n; ++i)
@@ -2252,20 +2254,8 @@ int vtkLocalOptimumGrowth::RequestData(
       this->UpdateProgress(0.05 + 0.1 * fraction);
       return !this->GetAbortExecute();
     };
-    // Scan-line sampling: a point whose K nearest all lie on its own line also gets the nearest
-    // points of the lines beside it (see pcsNearestNeighbors.h).
-    stretch.clear();
-    if (pcs::FindNearestNeighbors(locator, x.data(), n, k, knn, progress))
-    {
-      if (pcs::AddOffLineNeighbors(locator, x.data(), n, k, knn, &stretch) == 0)
-      {
-        stretch.clear();
-      }
-    }
-    if (this->Locator)
-    {
-      this->Locator->SetDataSet(nullptr);
-    }
+    neighborsFound = pcs::FindNearestNeighbors(locator, x.data(), n, k, knn, progress);
+    builtLocator = locator;
   };
   findNeighbors();
   if (outliersFromTable && !this->GetAbortExecute())
@@ -2287,6 +2277,20 @@ int vtkLocalOptimumGrowth::RequestData(
       findNeighbors();
     }
   }
+  // Scan-line sampling: a point whose K nearest all lie on its own line also gets the nearest
+  // points of the lines beside it (see pcsNearestNeighbors.h). After the outlier rule, which
+  // reads the plain nearest-first table.
+  stretch.clear();
+  if (neighborsFound && !this->GetAbortExecute() &&
+    pcs::AddOffLineNeighbors(builtLocator, x.data(), n, k, knn, &stretch) == 0)
+  {
+    stretch.clear();
+  }
+  if (this->Locator)
+  {
+    this->Locator->SetDataSet(nullptr);
+  }
+  builtLocator = nullptr;
   xyz.clear();
   xyz.shrink_to_fit();
   if (this->NumberOfOutliers > 0)

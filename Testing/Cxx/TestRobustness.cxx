@@ -1118,7 +1118,8 @@ std::vector<DoubleSetter> DoubleParametersOf(const std::string& name)
       Setter("MaximumRayDistance", &F::SetMaximumRayDistance),
       Setter("MinimumTriangleArea", &F::SetMinimumTriangleArea),
       Setter("HoleFillingRadiusFactor", &F::SetHoleFillingRadiusFactor),
-      Setter("HoleFillingMinimumNormalDot", &F::SetHoleFillingMinimumNormalDot) };
+      Setter("HoleFillingMinimumNormalDot", &F::SetHoleFillingMinimumNormalDot),
+      Setter("NoiseBandFactor", &F::SetNoiseBandFactor) };
   }
 #endif
 #ifdef PCS_HAVE_LOCAL_OPTIMUM

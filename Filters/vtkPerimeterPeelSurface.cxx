@@ -1156,8 +1156,11 @@ int vtkPerimeterPeelSurface::RequestData(
   // `edgeRule` false leaves out the sculpting rule of two exterior facets (a walk around an edge,
   // the costliest test; when a cell is offered it nearly always passes, so it is left to the
   // cell's turn in the queue).
+  // `way`, when given, receives the widest way in to c, computed in full (the bottleneck c records
+  // when it goes); otherwise only as far as the rule needs it (see WidestWayIn). It is left
+  // unchanged when c is refused before the rule, or without ManifoldOutput.
   const bool pathRule = this->FacetMeasure != AREA;
-  auto refused = [&](int64_t c, int mask, double m, bool edgeRule)
+  auto refused = [&](int64_t c, int mask, double m, bool edgeRule, double* way)
   {
     if (solid.Orphans(c))
     {
@@ -1167,7 +1170,12 @@ int vtkPerimeterPeelSurface::RequestData(
     {
       return false;
     }
-    const double smallest = pathRule ? solid.WidestWayIn(c, m, threshold * groupFactor) : m;
+    const double above = way ? std::numeric_limits<float>::max() : threshold * groupFactor;
+    const double smallest = pathRule ? solid.WidestWayIn(c, m, above) : m;
+    if (way)
+    {
+      *way = smallest;
+    }
     if (smallest <= threshold * groupFactor && solid.LargestFacet(c, 15 & ~mask) > 1.5 * smallest)
     {
       return true;
@@ -1196,7 +1204,7 @@ int vtkPerimeterPeelSurface::RequestData(
     {
       return;
     }
-    if (refused(c, mask, m, false))
+    if (refused(c, mask, m, false, nullptr))
     {
       if (manifold && m > groupStart())
       {
@@ -1239,7 +1247,8 @@ int vtkPerimeterPeelSurface::RequestData(
       {
         continue; // stale
       }
-      if (refused(c, mask, m, true))
+      double way = m;
+      if (refused(c, mask, m, true, &way))
       {
         if (manifold && m > groupStart())
         {
@@ -1247,8 +1256,7 @@ int vtkPerimeterPeelSurface::RequestData(
         }
         continue; // refused; offered again when a neighbour goes
       }
-      solid.Bottleneck[c] =
-        static_cast<float>(solid.WidestWayIn(c, m, std::numeric_limits<float>::max()));
+      solid.Bottleneck[c] = static_cast<float>(way);
       solid.SetInside(c, false);
       for (int k = 0; k < 4; ++k)
       {

@@ -165,21 +165,15 @@ std::array<std::array<double, 3>, 3> SafelyScaled(const double a[3],
   const double b[3],
   const double c[3])
 {
-  double largest = 0.0;
-  for (const double* p : { a, b, c })
-  {
-    largest = std::max({ largest, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
-  }
-  const int exponent = pcs::PredicateSafeExponent(largest);
   std::array<std::array<double, 3>, 3> scaled;
   const double* p[3] = { a, b, c };
   for (int k = 0; k < 3; ++k)
   {
-    for (int i = 0; i < 3; ++i)
-    {
-      scaled[k][i] = std::ldexp(p[k][i], exponent);
-    }
+    std::copy(p[k], p[k] + 3, scaled[k].begin());
   }
+  double* coordinates = scaled[0].data(); // 9 contiguous values
+  pcs::ScaleInPlace(
+    coordinates, 9, pcs::PredicateSafeExponent(pcs::LargestFiniteMagnitude(coordinates, 9)));
   return scaled;
 }
 
@@ -840,9 +834,12 @@ struct TriangleSearch
       for (int j = 0; j < 3; ++j)
       {
         points->GetPoint(triangle[j], corner + 3 * j);
+      }
+      pcs::ScaleInPlace(corner, 9, exponent);
+      for (int j = 0; j < 3; ++j)
+      {
         for (int i = 0; i < 3; ++i)
         {
-          corner[3 * j + i] = std::ldexp(corner[3 * j + i], exponent);
           centroid[i] += corner[3 * j + i] / 3.0;
         }
       }
@@ -884,10 +881,7 @@ struct TriangleSearch
       {
         continue;
       }
-      for (int i = 0; i < 3; ++i)
-      {
-        x[i] = std::ldexp(x[i], exponent);
-      }
+      pcs::ScaleInPlace(x, 3, exponent);
       GrowBox(all, x);
       for (int j = 0; j < 3; ++j)
       {
@@ -1241,36 +1235,21 @@ struct TriangleQueryFunctor
   void Reduce() {}
 };
 
-// Replaces the points of `cloud` by a copy times the power of two that brings their largest finite
-// coordinate magnitude into [2^-60, 2^60] (pcs::PredicateSafeExponent), when they are outside it:
-// nearest-neighbour distances then neither overflow nor underflow. Returns the exponent.
+// Scales the points of `cloud` (double coordinates, its own copy: PointCloud) by the power of two
+// that brings their largest finite coordinate magnitude into [2^-60, 2^60]
+// (pcs::PredicateSafeExponent), when they are outside it: nearest-neighbour distances then
+// neither overflow nor underflow. Returns the exponent.
 int ScaleSafely(vtkPolyData* cloud)
 {
-  const vtkIdType n = cloud->GetNumberOfPoints();
-  double largest = 0.0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double x[3];
-    cloud->GetPoint(i, x);
-    for (double c : x)
-    {
-      largest = std::isfinite(c) ? std::max(largest, std::fabs(c)) : largest;
-    }
-  }
-  const int exponent = pcs::PredicateSafeExponent(largest);
+  auto* coordinates = vtkDoubleArray::SafeDownCast(cloud->GetPoints()->GetData());
+  double* xyz = coordinates->GetPointer(0);
+  const size_t count = 3 * static_cast<size_t>(cloud->GetNumberOfPoints());
+  const int exponent = pcs::PredicateSafeExponent(pcs::LargestFiniteMagnitude(xyz, count));
   if (exponent != 0)
   {
-    vtkNew<vtkPoints> scaled;
-    scaled->SetDataTypeToDouble();
-    scaled->SetNumberOfPoints(n);
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      double x[3];
-      cloud->GetPoint(i, x);
-      scaled->SetPoint(
-        i, std::ldexp(x[0], exponent), std::ldexp(x[1], exponent), std::ldexp(x[2], exponent));
-    }
-    cloud->SetPoints(scaled);
+    pcs::ScaleInPlace(xyz, count, exponent);
+    coordinates->Modified();
+    cloud->GetPoints()->Modified();
   }
   return exponent;
 }
@@ -1335,37 +1314,20 @@ vtkIdType MeasureDistances(const SurfaceSamples& samples, const DistanceTarget& 
   std::vector<double> xyz(3 * static_cast<size_t>(n));
   SampleFunctor prepare{ samples, xyz.data() };
   vtkSMPTools::For(0, n, prepare);
-  double largest = 0.0;
-  auto include = [&largest](const double* x)
-  {
-    for (int i = 0; i < 3; ++i)
-    {
-      largest = std::isfinite(x[i]) ? std::max(largest, std::fabs(x[i])) : largest;
-    }
-  };
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    include(&xyz[3 * i]);
-  }
+  double largest = pcs::LargestFiniteMagnitude(xyz.data(), xyz.size());
   for (const Triangle& t : target.Triangles)
   {
     for (vtkIdType p : t)
     {
-      include(target.Points->GetPoint(p));
+      largest = pcs::LargestFiniteMagnitude(target.Points->GetPoint(p), 3, largest);
     }
   }
   for (vtkIdType p : target.Cloud)
   {
-    include(target.Points->GetPoint(p));
+    largest = pcs::LargestFiniteMagnitude(target.Points->GetPoint(p), 3, largest);
   }
   const int exponent = pcs::PredicateSafeExponent(largest);
-  if (exponent != 0)
-  {
-    for (double& v : xyz)
-    {
-      v = std::ldexp(v, exponent);
-    }
-  }
+  pcs::ScaleInPlace(xyz.data(), xyz.size(), exponent);
   TriangleSearch search;
   const vtkIdType flat = target.Triangles.empty()
     ? search.BuildPoints(target.Points, target.Cloud, exponent)
@@ -1376,13 +1338,7 @@ vtkIdType MeasureDistances(const SurfaceSamples& samples, const DistanceTarget& 
     TriangleQueryFunctor run(queries);
     vtkSMPTools::For(0, static_cast<vtkIdType>(run.Tasks.size()), 1, run);
   }
-  if (exponent != 0)
-  {
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      out[i] = std::ldexp(out[i], -exponent);
-    }
-  }
+  pcs::ScaleInPlace(out, static_cast<size_t>(n), -exponent);
   return flat;
 }
 

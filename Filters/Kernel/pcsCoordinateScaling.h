@@ -41,6 +41,30 @@ inline int PredicateSafeExponent(const double* coords, int dim, const std::vecto
   return PredicateSafeExponent(largest);
 }
 
+/// The largest magnitude among the finite values of coords[0, count) and `largest` (0 when there
+/// are none): the argument of PredicateSafeExponent for data that may hold NaN or infinite
+/// coordinates (they are left out), accumulated over several arrays through `largest`.
+inline double LargestFiniteMagnitude(const double* coords, size_t count, double largest = 0.0)
+{
+  for (size_t i = 0; i < count; ++i)
+  {
+    largest = std::isfinite(coords[i]) ? std::max(largest, std::fabs(coords[i])) : largest;
+  }
+  return largest;
+}
+
+/// coords[0, count) times 2^exponent, in place (exact unless a value overflows or underflows).
+inline void ScaleInPlace(double* coords, size_t count, int exponent)
+{
+  if (exponent != 0)
+  {
+    for (size_t i = 0; i < count; ++i)
+    {
+      coords[i] = std::ldexp(coords[i], exponent);
+    }
+  }
+}
+
 /// The first `count` values of `coords` times 2^exponent.
 inline std::vector<double> ScaledCopy(const double* coords, size_t count, int exponent)
 {

@@ -12,6 +12,7 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPThreadLocalObject.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 #include "vtkStaticPointLocator.h"
 
 #include <algorithm>
@@ -101,6 +102,26 @@ double Median(std::vector<double> values)
   std::nth_element(values.begin(), middle, values.end());
   return *middle;
 }
+
+// A locator over the n points of xyz (packed x, y, z, not copied: xyz must outlive the locator)
+// with the bin grid of a surface sample (SetSurfaceSampleDivisions).
+vtkSmartPointer<vtkStaticPointLocator> SurfaceSampleLocator(const double* xyz, int32_t n)
+{
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetArray(const_cast<double*>(xyz), 3 * static_cast<vtkIdType>(n), 1);
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(points);
+  auto locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+  double bounds[6];
+  points->GetBounds(bounds);
+  SetSurfaceSampleDivisions(locator, bounds, n);
+  locator->SetDataSet(cloud);
+  locator->BuildLocator();
+  return locator;
+}
 }
 
 int64_t FlagOutliers(const double* x, int32_t n, const std::vector<int32_t>& knn, int width,
@@ -169,24 +190,15 @@ int64_t FlagOutliers(const double* x, int32_t n, const std::vector<int32_t>& knn
   {
     return 0;
   }
-  vtkNew<vtkDoubleArray> denseCoordinates;
-  denseCoordinates->SetNumberOfComponents(3);
-  denseCoordinates->SetNumberOfTuples(static_cast<vtkIdType>(denseIds.size()));
-  for (size_t j = 0; j < denseIds.size(); ++j)
+  std::vector<double> denseXyz;
+  denseXyz.reserve(3 * denseIds.size());
+  for (const int32_t i : denseIds)
   {
-    denseCoordinates->SetTypedTuple(
-      static_cast<vtkIdType>(j), &x[3 * static_cast<size_t>(denseIds[j])]);
+    const double* p = &x[3 * static_cast<size_t>(i)];
+    denseXyz.insert(denseXyz.end(), p, p + 3);
   }
-  vtkNew<vtkPoints> densePoints;
-  densePoints->SetData(denseCoordinates);
-  vtkNew<vtkPolyData> denseCloud;
-  denseCloud->SetPoints(densePoints);
-  vtkNew<vtkStaticPointLocator> denseLocator;
-  double denseBounds[6];
-  densePoints->GetBounds(denseBounds);
-  SetSurfaceSampleDivisions(denseLocator, denseBounds, static_cast<int32_t>(denseIds.size()));
-  denseLocator->SetDataSet(denseCloud);
-  denseLocator->BuildLocator();
+  vtkSmartPointer<vtkStaticPointLocator> denseLocator =
+    SurfaceSampleLocator(denseXyz.data(), static_cast<int32_t>(denseIds.size()));
   const int nearest = std::min<int>(k, static_cast<int>(denseIds.size()));
   vtkSMPThreadLocal<std::vector<double>> aroundLocal;
   vtkSMPThreadLocalObject<vtkIdList> listLocal;
@@ -239,24 +251,9 @@ int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double 
 
   const int k = OutlierNeighbors;
   std::vector<int32_t> knn;
+  if (!FindNearestNeighbors(SurfaceSampleLocator(x.data(), n), x.data(), n, k, knn, progress))
   {
-    vtkNew<vtkDoubleArray> coordinates;
-    coordinates->SetNumberOfComponents(3);
-    coordinates->SetArray(x.data(), 3 * static_cast<vtkIdType>(n), 1);
-    vtkNew<vtkPoints> points;
-    points->SetData(coordinates);
-    vtkNew<vtkPolyData> cloud;
-    cloud->SetPoints(points);
-    vtkNew<vtkStaticPointLocator> locator;
-    double bounds[6];
-    points->GetBounds(bounds);
-    SetSurfaceSampleDivisions(locator, bounds, n);
-    locator->SetDataSet(cloud);
-    locator->BuildLocator();
-    if (!FindNearestNeighbors(locator, x.data(), n, k, knn, progress))
-    {
-      return 0;
-    }
+    return 0;
   }
 
   std::vector<uint8_t> far;

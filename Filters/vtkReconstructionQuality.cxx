@@ -18,6 +18,7 @@
 #include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkLine.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -604,7 +605,11 @@ vtkSmartPointer<vtkPolyData> PointCloud(vtkPoints* points, const std::vector<vtk
 
 // Squared distance from x to the triangle (a, b, c), for pruning only: the closest point is found
 // by the Voronoi region of x (vertex, edge or face), from dot products with the edge vectors.
-// NaN or infinite when the computation overflows or the triangle is numerically flat.
+// NaN or infinite when the computation overflows or the triangle is numerically flat. Accurate
+// to rounding on well-shaped triangles only (SeparatingAxes::WellShaped): on a sliver the region
+// tests cancel (twice its area is a difference of products much larger than it), and the point
+// taken can be far from the closest one, beyond the distance (0.063 instead of 0.0082 for a
+// sliver of quality 3e-14 in TestReconstructionQualityBruteForce).
 double PruningDistance2(const double x[3], const double* a, const double* b, const double* c)
 {
   double ab[3], ac[3], ax[3], bx[3], cx[3];
@@ -723,15 +728,22 @@ void GrowBox(double box[6], const double x[3])
 // Separating axes of a triangle: its unit normal n and the unit in-plane normals m_i of its
 // edges, pointing out of the triangle, with the triangle's extent along each m_i, all relative to
 // its first point a (differences first: no cancellation far from the origin). A point y is at
-// least |n.(y - a)| from the triangle along n and at least max(m_i.(y - a) - offset_i, 0) along
-// m_i; as n and m_i are orthogonal, the sum of the squares of the two gaps bounds the squared
-// distance from below.
+// least the distance from n.(y - a) to the triangle's extent along n (the slab of its points: a
+// computed normal is not exactly normal to a sliver) and at least max(m_i.(y - a) - offset_i, 0)
+// along m_i; as n and m_i are orthogonal, the sum of the squares of the two gaps bounds the
+// squared distance from below, for any unit n. WellShaped: twice the area is at least
+// WellShapedQuality times the longest edge squared, where PruningDistance2's relative error
+// (about 1e-16 / quality) stays far below the search's 1e-9 widening.
 struct SeparatingAxes
 {
   double Normal[3];
   double EdgeNormals[3][3];
   double EdgeOffsets[3];
+  double PlaneLow, PlaneHigh; // the triangle's extent along Normal, relative to its first point
   bool Valid;
+  bool WellShaped = true;
+
+  static constexpr double WellShapedQuality = 1e-5;
 
   void Set(const double* corner)
   {
@@ -741,12 +753,21 @@ struct SeparatingAxes
       vtkMath::Subtract(corner + 3 * ((i + 1) % 3), corner + 3 * i, edges[i]);
     }
     vtkMath::Cross(edges[0], edges[1], this->Normal);
-    this->Valid = vtkMath::Normalize(this->Normal) > 0.0;
+    const double twiceArea = vtkMath::Normalize(this->Normal);
+    this->Valid = twiceArea > 0.0;
+    const double longest2 = std::max({ vtkMath::Dot(edges[0], edges[0]),
+      vtkMath::Dot(edges[1], edges[1]),
+      vtkMath::Dot(edges[2], edges[2]) });
+    this->WellShaped = twiceArea >= WellShapedQuality * longest2; // false for NaN
     const double zero[3] = { 0.0, 0.0, 0.0 };
     const double* relative[3] = { zero, edges[0], nullptr }; // the points minus a
     double third[3];
     vtkMath::Subtract(corner + 6, corner, third);
     relative[2] = third;
+    this->PlaneLow = std::min(
+      { 0.0, vtkMath::Dot(this->Normal, relative[1]), vtkMath::Dot(this->Normal, relative[2]) });
+    this->PlaneHigh = std::max(
+      { 0.0, vtkMath::Dot(this->Normal, relative[1]), vtkMath::Dot(this->Normal, relative[2]) });
     for (int i = 0; i < 3 && this->Valid; ++i)
     {
       vtkMath::Cross(edges[i], this->Normal, this->EdgeNormals[i]); // outwards
@@ -756,7 +777,8 @@ struct SeparatingAxes
         vtkMath::Dot(this->EdgeNormals[i], relative[2]) });
     }
     this->Valid = this->Valid &&
-      std::isfinite(this->EdgeOffsets[0] + this->EdgeOffsets[1] + this->EdgeOffsets[2]);
+      std::isfinite(this->EdgeOffsets[0] + this->EdgeOffsets[1] + this->EdgeOffsets[2]) &&
+      std::isfinite(this->PlaneLow + this->PlaneHigh);
   }
 
   // Lower bound of the squared distance from any point within `half` (half-widths along x, y, z)
@@ -773,8 +795,9 @@ struct SeparatingAxes
     };
     double y[3];
     vtkMath::Subtract(centre, a, y);
+    const double along = vtkMath::Dot(this->Normal, y), reach = radius(this->Normal);
     const double plane =
-      std::max(std::abs(vtkMath::Dot(this->Normal, y)) - radius(this->Normal), 0.0);
+      std::max({ along - reach - this->PlaneHigh, this->PlaneLow - along - reach, 0.0 });
     double edge = 0.0;
     for (int i = 0; i < 3; ++i)
     {
@@ -940,7 +963,8 @@ struct TriangleSearch
         continue;
       }
       const double* c = &this->Corners[9 * t];
-      if (PruningDistance2(x, c, c + 3, c + 6) > reach * reach) // false for NaN
+      if (this->Axes[t].WellShaped &&
+        PruningDistance2(x, c, c + 3, c + 6) > reach * reach) // false for NaN
       {
         continue;
       }
@@ -956,6 +980,22 @@ struct TriangleSearch
   }
 
   double Widen(double d) const { return d * (1.0 + 1e-9) + this->Slack; }
+
+  // An upper bound of the squared distance from x to triangle t: PruningDistance2 where it is
+  // accurate (a well-shaped triangle, a point), else the distance to the nearest point of its
+  // edges (vtkLine::DistanceToLine gives a point of the segment: never below the distance).
+  double UpperDistance2(const double x[3], vtkIdType t) const
+  {
+    const double* c = &this->Corners[9 * t];
+    if (this->PointsOnly || this->Axes[t].WellShaped)
+    {
+      return PruningDistance2(x, c, c + 3, c + 6);
+    }
+    double parameter, closest[3];
+    return std::min({ vtkLine::DistanceToLine(x, c, c + 3, parameter, closest),
+      vtkLine::DistanceToLine(x, c + 3, c + 6, parameter, closest),
+      vtkLine::DistanceToLine(x, c + 6, c, parameter, closest) });
+  }
 };
 
 // The queries of a TriangleSearch (coordinates, results) and their k-d order.
@@ -1048,8 +1088,7 @@ struct TriangleQueries
       to.push_back(t);
       if (Distance2ToBox(node.Center, box) < nearest2)
       {
-        const double* c = &s.Corners[9 * t];
-        const double d2 = PruningDistance2(node.Center, c, c + 3, c + 6);
+        const double d2 = s.UpperDistance2(node.Center, t);
         if (d2 < nearest2) // false for NaN
         {
           nearest2 = d2;
@@ -1060,11 +1099,10 @@ struct TriangleQueries
     if (nearest >= 0)
     {
       // Every query is within its distance to the triangle closest to the centre.
-      const double* c = &s.Corners[9 * nearest];
       double farthest2 = 0.0;
       for (vtkIdType k = begin; k < end; ++k)
       {
-        const double d2 = PruningDistance2(this->Points + 3 * this->Order[k], c, c + 3, c + 6);
+        const double d2 = s.UpperDistance2(this->Points + 3 * this->Order[k], nearest);
         farthest2 =
           std::isfinite(d2) ? std::max(farthest2, d2) : std::numeric_limits<double>::infinity();
       }
@@ -1087,7 +1125,8 @@ struct TriangleQueries
       if (s.Sizes[t] > 2.0 * node.HalfDiagonal)
       {
         const double* c = &s.Corners[9 * t];
-        const double d2 = PruningDistance2(node.Center, c, c + 3, c + 6);
+        const double d2 =
+          s.Axes[t].WellShaped ? PruningDistance2(node.Center, c, c + 3, c + 6) : 0.0;
         if ((std::isfinite(d2) && std::sqrt(d2) > far) ||
           s.Axes[t].Gap2(node.Center, node.Half, c) > reach2)
         {

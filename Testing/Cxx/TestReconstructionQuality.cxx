@@ -6,6 +6,8 @@
 // - one flipped triangle in the octahedron and in the torus: (E - 3) / E consistent edges;
 // - an open n x m grid (2(n + m) boundary edges, 1 loop, Euler 1), the grid with a hole (2 loops,
 //   Euler 0), with two holes touching at a corner (a pinched vertex, one merged hole), a bowtie;
+// - a closed genus-2 voxel slab (two holes) and a Moebius strip (one boundary loop, one
+//   inconsistent edge);
 // - three triangles on one edge, two closed cones touching at their tip;
 // - degenerate (collapsed, exactly collinear) and duplicate triangles, an almost-collinear one
 //   that is not degenerate;
@@ -17,6 +19,7 @@
 // - coordinates of 1e300 and 1e-300 (same measures, scaled), a NaN point in a reference cloud.
 #include "vtkReconstructionQuality.h"
 
+#include "pcsQualityTestUtilities.h"
 #include "pcsTestUtilities.h"
 
 #include "vtkCallbackCommand.h"
@@ -29,51 +32,21 @@
 #include "vtkSignedCharArray.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <string>
 
 namespace
 {
-using Tri = std::array<vtkIdType, 3>;
-
-struct Mesh
-{
-  std::vector<double> Points; // x, y, z
-  std::vector<Tri> Triangles;
-
-  vtkIdType AddPoint(double x, double y, double z)
-  {
-    for (double c : { x, y, z })
-    {
-      this->Points.push_back(c);
-    }
-    return static_cast<vtkIdType>(this->Points.size() / 3) - 1;
-  }
-  vtkIdType NumberOfPoints() const { return static_cast<vtkIdType>(this->Points.size() / 3); }
-  // Appends `other` with its point ids shifted.
-  void Append(const Mesh& other)
-  {
-    const vtkIdType shift = this->NumberOfPoints();
-    this->Points.insert(this->Points.end(), other.Points.begin(), other.Points.end());
-    for (Tri t : other.Triangles)
-    {
-      this->Triangles.push_back({ { t[0] + shift, t[1] + shift, t[2] + shift } });
-    }
-  }
-  vtkSmartPointer<vtkPolyData> PolyData() const
-  {
-    auto data = pcstest::MakeCloud(this->Points);
-    vtkNew<vtkCellArray> polys;
-    for (const Tri& t : this->Triangles)
-    {
-      polys->InsertNextCell(3, t.data());
-    }
-    data->SetPolys(polys);
-    return data;
-  }
-};
+using pcsqtest::Counter;
+using pcsqtest::Field;
+using pcsqtest::Mesh;
+using pcsqtest::Run;
+using pcsqtest::Tri;
 
 // Octahedron with vertices on the axes, outward-oriented (counter-clockwise seen from outside).
 Mesh Octahedron(double radius = 1.0)
@@ -175,48 +148,6 @@ Mesh Cone(int k, double height)
     }
   }
   return m;
-}
-
-struct Counter
-{
-  int Warnings = 0;
-  int Errors = 0;
-  static void Callback(vtkObject*, unsigned long event, void* data, void*)
-  {
-    auto* self = static_cast<Counter*>(data);
-    (event == vtkCommand::ErrorEvent ? self->Errors : self->Warnings)++;
-  }
-};
-
-// Runs the filter; counts its warnings and errors (and its executive's).
-vtkSmartPointer<vtkPolyData> Run(vtkPolyData* mesh, vtkDataObject* reference = nullptr,
-  int samples = 3, Counter* counter = nullptr)
-{
-  vtkNew<vtkReconstructionQuality> quality;
-  Counter local;
-  Counter* c = counter ? counter : &local;
-  vtkNew<vtkCallbackCommand> callback;
-  callback->SetCallback(Counter::Callback);
-  callback->SetClientData(c);
-  for (vtkObject* emitter :
-    { static_cast<vtkObject*>(quality.Get()), static_cast<vtkObject*>(quality->GetExecutive()) })
-  {
-    emitter->AddObserver(vtkCommand::WarningEvent, callback);
-    emitter->AddObserver(vtkCommand::ErrorEvent, callback);
-  }
-  quality->SetInputData(mesh);
-  quality->SetReferenceData(reference);
-  quality->SetSamplesPerTriangle(samples);
-  quality->Update();
-  auto output = vtkSmartPointer<vtkPolyData>::New();
-  output->ShallowCopy(quality->GetOutput());
-  return output;
-}
-
-double Field(vtkDataObject* data, const char* name)
-{
-  vtkDataArray* array = data->GetFieldData()->GetArray(name);
-  return array ? array->GetTuple1(0) : std::numeric_limits<double>::quiet_NaN();
 }
 
 bool Near(double a, double b, double tolerance = 1e-9)
@@ -433,6 +364,121 @@ bool TestOpenSurfaces()
       return false;
     }
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------------------------
+// The outer faces of a set of unit voxels (cells (x, y, z) of `filled`), each split in two
+// triangles, counter-clockwise seen from outside; lattice points shared.
+Mesh VoxelSurface(const std::vector<std::array<int, 3>>& filled)
+{
+  Mesh m;
+  std::map<std::array<int, 3>, vtkIdType> ids;
+  auto id = [&m, &ids](const std::array<int, 3>& p)
+  {
+    auto found = ids.find(p);
+    if (found != ids.end())
+    {
+      return found->second;
+    }
+    const vtkIdType i = m.AddPoint(p[0], p[1], p[2]);
+    ids[p] = i;
+    return i;
+  };
+  auto isFilled = [&filled](const std::array<int, 3>& c)
+  { return std::find(filled.begin(), filled.end(), c) != filled.end(); };
+  for (const auto& cell : filled)
+  {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      for (int side : { -1, 1 })
+      {
+        std::array<int, 3> next = cell;
+        next[axis] += side;
+        if (isFilled(next))
+        {
+          continue;
+        }
+        // Corners (0, 0), (1, 0), (1, 1), (0, 1) along the axes u, v after `axis` (cyclic):
+        // counter-clockwise seen from +axis; reversed on the - side.
+        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+        vtkIdType corner[4];
+        const int du[4] = { 0, 1, 1, 0 }, dv[4] = { 0, 0, 1, 1 };
+        for (int k = 0; k < 4; ++k)
+        {
+          std::array<int, 3> p = cell;
+          p[axis] += side > 0 ? 1 : 0;
+          p[u] += du[k];
+          p[v] += dv[k];
+          corner[k] = id(p);
+        }
+        if (side < 0)
+        {
+          std::swap(corner[1], corner[3]);
+        }
+        m.Triangles.push_back({ { corner[0], corner[1], corner[2] } });
+        m.Triangles.push_back({ { corner[0], corner[2], corner[3] } });
+      }
+    }
+  }
+  return m;
+}
+
+// Surfaces not covered above: higher genus and a non-orientable surface with boundary.
+bool TestGenusTwoAndMoebius()
+{
+  // A 5 x 3 x 1 slab of voxels with two holes, at (1, 1) and (3, 1): a closed orientable surface
+  // of genus 2. 13 voxels: 26 top and bottom squares, 16 outer and 8 hole walls: F = 100; the
+  // 6 x 4 lattice points of both faces: V = 48; E = 150, chi = -2.
+  std::vector<std::array<int, 3>> slab;
+  for (int x = 0; x < 5; ++x)
+  {
+    for (int y = 0; y < 3; ++y)
+    {
+      if (!(y == 1 && (x == 1 || x == 3)))
+      {
+        slab.push_back({ { x, y, 0 } });
+      }
+    }
+  }
+  auto out = Run(VoxelSurface(slab).PolyData());
+  if (!CheckTopology(out, { 100, 48, 0, 0, 0, 0, 1, -2, 2 }, "genus-2 slab"))
+  {
+    return false;
+  }
+  PCS_CHECK(Field(out, "OrientationConsistency") == 1.0, "genus-2 slab: oriented");
+
+  // Moebius strip of n quads: points t_i = (i, 0), b_i = (i, 1) on a band around a circle, quad
+  // i (t_i, b_i, b_i+1, t_i+1) split into (t_i, b_i, b_i+1) and (t_i, b_i+1, t_i+1), the last
+  // quad closing with a half twist (t_n = b_0, b_n = t_0). V = 2n, F = 2n, E = 4n (n rungs and n
+  // diagonals of valence 2, 2n boundary edges in one loop), chi 0; every triangle agrees with its
+  // neighbours but across the rung t_0 b_0, which both traverse from t_0 to b_0: consistency
+  // (2n - 1) / 2n. Open, so no genus (-1).
+  const int n = 12;
+  Mesh strip;
+  for (int i = 0; i < n; ++i)
+  {
+    const double angle = 2.0 * vtkMath::Pi() * i / n, twist = 0.5 * angle;
+    for (double w : { -0.3, 0.3 })
+    {
+      const double r = 2.0 + w * std::cos(twist);
+      strip.AddPoint(r * std::cos(angle), r * std::sin(angle), w * std::sin(twist));
+    }
+  }
+  auto top = [n](int i) { return i < n ? 2 * i : 1; };        // t_n = b_0
+  auto bottom = [n](int i) { return i < n ? 2 * i + 1 : 0; }; // b_n = t_0
+  for (int i = 0; i < n; ++i)
+  {
+    strip.Triangles.push_back({ { top(i), bottom(i), bottom(i + 1) } });
+    strip.Triangles.push_back({ { top(i), bottom(i + 1), top(i + 1) } });
+  }
+  out = Run(strip.PolyData());
+  if (!CheckTopology(out, { 2 * n, 2 * n, 0, 0, 2 * n, 1, 1, 0, -1 }, "Moebius strip"))
+  {
+    return false;
+  }
+  PCS_CHECK(Near(Field(out, "OrientationConsistency"), (2.0 * n - 1) / (2.0 * n)),
+    "Moebius strip: consistency " << Field(out, "OrientationConsistency"));
   return true;
 }
 
@@ -886,9 +932,10 @@ bool TestThreads()
 
 int TestReconstructionQuality(int, char*[])
 {
-  const std::pair<const char*, std::function<bool()>> tests[] = {
+  const std::vector<pcsqtest::NamedTest> tests = {
     { "closed surfaces", TestClosedSurfaces },
     { "open surfaces", TestOpenSurfaces },
+    { "genus 2, Moebius strip", TestGenusTwoAndMoebius },
     { "non-manifold", TestNonManifold },
     { "degenerate and duplicate triangles", TestDegenerate },
     { "bad input", TestBadInput },
@@ -897,12 +944,5 @@ int TestReconstructionQuality(int, char*[])
     { "extreme coordinates", TestExtremeCoordinates },
     { "threads", TestThreads },
   };
-  int failures = 0;
-  for (const auto& test : tests)
-  {
-    const bool ok = test.second();
-    std::cout << (ok ? "passed: " : "FAILED: ") << test.first << std::endl;
-    failures += ok ? 0 : 1;
-  }
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return pcsqtest::RunTests(tests);
 }

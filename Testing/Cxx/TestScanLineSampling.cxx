@@ -33,6 +33,7 @@
 #include "pcsTestUtilities.h"
 
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkMath.h"
 
 #include <algorithm>
@@ -44,24 +45,36 @@
 
 namespace
 {
-double Field(vtkPolyData* mesh, const char* name)
+// The field data of vtkReconstructionQuality on a mesh, measured once.
+class Measures
 {
-  vtkNew<vtkReconstructionQuality> quality;
-  quality->SetInputData(mesh);
-  quality->Update();
-  vtkDataArray* array = quality->GetOutput()->GetFieldData()->GetArray(name);
-  return array ? array->GetTuple1(0) : std::numeric_limits<double>::quiet_NaN();
-}
+public:
+  explicit Measures(vtkPolyData* mesh)
+  {
+    vtkNew<vtkReconstructionQuality> quality;
+    quality->SetInputData(mesh);
+    quality->Update();
+    this->Fields->ShallowCopy(quality->GetOutput()->GetFieldData());
+  }
 
-bool CheckManifold(vtkPolyData* mesh, const std::string& what)
+  double operator()(const char* name) const
+  {
+    vtkDataArray* array = this->Fields->GetArray(name);
+    return array ? array->GetTuple1(0) : std::numeric_limits<double>::quiet_NaN();
+  }
+
+private:
+  vtkNew<vtkFieldData> Fields;
+};
+
+bool CheckManifold(const Measures& field, const std::string& what)
 {
-  PCS_CHECK(
-    Field(mesh, "NumberOfNonManifoldEdges") == 0 && Field(mesh, "NumberOfNonManifoldVertices") == 0,
+  PCS_CHECK(field("NumberOfNonManifoldEdges") == 0 && field("NumberOfNonManifoldVertices") == 0,
     what << ": not manifold");
-  PCS_CHECK(Field(mesh, "OrientationConsistency") == 1.0, what << ": not oriented");
-  PCS_CHECK(Field(mesh, "NumberOfConnectedComponents") == 1,
-    what << ": " << Field(mesh, "NumberOfConnectedComponents") << " components, expected 1");
-  PCS_CHECK(Field(mesh, "NumberOfDegenerateTriangles") == 0, what << ": degenerate triangles");
+  PCS_CHECK(field("OrientationConsistency") == 1.0, what << ": not oriented");
+  PCS_CHECK(field("NumberOfConnectedComponents") == 1,
+    what << ": " << field("NumberOfConnectedComponents") << " components, expected 1");
+  PCS_CHECK(field("NumberOfDegenerateTriangles") == 0, what << ": degenerate triangles");
   return true;
 }
 
@@ -111,13 +124,14 @@ bool CheckLineSheet(vtkPolyData* mesh,
   int perLine,
   const std::string& what)
 {
-  if (!CheckManifold(mesh, what))
+  const Measures field(mesh);
+  if (!CheckManifold(field, what))
   {
     return false;
   }
-  PCS_CHECK(Field(mesh, "NumberOfBoundaryLoops") == 1 && Field(mesh, "EulerCharacteristic") == 1,
-    what << ": " << Field(mesh, "NumberOfBoundaryLoops") << " boundary loops, Euler characteristic "
-         << Field(mesh, "EulerCharacteristic") << ", expected one disk");
+  PCS_CHECK(field("NumberOfBoundaryLoops") == 1 && field("EulerCharacteristic") == 1,
+    what << ": " << field("NumberOfBoundaryLoops") << " boundary loops, Euler characteristic "
+         << field("EulerCharacteristic") << ", expected one disk");
   PCS_CHECK(unused == 0, what << ": " << unused << " unused points");
   PCS_CHECK(mesh->GetNumberOfPoints() == static_cast<vtkIdType>(lines) * perLine,
     what << ": " << mesh->GetNumberOfPoints() << " points, expected no added point");
@@ -139,8 +153,8 @@ bool CheckLineSheet(vtkPolyData* mesh,
          << " lie on one line");
   // Every triangle between two adjacent lines, each with one edge on a line: 2 (N - 1) per
   // strip between two lines.
-  PCS_CHECK(Field(mesh, "NumberOfTriangles") == 2 * (perLine - 1) * (lines - 1),
-    what << ": " << Field(mesh, "NumberOfTriangles") << " triangles, expected "
+  PCS_CHECK(field("NumberOfTriangles") == 2 * (perLine - 1) * (lines - 1),
+    what << ": " << field("NumberOfTriangles") << " triangles, expected "
          << 2 * (perLine - 1) * (lines - 1));
   return true;
 }
@@ -154,17 +168,18 @@ bool CheckLatitudeSphere(vtkPolyData* mesh,
   const std::string& what)
 {
   const vtkIdType points = static_cast<vtkIdType>(circle.size());
-  if (!CheckManifold(mesh, what))
+  const Measures field(mesh);
+  if (!CheckManifold(field, what))
   {
     return false;
   }
-  PCS_CHECK(Field(mesh, "NumberOfBoundaryEdges") == 0 && Field(mesh, "Genus") == 0,
-    what << ": " << Field(mesh, "NumberOfBoundaryEdges") << " boundary edges, genus "
-         << Field(mesh, "Genus") << ", expected closed genus 0");
+  PCS_CHECK(field("NumberOfBoundaryEdges") == 0 && field("Genus") == 0,
+    what << ": " << field("NumberOfBoundaryEdges") << " boundary edges, genus " << field("Genus")
+         << ", expected closed genus 0");
   PCS_CHECK(mesh->GetNumberOfPoints() == points,
     what << ": " << mesh->GetNumberOfPoints() << " points, expected no added point");
-  PCS_CHECK(Field(mesh, "NumberOfTriangles") == 2 * points - 4,
-    what << ": " << Field(mesh, "NumberOfTriangles") << " triangles, expected " << 2 * points - 4);
+  PCS_CHECK(field("NumberOfTriangles") == 2 * points - 4,
+    what << ": " << field("NumberOfTriangles") << " triangles, expected " << 2 * points - 4);
   PCS_CHECK(unused == 0, what << ": " << unused << " unused points");
   if (strips)
   {

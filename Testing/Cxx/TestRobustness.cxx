@@ -16,7 +16,8 @@
 // for the hulls of those clouds, and a reference cloud of int or short points, or with 20,000
 // extra points with a NaN coordinate, gives the measures of the same (finite) cloud in doubles.
 // Every parameter of every filter runs at its clamp limits (set beyond them, so the clamp is
-// exercised too) on a regular input.
+// exercised too) on a regular input; OutlierFactor at 0, -1, huge and the default on a cloud with
+// far outliers (excluded only at the default).
 //
 // The filters come from pcsTestFilters.h (a new filter of the module joins automatically); their
 // parameter limits are listed in ExtremesOf below. Every double parameter set to NaN (which VTK's
@@ -951,6 +952,107 @@ bool RunExtremes(const FilterEntry& filter)
   return true;
 }
 
+// OutlierFactor at its limits, on a sphere sample with 3 far outliers (4 radii from the centre,
+// 30 to 40 sphere spacings from any point): 0 turns the rule off (and -1 is clamped to 0), so
+// nothing is excluded; a huge value is clamped to 1000, above these outliers' ratio (about 35):
+// nothing is excluded either; the default 8 excludes exactly the 3 with a warning, reported in
+// NumberOfOutliers with Used 0. No error, and a valid output, in every case. (NaN: an error,
+// RunNaNParameters.)
+struct OutlierFactorAccess
+{
+  std::function<void(vtkPolyDataAlgorithm*, double)> Set;
+  std::function<double(vtkPolyDataAlgorithm*)> Get;
+};
+
+template<typename T>
+OutlierFactorAccess OutlierFactorOf()
+{
+  return { [](vtkPolyDataAlgorithm* a, double v) { static_cast<T*>(a)->SetOutlierFactor(v); },
+    [](vtkPolyDataAlgorithm* a) { return static_cast<T*>(a)->GetOutlierFactor(); } };
+}
+
+// False for the filters without an OutlierFactor.
+bool FindOutlierFactor(const std::string& name, OutlierFactorAccess& access)
+{
+#ifdef PCS_HAVE_PEEL
+  if (name == "vtkPerimeterPeelSurface")
+  {
+    access = OutlierFactorOf<vtkPerimeterPeelSurface>();
+    return true;
+  }
+#endif
+#ifdef PCS_HAVE_LOCAL_OPTIMUM
+  if (name == "vtkLocalOptimumGrowth")
+  {
+    access = OutlierFactorOf<vtkLocalOptimumGrowth>();
+    return true;
+  }
+#endif
+#ifdef PCS_HAVE_GREEDY
+  if (name == "vtkGreedySurfaceTriangulation")
+  {
+    access = OutlierFactorOf<vtkGreedySurfaceTriangulation>();
+    return true;
+  }
+#endif
+  return false;
+}
+
+bool RunOutlierFactorLimits(const FilterEntry& filter)
+{
+  OutlierFactorAccess access;
+  if (!FindOutlierFactor(filter.Info.Name, access))
+  {
+    return true;
+  }
+  std::vector<double> xyz = Sphere(1500, 21);
+  const vtkIdType firstOutlier = static_cast<vtkIdType>(xyz.size() / 3);
+  xyz.insert(xyz.end(), { 4.0, 0.0, 0.0, 0.0, -4.0, 0.0, 0.0, 0.0, 4.0 });
+  auto prepared = filter.Prepare(pcstest::MakeCloud(xyz));
+  struct Limit
+  {
+    const char* Label;
+    double Value, Clamped;
+    vtkIdType Outliers;
+  };
+  const Limit limits[] = {
+    { "OutlierFactor = -1 (clamped to 0: off)", -1.0, 0.0, 0 },
+    { "OutlierFactor = 0 (off)", 0.0, 0.0, 0 },
+    { "OutlierFactor = huge (clamped to 1000)", VTK_DOUBLE_MAX, 1000.0, 0 },
+    { "OutlierFactor = 8 (default)", 8.0, 8.0, 3 },
+  };
+  for (const Limit& limit : limits)
+  {
+    const std::string label = filter.Info.Name + " / " + limit.Label;
+    Algorithm algorithm = filter.Info.Make();
+    access.Set(algorithm, limit.Value);
+    PCS_CHECK(access.Get(algorithm) == limit.Clamped,
+      label << ": OutlierFactor reads " << access.Get(algorithm));
+    algorithm->SetInputData(prepared);
+    const Messages messages = Update(algorithm);
+    vtkPolyData* output = algorithm->GetOutput();
+    PCS_CHECK(messages.Errors == 0, label << ": " << messages.Errors << " error(s)");
+    PCS_CHECK(pcstest::FieldCount(output, "NumberOfOutliers") == limit.Outliers,
+      label << ": " << pcstest::FieldCount(output, "NumberOfOutliers") << " outliers, expected "
+            << limit.Outliers);
+    if (limit.Outliers > 0)
+    {
+      PCS_CHECK(messages.Warnings > 0, label << ": outliers excluded without a warning");
+      vtkDataArray* used = output->GetPointData()->GetArray("Used");
+      PCS_CHECK(used, label << ": no Used array");
+      for (vtkIdType p = firstOutlier; p < firstOutlier + 3; ++p)
+      {
+        PCS_CHECK(used->GetTuple1(p) == 0, label << ": outlier " << p << " used");
+      }
+    }
+    if (!CheckOutput(filter, label, prepared, output, false))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 // vtkReconstructionQuality against a reference cloud holding a pile of 20,000 copies of one
 // point: its MeanSpacing looked for each copy's nearest distinct point with queries doubling past
 // the whole pile (82 s CPU for 10,000 copies, beyond the test's timeout for these). The pile's
@@ -1202,6 +1304,7 @@ int TestRobustness(int, char*[])
     failures += RunMismatchedPointData(filter) ? 0 : 1;
     failures += RunNaNParameters(filter) ? 0 : 1;
     failures += RunExtremes(filter) ? 0 : 1;
+    failures += RunOutlierFactorLimits(filter) ? 0 : 1;
     std::cout << filter.Info.Name << ": " << cases << " inputs, " << filter.Extremes.size()
               << " parameter limits" << std::endl;
   }

@@ -122,7 +122,8 @@ public:
   bool OnBoundary(int32_t v) const { return this->Count[v] > 0 && this->OutsideCount[v] > 0; }
 
   // Visit the cells around the edge of c joining its slots i and j (c first), walking across the
-  // facets that contain the edge, until `visit` returns true (then returns true).
+  // facets that contain the edge, until `visit(cell, cross)` returns true (then returns true);
+  // `cross` is the slot of the facet of `cell` through which the walk goes on.
   template <typename Visitor>
   bool AroundEdge(int64_t c, int i, int j, Visitor&& visit) const
   {
@@ -138,7 +139,7 @@ public:
     int64_t cell = c;
     do
     {
-      if (visit(cell))
+      if (visit(cell, cross))
       {
         return true;
       }
@@ -158,7 +159,124 @@ public:
   // Whether a cell around the edge of c joining its slots i and j, other than c, is outside.
   bool EdgeTouchesOutside(int64_t c, int i, int j) const
   {
-    return this->AroundEdge(c, i, j, [&](int64_t cell) { return !this->IsInside(cell); });
+    return this->EdgeTouches(c, i, j, false);
+  }
+
+  // Whether a cell around the edge of c joining its slots i and j is inside (`inside`) or outside.
+  bool EdgeTouches(int64_t c, int i, int j, bool inside) const
+  {
+    return this->AroundEdge(
+      c, i, j, [&](int64_t cell, int) { return this->IsInside(cell) == inside; });
+  }
+
+  // Whether moving the finite cell c alone to the other state keeps the boundary a 2-manifold with
+  // the same topology and the same points on it (the sculpting rules, both ways): the facets of c
+  // on the boundary must be one whose opposite vertex has no cell of the other state (removal
+  // only: every vertex has inside cells), or two whose opposite vertices' edge has none. With three
+  // or four, the common vertex would be left in no cell of c's state.
+  bool MayToggle(int64_t c) const
+  {
+    const bool inside = this->IsInside(c);
+    int slots[4], k = 0;
+    for (int j = 0; j < 4; ++j)
+    {
+      if (this->IsInside(this->DT.Neighbor(c, j)) != inside)
+      {
+        slots[k++] = j;
+      }
+    }
+    if (k == 1)
+    {
+      return inside && !this->OnBoundary(this->DT.Vertex(c, slots[0]));
+    }
+    return k == 2 && !this->EdgeTouches(c, slots[0], slots[1], !inside);
+  }
+
+  // The triangle of facet j of the finite cell c, ordered so that its normal (right-hand rule)
+  // points away from c. In a positively oriented cell (v0, v1, v2, v3), the increasing-slot triple
+  // without vertex j faces away from v_j when j is odd and towards it when j is even.
+  std::array<int32_t, 3> FacetTriangle(int64_t c, int j) const
+  {
+    std::array<int32_t, 3> t;
+    for (int k = 0, m = 0; k < 4; ++k)
+    {
+      if (k != j)
+      {
+        t[m++] = this->DT.Vertex(c, k);
+      }
+    }
+    if (j % 2 == 0)
+    {
+      std::swap(t[1], t[2]);
+    }
+    return t;
+  }
+
+  // The normal of facet j of the finite cell c pointing away from c (twice the area long).
+  std::array<double, 3> FacetNormal(int64_t c, int j) const
+  {
+    const std::array<int32_t, 3> t = this->FacetTriangle(c, j);
+    const double* a = this->XYZ + 3 * static_cast<int64_t>(t[0]);
+    const double* b = this->XYZ + 3 * static_cast<int64_t>(t[1]);
+    const double* d = this->XYZ + 3 * static_cast<int64_t>(t[2]);
+    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+    return { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] };
+  }
+
+  // Whether the edge of c joining its slots i and j is a fold of the boundary: it has two boundary
+  // triangles (a manifold edge) and their outward normals are more than 90 degrees apart, so one
+  // of them faces into the solid there (a thin flap of flat tetrahedra, see Unfold).
+  bool IsFold(int64_t c, int i, int j) const { return this->EdgeCosine(c, i, j) < 0.0; }
+
+  // The cosine of the angle between the outward normals of the two boundary triangles on the edge
+  // of c joining its slots i and j; 2 when the edge does not have exactly two.
+  double EdgeCosine(int64_t c, int i, int j) const
+  {
+    double cosine[2];
+    this->EdgeCosines(c, i, j, -1, cosine);
+    return cosine[0];
+  }
+
+  // EdgeCosine now (cosine[0]) and, in the same walk around the edge, with the cell `moved` in the
+  // other state (cosine[1]; not computed when `moved` is -1).
+  void EdgeCosines(int64_t c, int i, int j, int64_t moved, double cosine[2]) const
+  {
+    std::array<double, 3> normal[2][2];
+    int found[2] = { 0, 0 };
+    const int states = moved >= 0 ? 2 : 1;
+    this->AroundEdge(c,
+      i,
+      j,
+      [&](int64_t cell, int cross)
+      {
+        const int64_t next = this->DT.Neighbor(cell, cross);
+        for (int s = 0; s < states; ++s)
+        {
+          const bool cellInside = this->IsInside(cell) != (s == 1 && cell == moved);
+          const bool nextInside = this->IsInside(next) != (s == 1 && next == moved);
+          if (cellInside != nextInside && found[s]++ < 2)
+          {
+            normal[s][found[s] - 1] = cellInside
+              ? this->FacetNormal(cell, cross)
+              : this->FacetNormal(next, this->DT.MirrorIndex(cell, cross));
+          }
+        }
+        return false;
+      });
+    for (int s = 0; s < states; ++s)
+    {
+      const std::array<double, 3>* n = normal[s];
+      if (found[s] != 2)
+      {
+        cosine[s] = 2.0;
+        continue;
+      }
+      const double dot = n[0][0] * n[1][0] + n[0][1] * n[1][1] + n[0][2] * n[1][2];
+      const double lengths = std::sqrt((n[0][0] * n[0][0] + n[0][1] * n[0][1] + n[0][2] * n[0][2]) *
+        (n[1][0] * n[1][0] + n[1][1] * n[1][1] + n[1][2] * n[1][2]));
+      cosine[s] = lengths > 0.0 ? dot / lengths : (dot < 0.0 ? -1.0 : 1.0);
+    }
   }
 
   // Relative measures: each facet's measure is divided by the local spacing at its vertices (the
@@ -511,7 +629,7 @@ public:
       }
       else
       {
-        ok = after == before || this->StaysConnected();
+        ok = after == before || this->StaysConnected(true);
       }
     }
     if (!ok)
@@ -535,13 +653,60 @@ public:
     return ok;
   }
 
+  // Move the cells (all of one state, finite) to the other state when the boundary stays a
+  // closed 2-manifold of the same topology with every vertex of the cells on it (no point left
+  // unused or in no cell): each such vertex keeps inside and outside cells and a manifold link,
+  // the Euler characteristic of the boundary does not change, and the cells of the old state
+  // around them stay connected (no part split off, no void enclosed). Returns whether they moved;
+  // the failed groups' marks are not touched.
+  bool Toggle(const std::vector<int64_t>& cells)
+  {
+    const bool inside = this->Solid.IsInside(cells[0]);
+    this->Group = cells;
+    const int64_t before = this->BoundaryEuler();
+    for (int64_t c : cells)
+    {
+      this->Solid.SetInside(c, !inside);
+    }
+    bool ok = this->BoundaryEuler() == before;
+    this->VertexCells.clear();
+    for (int64_t c : cells)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        this->VertexCells.emplace_back(this->DT.Vertex(c, k), c);
+      }
+    }
+    std::sort(this->VertexCells.begin(), this->VertexCells.end());
+    for (size_t i = 0; i < this->VertexCells.size() && ok; ++i)
+    {
+      const int32_t v = this->VertexCells[i].first;
+      if (i > 0 && this->VertexCells[i - 1].first == v)
+      {
+        continue;
+      }
+      ok = this->Solid.OnBoundary(v) && this->ManifoldAt(v, this->VertexCells[i].second);
+    }
+    ok = ok && this->StaysConnected(inside);
+    if (!ok)
+    {
+      for (int64_t c : cells)
+      {
+        this->Solid.SetInside(c, inside);
+      }
+    }
+    this->Group.clear();
+    return ok;
+  }
+
   std::vector<int64_t> Group;
 
 private:
-  // Whether the inside cells next to the (removed) group are still connected to each other through
-  // inside cells: a breadth-first search from each of them, merging searches that meet, until one
-  // is left (connected) or a search runs out of cells while others remain (a part split off).
-  bool StaysConnected()
+  // Whether the cells of state `inside` next to the group (of the other state now) are still
+  // connected to each other through cells of that state: a breadth-first search from each of them,
+  // merging searches that meet, until one is left (connected) or a search runs out of cells while
+  // others remain (a part split off).
+  bool StaysConnected(bool inside)
   {
     ++this->Generation;
     this->Fill.clear();
@@ -561,7 +726,7 @@ private:
       for (int k = 0; k < 4; ++k)
       {
         const int64_t n = this->DT.Neighbor(g, k);
-        if (this->Solid.IsInside(n) && this->Stamp[n] != this->Generation)
+        if (this->Solid.IsInside(n) == inside && this->Stamp[n] != this->Generation)
         {
           this->Stamp[n] = this->Generation;
           this->Label[n] = static_cast<int64_t>(root.size());
@@ -579,7 +744,7 @@ private:
       for (int k = 0; k < 4; ++k)
       {
         const int64_t n = this->DT.Neighbor(c, k);
-        if (!this->Solid.IsInside(n))
+        if (this->Solid.IsInside(n) != inside)
         {
           continue;
         }
@@ -653,8 +818,10 @@ private:
         continue;
       }
       bool inside = false, outside = false;
-      this->Solid.AroundEdge(e.Cell, e.Slots / 4, e.Slots % 4,
-        [&](int64_t cell)
+      this->Solid.AroundEdge(e.Cell,
+        e.Slots / 4,
+        e.Slots % 4,
+        [&](int64_t cell, int)
         {
           (this->Solid.IsInside(cell) ? inside : outside) = true;
           return inside && outside;
@@ -852,11 +1019,269 @@ private:
   std::vector<int64_t> Stack, Fill;
   std::unordered_map<int64_t, int64_t> Label;
   std::vector<int32_t> EdgeEnds;
+  std::vector<std::pair<int32_t, int64_t>> VertexCells;
 };
 
-// The exterior facets as oriented triangles (outward from the solid). In a positively oriented cell
-// (v0, v1, v2, v3), the increasing-slot triple without vertex j faces away from v_j when j is odd
-// and towards it when j is even.
+// Folds left by the peel: boundary edges whose two triangles face opposite ways (outward normals
+// more than 90 degrees apart). On samples of smooth surfaces the peel leaves thin flaps of flat
+// tetrahedra (nearly cospherical points) kept while a neighbour went, so that a triangle of the
+// flap faces into the solid (dark specks when shaded). Run moves cells next to the folds to the
+// other state (all the inside or all the outside cells around a fold's edge, or one cell on either
+// side of its two triangles) when GroupPeeler::Toggle allows it (same topology, manifold, every
+// point still on the boundary) and the edges of the moved cells then have fewer folds, or as many
+// and less bending (the sum of 1 - cosine of the angle between the two normals, lower by 1e-6 at
+// least). Each move lowers the whole surface's (folds, bending), so the pass ends; it is also
+// bounded by the number of cells.
+class Unfolder
+{
+public:
+  Unfolder(PeelSolid& solid, GroupPeeler& groups)
+    : Solid(solid)
+    , DT(solid.DT)
+    , Groups(groups)
+  {
+  }
+
+  // Returns the number of moves.
+  int64_t Run()
+  {
+    this->QueueAllFolds();
+    int64_t moves = 0;
+    const int64_t maximumMoves = this->DT.GetNumberOfCells();
+    while (!this->Work.empty() && moves < maximumMoves)
+    {
+      const EdgeRef e = this->Work.back();
+      this->Work.pop_back();
+      if (!this->Solid.IsFold(e.Cell, e.I, e.J))
+      {
+        continue;
+      }
+      this->ListMoves(e);
+      for (const std::vector<int64_t>& move : this->Moves)
+      {
+        // One cell: the sculpting rules (cheap) first; a fan: the group checks, if it helps.
+        const bool single = move.size() == 1;
+        if (single && !this->Solid.MayToggle(move[0]))
+        {
+          continue;
+        }
+        if (this->Improves(move) && (single || this->Groups.Toggle(move)))
+        {
+          ++moves;
+          if (single)
+          {
+            this->Solid.SetInside(move[0], !this->Solid.IsInside(move[0]));
+          }
+          for (int64_t c : move)
+          {
+            this->QueueFolds(c);
+          }
+          break;
+        }
+      }
+    }
+    return moves;
+  }
+
+private:
+  struct EdgeRef
+  {
+    int64_t Cell;
+    int I, J; // slots of the edge's end points in Cell
+  };
+
+  // Queue every fold: the exterior facets' edges, sorted, pair up the two triangles on each edge.
+  void QueueAllFolds()
+  {
+    struct HalfEdge
+    {
+      int32_t V, W;
+      EdgeRef Ref;
+      std::array<double, 3> Normal;
+    };
+    std::vector<HalfEdge> halves;
+    const int64_t cells = this->DT.GetNumberOfCells();
+    for (int64_t c = 0; c < cells; ++c)
+    {
+      for (int j = 0; j < 4; ++j)
+      {
+        if (!this->Solid.IsExterior(c, j))
+        {
+          continue;
+        }
+        const std::array<double, 3> normal = this->Solid.FacetNormal(c, j);
+        for (int a = 0; a < 4; ++a)
+        {
+          for (int b = a + 1; b < 4; ++b)
+          {
+            if (a != j && b != j)
+            {
+              const int32_t v = this->DT.Vertex(c, a), w = this->DT.Vertex(c, b);
+              halves.push_back({ std::min(v, w), std::max(v, w), { c, a, b }, normal });
+            }
+          }
+        }
+      }
+    }
+    std::sort(halves.begin(),
+      halves.end(),
+      [](const HalfEdge& x, const HalfEdge& y) { return std::tie(x.V, x.W) < std::tie(y.V, y.W); });
+    for (size_t k = 0; k + 1 < halves.size(); ++k)
+    {
+      const HalfEdge& x = halves[k];
+      const HalfEdge& y = halves[k + 1];
+      if (x.V == y.V && x.W == y.W &&
+        x.Normal[0] * y.Normal[0] + x.Normal[1] * y.Normal[1] + x.Normal[2] * y.Normal[2] < 0.0)
+      {
+        this->Work.push_back(x.Ref); // (an edge of more than two triangles is checked again)
+      }
+    }
+  }
+
+  // The moves tried at the fold e, cheapest first: each finite cell on either side of its two
+  // boundary triangles alone, then all the inside cells around its edge and all the outside ones
+  // (when finite), when they are 2 to MaximumFan cells (more were not seen to help).
+  void ListMoves(const EdgeRef& e)
+  {
+    this->Moves.clear();
+    this->Fans[0].clear();
+    this->Fans[1].clear();
+    bool infinite = false;
+    this->Solid.AroundEdge(e.Cell,
+      e.I,
+      e.J,
+      [&](int64_t cell, int cross)
+      {
+        const bool inside = this->Solid.IsInside(cell);
+        this->Fans[inside ? 0 : 1].push_back(cell);
+        infinite = infinite || this->DT.IsInfinite(cell);
+        const int64_t next = this->DT.Neighbor(cell, cross);
+        if (inside != this->Solid.IsInside(next))
+        {
+          for (int64_t c : { cell, next })
+          {
+            if (!this->DT.IsInfinite(c))
+            {
+              this->Moves.push_back({ c });
+            }
+          }
+        }
+        return false;
+      });
+    for (int side = 0; side < 2; ++side)
+    {
+      const size_t size = this->Fans[side].size();
+      if (size >= 2 && size <= MaximumFan && !(side == 1 && infinite))
+      {
+        this->Moves.push_back(this->Fans[side]);
+      }
+    }
+  }
+
+  // Whether moving the cells to the other state leaves fewer folds among their edges, or as many
+  // and less bending (the cells are moved and moved back).
+  bool Improves(const std::vector<int64_t>& cells)
+  {
+    double bendBefore = 0.0, bendAfter = 0.0;
+    if (cells.size() == 1)
+    {
+      // One walk around each edge for both states.
+      int64_t before = 0, after = 0;
+      for (int i = 0; i < 3; ++i)
+      {
+        for (int j = i + 1; j < 4; ++j)
+        {
+          double cosine[2];
+          this->Solid.EdgeCosines(cells[0], i, j, cells[0], cosine);
+          Tally(cosine[0], before, bendBefore);
+          Tally(cosine[1], after, bendAfter);
+        }
+      }
+      return after < before || (after == before && bendAfter < bendBefore - 1e-6);
+    }
+    const int64_t before = this->CountFolds(cells, bendBefore);
+    for (int64_t c : cells)
+    {
+      this->Solid.SetInside(c, !this->Solid.IsInside(c));
+    }
+    const int64_t after = this->CountFolds(cells, bendAfter);
+    for (int64_t c : cells)
+    {
+      this->Solid.SetInside(c, !this->Solid.IsInside(c));
+    }
+    return after < before || (after == before && bendAfter < bendBefore - 1e-6);
+  }
+
+  // The folds among the edges of the cells, and their bending (1 - cosine, summed over the edges
+  // with two boundary triangles).
+  int64_t CountFolds(const std::vector<int64_t>& cells, double& bend)
+  {
+    this->Edges.clear();
+    for (int64_t c : cells)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        for (int j = i + 1; j < 4; ++j)
+        {
+          const int32_t v = this->DT.Vertex(c, i), w = this->DT.Vertex(c, j);
+          this->Edges.push_back({ std::min(v, w), std::max(v, w), { c, i, j } });
+        }
+      }
+    }
+    std::sort(this->Edges.begin(),
+      this->Edges.end(),
+      [](const KeyedEdge& a, const KeyedEdge& b)
+      { return std::tie(a.V, a.W) < std::tie(b.V, b.W); });
+    int64_t folds = 0;
+    for (size_t k = 0; k < this->Edges.size(); ++k)
+    {
+      const KeyedEdge& e = this->Edges[k];
+      if (k == 0 || this->Edges[k - 1].V != e.V || this->Edges[k - 1].W != e.W)
+      {
+        Tally(this->Solid.EdgeCosine(e.Ref.Cell, e.Ref.I, e.Ref.J), folds, bend);
+      }
+    }
+    return folds;
+  }
+
+  // Count an edge of the given cosine (EdgeCosine) in the folds and the bending.
+  static void Tally(double cosine, int64_t& folds, double& bend)
+  {
+    folds += cosine < 0.0 ? 1 : 0;
+    bend += cosine <= 1.0 ? 1.0 - cosine : 0.0;
+  }
+
+  // Queue the folds among the edges of c.
+  void QueueFolds(int64_t c)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = i + 1; j < 4; ++j)
+      {
+        if (this->Solid.IsFold(c, i, j))
+        {
+          this->Work.push_back({ c, i, j });
+        }
+      }
+    }
+  }
+
+  struct KeyedEdge
+  {
+    int32_t V, W;
+    EdgeRef Ref;
+  };
+  PeelSolid& Solid;
+  const pcs::Delaunay3D& DT;
+  GroupPeeler& Groups;
+  std::vector<EdgeRef> Work;
+  std::vector<KeyedEdge> Edges;
+  std::vector<std::vector<int64_t>> Moves;
+  std::vector<int64_t> Fans[2];
+  static constexpr size_t MaximumFan = 8;
+};
+
+// The exterior facets as oriented triangles (outward from the solid).
 std::vector<std::array<int32_t, 3>> ExteriorTriangles(const PeelSolid& solid)
 {
   std::vector<std::array<int32_t, 3>> triangles;
@@ -873,19 +1298,7 @@ std::vector<std::array<int32_t, 3>> ExteriorTriangles(const PeelSolid& solid)
       {
         continue;
       }
-      std::array<int32_t, 3> t;
-      for (int k = 0, m = 0; k < 4; ++k)
-      {
-        if (k != j)
-        {
-          t[m++] = solid.DT.Vertex(c, k);
-        }
-      }
-      if (j % 2 == 0)
-      {
-        std::swap(t[1], t[2]);
-      }
-      triangles.push_back(t);
+      triangles.push_back(solid.FacetTriangle(c, j));
     }
   }
   return triangles;
@@ -937,6 +1350,7 @@ int vtkPerimeterPeelSurface::RequestData(
   output->GetPointData()->AddArray(used);
 
   vtkIdType iterations = 0, removedCount = 0, groupCount = 0, tetrahedra = 0, outliers = 0;
+  vtkIdType unfoldMoves = 0;
   double finalThreshold = 0.0, delaunayTime = 0.0, peelTime = 0.0;
   double delaunayCPUTime = 0.0, peelCPUTime = 0.0;
   std::clock_t startCPU = std::clock();
@@ -959,6 +1373,7 @@ int vtkPerimeterPeelSurface::RequestData(
     pcs::AddFieldCount(fd, "NumberOfTetrahedra", tetrahedra);
     pcs::AddFieldCount(fd, "NumberOfRemovedTetrahedra", removedCount);
     pcs::AddFieldCount(fd, "NumberOfGroupRemovals", groupCount);
+    pcs::AddFieldCount(fd, "NumberOfUnfoldingMoves", unfoldMoves);
     pcs::AddFieldCount(fd, "NumberOfTriangles", polys->GetNumberOfCells());
     pcs::AddFieldCount(fd, "NumberOfUsedPoints", usedPoints);
     pcs::AddFieldCount(fd, "NumberOfUnusedPoints", numberOfPoints - usedPoints);
@@ -1380,6 +1795,11 @@ int vtkPerimeterPeelSurface::RequestData(
   }
   this->UpdateProgress(0.9);
 
+  if (groups)
+  {
+    // Folds: flaps of flat tetrahedra with a triangle facing into the solid (see Unfolder).
+    unfoldMoves = Unfolder(solid, *groups).Run();
+  }
   std::vector<std::array<int32_t, 3>> triangles = ExteriorTriangles(solid);
 
   vtkNew<vtkTypeInt32Array> connectivity;

@@ -14,8 +14,10 @@
 //   >= 99 %, and its cup stays hollow (points on the axis inside the cup are outside the solid);
 // - dense random samples (100,000 points): spheres genus 0 (no spurious handle), a torus genus 1;
 // - noisy random samples (20,000 points of the sphere and the torus, Gaussian noise of 0.1 mean
-//   spacing): closed, manifold, genus 0 / 1, >= 97 % of the points, volume within 3 % of the true
-//   volume (not hollowed), every triangle centroid within one mean spacing of the surface;
+//   spacing) and the same points without noise: closed, manifold, genus 0 / 1, >= 97 % of the
+//   points, volume within 3 % of the true volume (not hollowed), every triangle centroid within
+//   one mean spacing of the surface, at most 12 % (noisy) / 4 % (no noise) of the triangles facing
+//   into the solid (flaps of flat tetrahedra; 17 % on the noisy sphere before the unfolding pass);
 // - ManifoldOutput off (the paper's peeling): no point left in no tetrahedron;
 // - the field data agree with the mesh (triangles, used points, Used array).
 #include "vtkPerimeterPeelSurface.h"
@@ -307,7 +309,10 @@ bool CheckGradedTorus()
 // local spacings, above the cave limit) and hollowed both shapes: a double layer, closed,
 // manifold, genus 0 or 1 and over 95 % of the points, enclosing 0.7 % of the sphere's volume and
 // 4 % of the torus's. Now: within 3 % of the true volume, every triangle within one spacing of the
-// surface, most points used (a few lie under the noisy layer, inside the solid).
+// surface, most points used (a few lie under the noisy layer, inside the solid). The same shapes
+// without noise, too. Triangles facing into the solid (normal against the surface's, thin flaps of
+// flat tetrahedra): before the unfolding pass (rule 6 of the class docs) 6,765 of 39,440 on the
+// noisy sphere; after about 10 % with noise and 2.3 % without (none on the exact torus).
 bool CheckNoisy()
 {
   const int n = 20000;
@@ -318,6 +323,7 @@ bool CheckNoisy()
     double Spacing, Volume;
     int Genus;
     std::function<double(const double*)> Distance;
+    std::function<void(const double*, double*)> Outward; // the surface's normal near a point
   };
   const Shape shapes[] = {
     { "noisy sphere",
@@ -325,57 +331,80 @@ bool CheckNoisy()
       std::sqrt(4 * M_PI / n),
       4 * M_PI / 3,
       0,
-      [](const double* p) { return std::fabs(std::sqrt(vtkMath::Dot(p, p)) - 1.0); } },
+      [](const double* p) { return std::fabs(std::sqrt(vtkMath::Dot(p, p)) - 1.0); },
+      [](const double* p, double* n) { vtkMath::Assign(p, n); } },
     { "noisy torus",
       TorusPoints(n, 7),
       std::sqrt(4 * M_PI * M_PI * 0.35 / n),
       2 * M_PI * M_PI * 0.35 * 0.35,
       1,
       [](const double* p)
-      { return std::fabs(std::hypot(std::hypot(p[0], p[1]) - 1.0, p[2]) - 0.35); } },
+      { return std::fabs(std::hypot(std::hypot(p[0], p[1]) - 1.0, p[2]) - 0.35); },
+      [](const double* p, double* n)
+      {
+        const double r = std::hypot(p[0], p[1]);
+        n[0] = p[0] - p[0] / r;
+        n[1] = p[1] - p[1] / r;
+        n[2] = p[2];
+      } },
   };
   bool ok = true;
   for (const Shape& shape : shapes)
   {
-    std::vector<double> xyz = shape.Points;
-    std::mt19937_64 rng(11);
-    std::normal_distribution<double> noise(0.0, 0.1 * shape.Spacing);
-    for (double& x : xyz)
+    for (const double sigma : { 0.1, 0.0 })
     {
-      x += noise(rng);
-    }
-    auto mesh = Peel(xyz);
-    auto q = Measure(mesh);
-    const std::string label = shape.Label;
-    PCS_CHECK(FieldValue(q, "NumberOfBoundaryEdges") == 0, label << ": closed");
-    PCS_CHECK(FieldValue(q, "NumberOfNonManifoldEdges") == 0 &&
-        FieldValue(q, "NumberOfNonManifoldVertices") == 0,
-      label << ": manifold");
-    PCS_CHECK(FieldValue(q, "NumberOfConnectedComponents") == 1, label << ": one component");
-    PCS_CHECK(FieldValue(q, "Genus") == shape.Genus, label << ": genus " << FieldValue(q, "Genus"));
-    PCS_CHECK(FieldValue(q, "OrientationConsistency") == 1.0, label << ": orientation");
-    PCS_CHECK(
-      FieldValue(q, "Coverage") >= 0.97, label << ": coverage " << FieldValue(q, "Coverage"));
-    const double volume = SignedVolume6(mesh) / 6.0 / shape.Volume;
-    double farthest = 0.0;
-    for (const auto& t : pcstest::CellTuples<3>(mesh.GetPointer()))
-    {
-      double c[3] = { 0, 0, 0 };
-      for (int k = 0; k < 3; ++k)
+      std::vector<double> xyz = shape.Points;
+      std::mt19937_64 rng(11);
+      std::normal_distribution<double> noise(0.0, sigma * shape.Spacing);
+      for (double& x : xyz)
       {
-        double p[3];
-        mesh->GetPoint(t[k], p);
-        vtkMath::MultiplyScalar(p, 1.0 / 3.0);
-        vtkMath::Add(c, p, c);
+        x += sigma > 0.0 ? noise(rng) : 0.0;
       }
-      farthest = std::max(farthest, shape.Distance(c) / shape.Spacing);
+      auto mesh = Peel(xyz);
+      auto q = Measure(mesh);
+      const std::string label = std::string(shape.Label) + (sigma > 0.0 ? "" : " (no noise)");
+      PCS_CHECK(FieldValue(q, "NumberOfBoundaryEdges") == 0, label << ": closed");
+      PCS_CHECK(FieldValue(q, "NumberOfNonManifoldEdges") == 0 &&
+          FieldValue(q, "NumberOfNonManifoldVertices") == 0,
+        label << ": manifold");
+      PCS_CHECK(FieldValue(q, "NumberOfConnectedComponents") == 1, label << ": one component");
+      PCS_CHECK(
+        FieldValue(q, "Genus") == shape.Genus, label << ": genus " << FieldValue(q, "Genus"));
+      PCS_CHECK(FieldValue(q, "OrientationConsistency") == 1.0, label << ": orientation");
+      PCS_CHECK(
+        FieldValue(q, "Coverage") >= 0.97, label << ": coverage " << FieldValue(q, "Coverage"));
+      const double volume = SignedVolume6(mesh) / 6.0 / shape.Volume;
+      double farthest = 0.0;
+      int inward = 0, triangles = 0;
+      for (const auto& t : pcstest::CellTuples<3>(mesh.GetPointer()))
+      {
+        double c[3] = { 0, 0, 0 }, p[3][3];
+        for (int k = 0; k < 3; ++k)
+        {
+          mesh->GetPoint(t[k], p[k]);
+          vtkMath::Add(c, p[k], c);
+        }
+        vtkMath::MultiplyScalar(c, 1.0 / 3.0);
+        farthest = std::max(farthest, shape.Distance(c) / shape.Spacing);
+        double u[3], v[3], normal[3], outward[3];
+        vtkMath::Subtract(p[1], p[0], u);
+        vtkMath::Subtract(p[2], p[0], v);
+        vtkMath::Cross(u, v, normal);
+        shape.Outward(c, outward);
+        inward += vtkMath::Dot(normal, outward) < 0.0 ? 1 : 0;
+        ++triangles;
+      }
+      const double inwardFraction = triangles > 0 ? double(inward) / triangles : 1.0;
+      std::cout << label << ": volume / true volume " << volume << ", farthest triangle "
+                << farthest << " spacings, coverage " << FieldValue(q, "Coverage") << ", genus "
+                << FieldValue(q, "Genus") << ", facing inwards " << inward << " of " << triangles
+                << std::endl;
+      PCS_CHECK(std::fabs(volume - 1.0) <= 0.03, label << ": volume ratio " << volume);
+      PCS_CHECK(farthest <= 1.0, label << ": farthest triangle " << farthest << " spacings");
+      PCS_CHECK(inwardFraction <= (sigma > 0.0 ? 0.12 : 0.04),
+        label << ": " << inward << " of " << triangles << " triangles face inwards");
+      ok = CheckConsistentFields(label.c_str(), mesh) && ok;
     }
-    std::cout << label << ": volume / true volume " << volume << ", farthest triangle " << farthest
-              << " spacings, coverage " << FieldValue(q, "Coverage") << ", genus "
-              << FieldValue(q, "Genus") << std::endl;
-    PCS_CHECK(std::fabs(volume - 1.0) <= 0.03, label << ": volume ratio " << volume);
-    PCS_CHECK(farthest <= 1.0, label << ": farthest triangle " << farthest << " spacings");
-    ok = CheckConsistentFields(label.c_str(), mesh) && ok;
   }
   return ok;
 }

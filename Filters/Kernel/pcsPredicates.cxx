@@ -973,6 +973,14 @@ int InSphereExact(
 // Orient2D, differences with c: D = acx bcy - acy bcx. Degree 2, 2 monomials.
 int Orient2DExact(const double* a, const double* b, const double* c)
 {
+  // Two equal points: the determinant is exactly zero. The common undecided case of the filter
+  // (e.g. the projected tests of vtkCDTAdvancingFront, where a segment ends at a vertex of the
+  // triangle it is classified against), answered without the expansions.
+  if ((a[0] == c[0] && a[1] == c[1]) || (b[0] == c[0] && b[1] == c[1]) ||
+    (a[0] == b[0] && a[1] == b[1]))
+  {
+    return 0;
+  }
   double x[2][2], t[2][2];
   TwoSum(a[0], -c[0], x[0][0], t[0][0]);
   TwoSum(a[1], -c[1], x[0][1], t[0][1]);

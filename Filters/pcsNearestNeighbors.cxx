@@ -100,6 +100,47 @@ bool SpreadsAlongCurve(const double* xyz,
 }
 }
 
+void PointBins::Build(vtkStaticPointLocator* locator,
+  const double* xyz,
+  int32_t n,
+  bool withCoordinates)
+{
+  locator->GetDivisions(this->Divisions);
+  const double* bounds = locator->GetBounds();
+  double spacing[3];
+  locator->GetSpacing(spacing);
+  for (int c = 0; c < 3; ++c)
+  {
+    this->Origin[c] = bounds[2 * c];
+    this->Inverse[c] = spacing[c] > 0.0 ? 1.0 / spacing[c] : 0.0;
+  }
+  const int64_t nx = this->Divisions[0];
+  const int64_t nxy = nx * this->Divisions[1];
+  const int64_t buckets = nxy * this->Divisions[2];
+  std::vector<int64_t> bucketOf(static_cast<size_t>(std::max(n, 0)));
+  this->Offsets.assign(static_cast<size_t>(buckets) + 1, 0);
+  for (int32_t i = 0; i < n; ++i)
+  {
+    const double* p = xyz + 3 * static_cast<size_t>(i);
+    bucketOf[i] = this->BucketIndex(p[0], 0) + nx * this->BucketIndex(p[1], 1) +
+      nxy * this->BucketIndex(p[2], 2);
+    ++this->Offsets[bucketOf[i] + 1];
+  }
+  std::partial_sum(this->Offsets.begin(), this->Offsets.end(), this->Offsets.begin());
+  std::vector<int32_t> fill(this->Offsets.begin(), this->Offsets.end() - 1);
+  this->Ids.resize(static_cast<size_t>(std::max(n, 0)));
+  this->XYZ.resize(withCoordinates ? 3 * this->Ids.size() : 0);
+  for (int32_t i = 0; i < n; ++i)
+  {
+    const int32_t slot = fill[bucketOf[i]]++;
+    this->Ids[slot] = i;
+    if (withCoordinates)
+    {
+      std::copy_n(xyz + 3 * static_cast<size_t>(i), 3, &this->XYZ[3 * static_cast<size_t>(slot)]);
+    }
+  }
+}
+
 bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int32_t n, int k,
   std::vector<int32_t>& neighbors, const std::function<bool(double)>& progress)
 {
@@ -138,43 +179,17 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
     start = start > 0 && std::isfinite(start) ? start * 1e-3 : 1.0;
   }
 
-  // The candidates of a query are read from the locator's bucket grid directly: all points of
-  // the buckets that the cube around the ball overlaps, with their distances computed here on
-  // the packed coordinates. The ball is large enough when it holds more than k points (the query
-  // point included): the k nearest others are then among the candidates, whatever the cube adds
-  // beyond the ball. This is the bucket walk of FindPointsWithinRadius without its per-point
-  // virtual GetPoint and per-query BuildLocator (modification time) calls, which took about
-  // two thirds of the search's time. The bucket lists are made once, in one flat array (4 bytes
-  // per point and per bucket), by a counting sort of the points on the grid's own index
-  // formula (bucketIndex), the one the queries use for their bucket ranges: a point within r of
-  // p then lies in the range of p -/+ r (the formula is monotone), whichever bucket the locator
-  // itself filed it under. (Asking the locator bucket by bucket cost a BuildLocator
-  // modification-time check per bucket: 2 % of vtkLocalOptimumGrowth on 10^5 points.)
-  int divisions[3];
-  locator->GetDivisions(divisions);
-  const vtkIdType numberOfBuckets = locator->GetNumberOfBuckets();
-  double spacing[3];
-  locator->GetSpacing(spacing);
-  const double* box = locator->GetBounds();
-  double inverse[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    inverse[c] = spacing[c] > 0.0 ? 1.0 / spacing[c] : 0.0;
-  }
-  // The index along axis c of coordinate x, clamped to the grid: the locator's formula, monotone
-  // in x (NaN: 0).
-  auto bucketIndex = [&](double x, int c)
-  {
-    const double f = (x - box[2 * c]) * inverse[c];
-    return !(f > 0.0) ? 0 : (f >= divisions[c] ? divisions[c] - 1 : static_cast<int>(f));
-  };
-  auto bucketRange = [&](const double* p, double r, int c, int& lo, int& hi)
-  {
-    // At p -/+ r (a hair wider).
-    const double margin = r * (1.0 + 1e-9) + 1e-300;
-    lo = bucketIndex(p[c] - margin, c);
-    hi = bucketIndex(p[c] + margin, c);
-  };
+  // The candidates of a query are read from the locator's bucket grid directly (PointBins): all
+  // points of the buckets that the cube around the ball overlaps, with their distances computed
+  // here on the packed coordinates. The ball is large enough when it holds more than k points
+  // (the query point included): the k nearest others are then among the candidates, whatever the
+  // cube adds beyond the ball. This is the bucket walk of FindPointsWithinRadius without its
+  // per-point virtual GetPoint and per-query BuildLocator (modification time) calls, which took
+  // about two thirds of the search's time.
+  PointBins bins;
+  bins.Build(locator, xyz, n, /*withCoordinates=*/false);
+  const int* divisions = bins.GetDivisions();
+  const vtkIdType numberOfBuckets = bins.GetNumberOfBuckets();
   std::vector<int32_t> bucketStart(static_cast<size_t>(numberOfBuckets) + 1, 0);
   // Exact duplicates share one entry: the points of a bucket are sorted by coordinates (then id)
   // and each run of equal points becomes one entry with its member ids in ascending order. A
@@ -186,35 +201,18 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
   std::vector<double> entryXYZ;
   members.reserve(static_cast<size_t>(n));
   {
-    std::vector<vtkIdType> bucketOf(static_cast<size_t>(n));
-    for (int32_t i = 0; i < n; ++i)
-    {
-      const double* q = xyz + 3 * static_cast<size_t>(i);
-      bucketOf[i] = bucketIndex(q[0], 0) +
-        divisions[0] *
-          (bucketIndex(q[1], 1) + static_cast<vtkIdType>(divisions[1]) * bucketIndex(q[2], 2));
-      ++bucketStart[bucketOf[i] + 1];
-    }
-    std::partial_sum(bucketStart.begin(), bucketStart.end(), bucketStart.begin());
-    std::vector<int32_t> byBucket(static_cast<size_t>(n));
-    {
-      std::vector<int32_t> fill(bucketStart.begin(), bucketStart.end() - 1);
-      for (int32_t i = 0; i < n; ++i)
-      {
-        byBucket[fill[bucketOf[i]]++] = i;
-      }
-    }
+    std::vector<int32_t> byBucket(bins.GetIds(), bins.GetIds() + n);
     auto before = [xyz](int32_t a, int32_t b)
     {
       const int c =
         ComparePositions(xyz + 3 * static_cast<size_t>(a), xyz + 3 * static_cast<size_t>(b), 3);
       return c != 0 ? c < 0 : a < b;
     };
-    // Bucket b holds byBucket[first, last) (bucketStart, rewritten to entry indices on the way).
+    // Bucket b holds byBucket[first, last); bucketStart[b + 1] gets its last entry index + 1.
     int32_t first = 0;
     for (vtkIdType b = 0; b < numberOfBuckets; ++b)
     {
-      const int32_t last = bucketStart[b + 1];
+      const int32_t last = bins.GetOffsets()[b + 1];
       int32_t* ids = byBucket.data() + first;
       const int32_t count = last - first;
       if (count > 1)
@@ -267,10 +265,7 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
           all = attempt > 200;
           found.clear();
           int lo[3], hi[3];
-          for (int c = 0; c < 3; ++c)
-          {
-            bucketRange(p, radius, c, lo[c], hi[c]);
-          }
+          bins.BucketRange(p, radius, lo, hi);
           const double r2 = radius * radius;
           vtkIdType inside = 0;
           for (int bz = lo[2]; bz <= hi[2]; ++bz)

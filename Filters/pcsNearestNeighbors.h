@@ -11,6 +11,99 @@ class vtkStaticPointLocator;
 
 namespace pcs
 {
+/// The points of a cloud filed into the bucket grid of a vtkStaticPointLocator (its divisions
+/// and bounds) in flat arrays: the ids of each bucket contiguous, in id order, with their
+/// coordinates copied in the same order, so that a radius query reads memory in order and makes
+/// no virtual call per point (FindPointsWithinRadius' per-point GetPoint and per-call
+/// BuildLocator check). Bucket b = i + j nx + k nx ny, the locator's numbering. The points are
+/// sorted into the buckets by a counting sort on BucketIndex, the locator's index formula clamped
+/// to the grid; it is monotone, so the buckets that the box of a ball overlaps (BucketRange, a
+/// hair wider against rounding) hold every point within its radius, whichever bucket the locator
+/// itself files a point on a bucket boundary under: the answers are those of
+/// FindPointsWithinRadius (as a set). Memory: one int32 per bucket, one int32 and three doubles
+/// per point. Queries are thread safe.
+class PointBins
+{
+public:
+  /// Files the `n` points of `xyz` (packed x, y, z; the points `locator` was built on, in this
+  /// order) into the locator's grid. Without `withCoordinates` only the ids are filed (GetXYZ()
+  /// is then empty and ForEachPointWithinRadius may not be called).
+  void Build(vtkStaticPointLocator* locator,
+    const double* xyz,
+    int32_t n,
+    bool withCoordinates = true);
+
+  /// The index along axis c of coordinate v, clamped to [0, divisions - 1] (NaN: 0).
+  int BucketIndex(double v, int c) const
+  {
+    const double f = (v - this->Origin[c]) * this->Inverse[c];
+    return !(f > 0.0) ? 0
+                      : (f >= this->Divisions[c] ? this->Divisions[c] - 1 : static_cast<int>(f));
+  }
+
+  /// The buckets along each axis that the box x -/+ r (a hair wider) overlaps: low to high.
+  void BucketRange(const double* x, double r, int low[3], int high[3]) const
+  {
+    const double margin = r * (1.0 + 1e-9) + 1e-300;
+    for (int c = 0; c < 3; ++c)
+    {
+      low[c] = this->BucketIndex(x[c] - margin, c);
+      high[c] = this->BucketIndex(x[c] + margin, c);
+    }
+  }
+
+  int64_t GetNumberOfBuckets() const { return static_cast<int64_t>(this->Offsets.size()) - 1; }
+  const int* GetDivisions() const { return this->Divisions; }
+  /// Bucket b holds the slots [GetOffsets()[b], GetOffsets()[b + 1]) of GetIds() and GetXYZ().
+  const int32_t* GetOffsets() const { return this->Offsets.data(); }
+  const int32_t* GetIds() const { return this->Ids.data(); }
+  const double* GetXYZ() const { return this->XYZ.data(); }
+
+  /// Calls visit(id, d2) for each point within `radius` of x, in bucket order, with d2 its
+  /// squared distance to x (|p - x|^2 summed over x, y, z), until visit returns false. Returns
+  /// false when visit stopped the walk.
+  template<typename Visit>
+  bool ForEachPointWithinRadius(double radius, const double* x, Visit&& visit) const
+  {
+    if (this->Offsets.size() < 2)
+    {
+      return true;
+    }
+    int low[3], high[3];
+    this->BucketRange(x, radius, low, high);
+    const double r2 = radius * radius;
+    const int64_t nx = this->Divisions[0];
+    const int64_t nxy = nx * this->Divisions[1];
+    for (int k = low[2]; k <= high[2]; ++k)
+    {
+      for (int j = low[1]; j <= high[1]; ++j)
+      {
+        const int64_t row = j * nx + k * nxy;
+        const int32_t end = this->Offsets[row + high[0] + 1];
+        for (int32_t m = this->Offsets[row + low[0]]; m < end; ++m)
+        {
+          const double* p = &this->XYZ[3 * static_cast<size_t>(m)];
+          const double d[3] = { p[0] - x[0], p[1] - x[1], p[2] - x[2] };
+          const double d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+          if (d2 <= r2 && !visit(this->Ids[m], d2))
+          {
+            return false;
+          }
+        }
+      }
+    }
+    return true;
+  }
+
+private:
+  int Divisions[3] = { 1, 1, 1 };
+  double Origin[3] = { 0, 0, 0 };
+  double Inverse[3] = { 0, 0, 0 };
+  std::vector<int32_t> Offsets;
+  std::vector<int32_t> Ids;
+  std::vector<double> XYZ;
+};
+
 /// For each of the `n` points of `xyz` (packed x, y, z; `locator` built on exactly these points,
 /// in this order), its `k` nearest other points, nearest first, ties broken by the smaller id:
 /// `neighbors` gets n * k ids (-1 where a point has fewer than k others). Exact duplicates of a

@@ -15,7 +15,6 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -27,7 +26,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPThreadLocal.h"
-#include "vtkSMPThreadLocalObject.h"
 #include "vtkSMPTools.h"
 #include "vtkStaticPointLocator.h"
 #include "vtkTypeInt32Array.h"
@@ -297,156 +295,23 @@ void BuildSurfaceLocator(vtkStaticPointLocator* locator, vtkPolyData* cloud, Id 
   locator->BuildLocator();
 }
 
-//------------------------------------------------------------------------------------------------
-// The points within a radius, found in the bins of the vtkStaticPointLocator (its divisions and
-// bounds) held in flat arrays: the ids of each row of bins contiguous, with their coordinates, so
-// that a query reads memory in order and makes no virtual call per point; the front makes two
-// such queries per candidate triangle, which made FindPointsWithinRadius more than 40 % of the
-// filter's time. Bucket b holds the points of bin (i, j, k) with b = i + j nx + k nx ny (the
-// locator's numbering). The points are sorted into the bins here (a counting sort, in id order),
-// by Index, the bin of a coordinate clamped to the grid; Index is monotone, so the bins a query
-// visits (those its box, widened by a hair against rounding, overlaps) hold every point within
-// its radius: the answers are those of FindPointsWithinRadius (as a set) whatever bin the locator
-// itself gives a point on a bin boundary. (Copying the locator's own bucket lists, one
-// GetBucketIds call per bucket, took as long as building the locator.)
-class LocatorBins
+// The ids of the points within `radius` of x (in no particular order) filed in `bins`
+// (pcs::PointBins; the front makes two such queries per candidate triangle, which made
+// vtkStaticPointLocator::FindPointsWithinRadius more than 40 % of the filter's time).
+void FindPointsWithinRadius(const pcs::PointBins& bins,
+  double radius,
+  const double* x,
+  std::vector<Id>& result)
 {
-public:
-  void Build(vtkStaticPointLocator* locator, const double* xyz, Id n)
-  {
-    this->Locator = locator;
-    this->Points = xyz;
-    this->Valid = false;
-    locator->GetDivisions(this->Divisions);
-    const double* bounds = locator->GetBounds();
-    const double* spacing = locator->GetSpacing();
-    const int64_t buckets =
-      int64_t(this->Divisions[0]) * int64_t(this->Divisions[1]) * int64_t(this->Divisions[2]);
-    if (buckets <= 0 || buckets > 8 * int64_t(n) + 1024)
+  result.clear();
+  bins.ForEachPointWithinRadius(radius,
+    x,
+    [&result](Id id, double)
     {
-      return;
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      this->Origin[c] = bounds[2 * c];
-      this->Inverse[c] = spacing[c] > 0.0 ? 1.0 / spacing[c] : 0.0;
-    }
-    const int64_t nx = this->Divisions[0];
-    const int64_t nxy = nx * this->Divisions[1];
-    auto bucketOf = [&](Id id)
-    {
-      const double* p = xyz + 3 * static_cast<size_t>(id);
-      return this->Clamped(p[0], 0) + nx * this->Clamped(p[1], 1) + nxy * this->Clamped(p[2], 2);
-    };
-    this->Offsets.assign(static_cast<size_t>(buckets) + 1, 0);
-    for (Id id = 0; id < n; ++id)
-    {
-      ++this->Offsets[bucketOf(id) + 1];
-    }
-    for (int64_t b = 0; b < buckets; ++b)
-    {
-      this->Offsets[b + 1] += this->Offsets[b];
-    }
-    std::vector<int64_t> fill(this->Offsets.begin(), this->Offsets.end() - 1);
-    this->Ids.resize(static_cast<size_t>(n));
-    this->XYZ.resize(3 * static_cast<size_t>(n));
-    for (Id id = 0; id < n; ++id)
-    {
-      const int64_t slot = fill[bucketOf(id)]++;
-      this->Ids[slot] = id;
-      std::copy_n(xyz + 3 * static_cast<size_t>(id), 3, &this->XYZ[3 * slot]);
-    }
-    this->Valid = true;
-  }
-
-  // Calls visit(id, d2) for each point within `radius` of x, in no particular order, with d2 its
-  // squared distance to x (the value Distance2(point, x) gives), until visit returns false.
-  // Returns false when visit stopped the walk. `scratch` serves the locator's query when the bins
-  // were not built (thread safe with one scratch per thread).
-  template<typename Visit>
-  bool ForEachPointWithinRadius(double radius,
-    const double* x,
-    vtkIdList* scratch,
-    Visit&& visit) const
-  {
-    if (!this->Valid)
-    {
-      this->Locator->FindPointsWithinRadius(radius, x, scratch);
-      for (vtkIdType k = 0; k < scratch->GetNumberOfIds(); ++k)
-      {
-        const vtkIdType id = scratch->GetId(k);
-        if (!visit(static_cast<Id>(id), Distance2(this->Points + 3 * id, x)))
-        {
-          return false;
-        }
-      }
+      result.push_back(id);
       return true;
-    }
-    int low[3], high[3];
-    const double margin = radius * (1.0 + 1e-9);
-    for (int c = 0; c < 3; ++c)
-    {
-      low[c] = this->Clamped(x[c] - margin, c);
-      high[c] = this->Clamped(x[c] + margin, c);
-    }
-    const double r2 = radius * radius;
-    const int64_t nx = this->Divisions[0];
-    const int64_t nxy = nx * this->Divisions[1];
-    for (int k = low[2]; k <= high[2]; ++k)
-    {
-      for (int j = low[1]; j <= high[1]; ++j)
-      {
-        const int64_t row = j * nx + k * nxy;
-        const int64_t end = this->Offsets[row + high[0] + 1];
-        for (int64_t m = this->Offsets[row + low[0]]; m < end; ++m)
-        {
-          const double d2 = Distance2(&this->XYZ[3 * m], x);
-          if (d2 <= r2 && !visit(this->Ids[m], d2))
-          {
-            return false;
-          }
-        }
-      }
-    }
-    return true;
-  }
-
-  // The ids of the points within `radius` of x (in no particular order), as
-  // ForEachPointWithinRadius visits them.
-  void FindPointsWithinRadius(double radius,
-    const double* x,
-    std::vector<Id>& result,
-    vtkIdList* scratch) const
-  {
-    result.clear();
-    this->ForEachPointWithinRadius(radius,
-      x,
-      scratch,
-      [&result](Id id, double)
-      {
-        result.push_back(id);
-        return true;
-      });
-  }
-
-private:
-  // Bin index of coordinate v along axis c, clamped to [0, divisions - 1] (monotone in v).
-  int Clamped(double v, int c) const
-  {
-    const double f = std::floor((v - this->Origin[c]) * this->Inverse[c]);
-    return static_cast<int>(std::max(0.0, std::min(f, this->Divisions[c] - 1.0)));
-  }
-
-  vtkStaticPointLocator* Locator = nullptr;
-  const double* Points = nullptr; // the coordinates the locator was built on
-  bool Valid = false;
-  int Divisions[3] = { 1, 1, 1 };
-  double Origin[3] = { 0, 0, 0 };
-  double Inverse[3] = { 0, 0, 0 };
-  std::vector<int64_t> Offsets;
-  std::vector<Id> Ids;
-  std::vector<double> XYZ;
-};
+    });
+}
 
 //------------------------------------------------------------------------------------------------
 // Where to look for the mesh edges that may cross a new triangle (rule II.D.2). An edge u w of
@@ -592,7 +457,7 @@ public:
     const double* noiseBand,
     const std::vector<uint8_t>& status,
     vtkStaticPointLocator* locator,
-    const LocatorBins& bins,
+    const pcs::PointBins& bins,
     pcs::SurfaceMesh& mesh)
     : Self(self)
     , XYZ(xyz)
@@ -745,7 +610,7 @@ private:
   // would overflow the locator's squared distances).
   void FindPoints(double radius, const double* x, std::vector<Id>& result)
   {
-    this->Bins.FindPointsWithinRadius(std::min(radius, this->Diagonal), x, result, this->Scratch);
+    FindPointsWithinRadius(this->Bins, std::min(radius, this->Diagonal), x, result);
   }
 
   // Point x projected along its normal onto the plane through `origin` with normal `normal`
@@ -825,13 +690,12 @@ private:
   const double* NoiseBand; // per point: the height band of its sampling noise (II.C.2)
   const std::vector<uint8_t>& Status;
   vtkStaticPointLocator* Locator;
-  const LocatorBins& Bins;
+  const pcs::PointBins& Bins;
   double Diagonal = 0.0; // of the bounding box of the points, slightly enlarged
   pcs::SurfaceMesh& Mesh;
   std::deque<std::pair<Id, Id>> Edges;
 
   // Scratch.
-  vtkNew<vtkIdList> Scratch;
   std::vector<Id> Near;
   // The points stamped by the II.D walk of the triangle tested, with their squared distances to
   // its centroid.
@@ -1197,7 +1061,7 @@ bool Front::PassesProjectionTests(Id e0,
       this->P(p), np, this->P(e0), this->P(e1), this->P(third));
   };
   if (!this->Bins.ForEachPointWithinRadius(
-        std::min(edgeReach, this->Diagonal), centroid, this->Scratch, testPoint))
+        std::min(edgeReach, this->Diagonal), centroid, testPoint))
   {
     return false;
   }
@@ -1738,7 +1602,7 @@ int vtkCDTAdvancingFront::RequestData(
   cloud->SetPoints(localPoints);
   vtkNew<vtkStaticPointLocator> locator;
   BuildSurfaceLocator(locator, cloud, local);
-  LocatorBins bins;
+  pcs::PointBins bins;
   bins.Build(locator, xyz.data(), local);
   this->UpdateProgress(0.02);
   if (this->GetAbortExecute())
@@ -2044,12 +1908,10 @@ int vtkCDTAdvancingFront::RequestData(
     const double* binSize = locator->GetSpacing();
     const double widest = std::max({ binSize[0], binSize[1], binSize[2] });
     const double first = widest > 0.0 ? widest : diagonal;
-    vtkSMPThreadLocalObject<vtkIdList> lists;
     vtkSMPThreadLocal<std::vector<Id>> balls;
     vtkSMPTools::For(0, local,
       [&](vtkIdType begin, vtkIdType end)
       {
-        vtkIdList* scratch = lists.Local();
         std::vector<Id>& ball = balls.Local();
         for (vtkIdType k = begin; k < end; ++k)
         {
@@ -2077,7 +1939,7 @@ int vtkCDTAdvancingFront::RequestData(
           }
           for (double radius = first; nearest[k] < 0.0; radius *= 2.0)
           {
-            bins.FindPointsWithinRadius(radius, &xyz[3 * k], ball, scratch);
+            FindPointsWithinRadius(bins, radius, &xyz[3 * k], ball);
             double best = -1.0;
             for (Id j : ball)
             {

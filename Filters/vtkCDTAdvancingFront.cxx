@@ -475,6 +475,8 @@ public:
     , MaxIncident(status.size(), 0.0)
     , Adjacent(AdjacentCapacity * status.size(), None)
     , AdjacentCount(status.size(), 0)
+    , FailedHead(status.size(), None)
+    , FailedState(status.size(), 0)
   {
     double bounds[6];
     locator->GetDataSet()->GetBounds(bounds);
@@ -516,6 +518,7 @@ public:
   // edges of the removed triangles may be gone.
   void TrianglesRemoved()
   {
+    ++this->State;
     this->Blocked.Clear();
     std::fill(this->AdjacentCount.begin(), this->AdjacentCount.end(), 0);
     for (int64_t t = 0; t < this->Mesh.GetNumberOfTriangleIds(); ++t)
@@ -843,6 +846,14 @@ private:
   TripleSet Blocked;
   vtkIdType Steps = 0;
   int ProjectionTests = 0; // of the current edge
+
+  // Advance: a front edge is not examined again while nothing has changed since it found no
+  // third point (BestThirdPoint is a function of the mesh, the points and the parameters: it
+  // would find none again). Its last such edge per tail vertex (FailedHead) and the State then;
+  // State changes with every triangle added or removed and with every Advance (parameters).
+  std::vector<Id> FailedHead;
+  std::vector<uint64_t> FailedState;
+  uint64_t State = 1;
 };
 
 bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& parameters)
@@ -1237,6 +1248,7 @@ int64_t Front::Add(Id a, Id b, Id c, uint8_t origin)
   {
     return t;
   }
+  ++this->State;
   this->Origin.push_back(origin);
   const Id v[3] = { a, b, c };
   for (int i = 0; i < 3; ++i)
@@ -1281,6 +1293,7 @@ void Front::Progress()
 
 bool Front::Advance(const Parameters& parameters, bool relaxed, uint8_t origin)
 {
+  ++this->State;
   while (!this->Edges.empty() && !this->Aborted)
   {
     const Id a = this->Edges.front().first;
@@ -1291,12 +1304,21 @@ bool Front::Advance(const Parameters& parameters, bool relaxed, uint8_t origin)
       continue; // not a front edge (any more)
     }
     this->Progress();
+    if (this->FailedHead[a] == b && this->FailedState[a] == this->State)
+    {
+      continue; // tried since the last change, in vain
+    }
     // The new triangle traverses the edge the other way: (b, a, x).
     const Id opposite = this->Mesh.OppositeVertex(a, b);
     const Id x = this->BestThirdPoint(b, a, opposite, parameters, relaxed);
     if (x != None)
     {
       this->Add(b, a, x, origin);
+    }
+    else
+    {
+      this->FailedHead[a] = b;
+      this->FailedState[a] = this->State;
     }
   }
   return !this->Aborted;

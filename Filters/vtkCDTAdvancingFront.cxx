@@ -870,18 +870,16 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
   const bool agreementWaived = parameters.ShortTrianglesSkipNormalAgreement &&
     Distance2(this->P(e0), this->P(third)) <= parameters.LongEar * parameters.LongEar &&
     Distance2(this->P(e1), this->P(third)) <= parameters.LongEar * parameters.LongEar;
-  if ((!agreementWaived && (Dot(n0, n2) <= 0.0 || Dot(n1, n2) <= 0.0)) ||
-    !this->CanAdd(e0, e1, third))
+  if (!agreementWaived && (Dot(n0, n2) <= 0.0 || Dot(n1, n2) <= 0.0))
   {
     return false;
   }
-  // II.E: not collinear (exact), area large enough.
-  pcs::projected::TrianglePlane plane;
-  if (!plane.Set(this->P(e0), this->P(e1), this->P(third)))
-  {
-    return false;
-  }
-  const double* normal = plane.GetNormal();
+  // The tests on the triangle's floating-point normal come first (they reject the most
+  // candidates, for a few products each), then those on the mesh and the exact ones: all must
+  // pass, so their order does not change the answer.
+  // II.E: area large enough.
+  double normal[3];
+  pcs::projected::TriangleNormal(this->P(e0), this->P(e1), this->P(third), normal);
   const double length = std::sqrt(Dot(normal, normal));
   if (!(0.5 * length >= parameters.MinimumArea) || !(length > 0.0))
   {
@@ -920,6 +918,16 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
         return false;
       }
     }
+  }
+  // The mesh (topology), and II.E: not collinear (exact).
+  if (!this->CanAdd(e0, e1, third))
+  {
+    return false;
+  }
+  pcs::projected::TrianglePlane plane;
+  if (!plane.Set(this->P(e0), this->P(e1), this->P(third)))
+  {
+    return false;
   }
   // II.C.3: the third vertices of the two triangles of the edge lie on different sides of the
   // edge plane, unless their normals are opposite (Fig. 2b).

@@ -96,11 +96,7 @@ bool TrianglePlane::Set(const double* a, const double* b, const double* c)
       this->Vertices[i][k] = v[i][k];
     }
   }
-  const double e1[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-  const double e2[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-  this->Normal[0] = e1[1] * e2[2] - e1[2] * e2[1];
-  this->Normal[1] = e1[2] * e2[0] - e1[0] * e2[2];
-  this->Normal[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  TriangleNormal(a, b, c, this->Normal);
 
   // Drop the axis of the largest normal component; should the exact orientation of the
   // flattened triangle be zero there (a sliver whose rounded normal misleads), try the others.

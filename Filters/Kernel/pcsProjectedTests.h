@@ -63,6 +63,17 @@ enum class SegmentCase
   Crossing = 2
 };
 
+/// (b - a) x (c - a) in floating point (`normal`): the paper's triangle normal, not normalized
+/// (TrianglePlane::GetNormal gives the same values).
+inline void TriangleNormal(const double* a, const double* b, const double* c, double normal[3])
+{
+  const double e1[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double e2[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+  normal[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  normal[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  normal[2] = e1[0] * e2[1] - e1[1] * e2[0];
+}
+
 /// The plane of a non-degenerate triangle with exact in-plane sides. Points of (or projected
 /// onto) the plane are compared in the two coordinates kept when the axis of the largest
 /// component of the triangle's normal is dropped: a parallel projection along a coordinate

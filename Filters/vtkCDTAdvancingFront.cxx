@@ -418,6 +418,70 @@ private:
 };
 
 //------------------------------------------------------------------------------------------------
+// II.C.2 within the noise band: the band of each point, NoiseBandFactor times its height noise
+// (the residual of a quadric height field over its tangent plane fitted to the point and those
+// of its nearest others, in the table `neighbors`, whose normals are within 60 degrees of its
+// own, pcs::QuadricHeightNoise), at most `cap` (the mean spacing); 0 for a point that is not
+// usable or has no fit, and for every point when `factor` is 0 or there is no table. (With all
+// the neighbours, the points along the sharp rim of a lens, normals 100 degrees apart across
+// it, got a band of a mean spacing and the front left 68 boundary edges along the rim.) A band
+// is computed when first asked for: the front needs those of the vertices of the triangles that
+// fail II.C.2 or close a hole, and of the points and edges near those that close a hole, a
+// small share of the points of most clouds (the fit of every point was 7 % of the filter's time
+// on the elephant vertices).
+class NoiseBands
+{
+public:
+  NoiseBands(const double* xyz,
+    const double* normals,
+    const std::vector<int32_t>& neighbors,
+    int others,
+    const std::vector<uint8_t>& status,
+    double factor,
+    double cap)
+    : XYZ(xyz)
+    , Normals(normals)
+    , Neighbors(neighbors)
+    , Others(others)
+    , Status(status)
+    , Factor(factor)
+    , Cap(cap)
+    , Values(status.size(), factor > 0.0 && others > 0 ? -1.0 : 0.0)
+  {
+  }
+
+  double operator[](Id i) const
+  {
+    double& value = this->Values[i];
+    if (value < 0.0)
+    {
+      constexpr double SameSheetNormalDot = 0.5;
+      const double noise = this->Status[i] != Usable
+        ? 0.0
+        : pcs::QuadricHeightNoise(this->XYZ,
+            this->Normals,
+            this->XYZ + 3 * static_cast<size_t>(i),
+            this->Normals + 3 * static_cast<size_t>(i),
+            &this->Neighbors[static_cast<size_t>(i) * this->Others],
+            this->Others,
+            SameSheetNormalDot);
+      value = noise > 0.0 ? std::min(this->Factor * noise, this->Cap) : 0.0;
+    }
+    return value;
+  }
+
+private:
+  const double* XYZ;
+  const double* Normals;
+  const std::vector<int32_t>& Neighbors;
+  int Others;
+  const std::vector<uint8_t>& Status;
+  double Factor;
+  double Cap;
+  mutable std::vector<double> Values; // -1: not computed yet
+};
+
+//------------------------------------------------------------------------------------------------
 // The rules of paper 003 in one place: which triangles are valid, and the front that grows them.
 struct Parameters
 {
@@ -454,7 +518,7 @@ public:
     const double* normals,
     const double* scale,
     const double* stretch,
-    const double* noiseBand,
+    const NoiseBands& noiseBand,
     const std::vector<uint8_t>& status,
     vtkStaticPointLocator* locator,
     const pcs::PointBins& bins,
@@ -690,7 +754,7 @@ private:
   const double* Normals;
   const double* Scale; // per point: its local spacing over the mean spacing, at most 1
   const double* Stretch; // per point: its scan-line stretch (3 values), null when none has one
-  const double* NoiseBand; // per point: the height band of its sampling noise (II.C.2)
+  const NoiseBands& NoiseBand; // per point: the height band of its sampling noise (II.C.2)
   const std::vector<uint8_t>& Status;
   vtkStaticPointLocator* Locator;
   const pcs::PointBins& Bins;
@@ -2048,38 +2112,14 @@ int vtkCDTAdvancingFront::RequestData(
       });
   }
 
-  // II.C.2 within the noise band: NoiseBandFactor times the height noise of each point (the
-  // residual of a quadric height field over its tangent plane fitted to the point and those of
-  // its LocalSpacingNeighbors nearest others whose normals are within 60 degrees of its own,
-  // pcs::QuadricHeightNoise), at most the mean spacing. (With all the neighbours, the points
-  // along the sharp rim of a lens, normals 100 degrees apart across it, got a band of a mean
-  // spacing and the front left 68 boundary edges along the rim.)
-  constexpr double SameSheetNormalDot = 0.5;
-  std::vector<double> band(static_cast<size_t>(local), 0.0);
-  if (noiseBand && knnOthers > 0)
-  {
-    const int others = knnOthers;
-    vtkSMPTools::For(0,
-      local,
-      [&](Id begin, Id end)
-      {
-        for (Id i = begin; i < end; ++i)
-        {
-          if (status[i] != Usable)
-          {
-            continue;
-          }
-          const double noise = pcs::QuadricHeightNoise(xyz.data(),
-            normals.data(),
-            &xyz[3 * static_cast<size_t>(i)],
-            &normals[3 * static_cast<size_t>(i)],
-            &knn[static_cast<size_t>(i) * others],
-            others,
-            SameSheetNormalDot);
-          band[i] = noise > 0.0 ? std::min(this->NoiseBandFactor * noise, meanSpacing) : 0.0;
-        }
-      });
-  }
+  // II.C.2 within the noise band (computed on demand).
+  const NoiseBands band(xyz.data(),
+    normals.data(),
+    knn,
+    knnOthers,
+    status,
+    noiseBand ? this->NoiseBandFactor : 0.0,
+    meanSpacing);
 
   // The parameters in the (scaled) units of xyz.
   Parameters strict;
@@ -2107,7 +2147,7 @@ int vtkCDTAdvancingFront::RequestData(
     normals.data(),
     scale.data(),
     stretch.empty() ? nullptr : stretch.data(),
-    band.data(),
+    band,
     status,
     locator,
     bins,

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <utility>
 
@@ -149,21 +150,48 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
   {
     return true;
   }
+  PointBins bins;
+  bins.Build(locator, xyz, n, /*withCoordinates=*/false);
   // Starting radius: the k-th neighbour of a surface sample lies about sqrt(k) nearest-neighbour
-  // distances away; the mean nearest-neighbour distance comes from a few hundred points.
+  // distances away; the mean nearest-neighbour distance comes from a few hundred points, each
+  // searched in the bins within one, then two bucket widths (a copy of the point counts, at
+  // distance 0; a point with no other that near is left out). The radius only sets where the
+  // queries start, never what they find.
   double sum = 0.0;
   int samples = 0;
   {
-    vtkNew<vtkIdList> list;
+    double width[3];
+    locator->GetSpacing(width);
+    const double reach = std::max({ width[0], width[1], width[2] });
+    const int* grid = bins.GetDivisions();
+    const int32_t* offsets = bins.GetOffsets();
+    const int32_t* ids = bins.GetIds();
     const int32_t step = std::max<int32_t>(1, n / 256);
     for (int32_t i = 0; i < n; i += step)
     {
-      locator->FindClosestNPoints(2, xyz + 3 * static_cast<size_t>(i), list);
-      for (vtkIdType j = 0; j < list->GetNumberOfIds(); ++j)
+      const double* p = xyz + 3 * static_cast<size_t>(i);
+      for (double radius = reach; radius <= 2.0 * reach; radius *= 2.0)
       {
-        if (list->GetId(j) != i)
+        int lo[3], hi[3];
+        bins.BucketRange(p, radius, lo, hi);
+        double best = std::numeric_limits<double>::infinity();
+        for (int bz = lo[2]; bz <= hi[2] && best > 0.0; ++bz)
         {
-          sum += std::sqrt(Distance2(xyz + 3 * static_cast<size_t>(i), xyz + 3 * list->GetId(j)));
+          for (int by = lo[1]; by <= hi[1] && best > 0.0; ++by)
+          {
+            const int64_t row = grid[0] * (by + static_cast<int64_t>(grid[1]) * bz);
+            for (int32_t m = offsets[row + lo[0]]; m < offsets[row + hi[0] + 1] && best > 0.0; ++m)
+            {
+              if (ids[m] != i)
+              {
+                best = std::min(best, Distance2(p, xyz + 3 * static_cast<size_t>(ids[m])));
+              }
+            }
+          }
+        }
+        if (best <= radius * radius)
+        {
+          sum += std::sqrt(best);
           ++samples;
           break;
         }
@@ -186,8 +214,6 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
   // cube adds beyond the ball. This is the bucket walk of FindPointsWithinRadius without its
   // per-point virtual GetPoint and per-query BuildLocator (modification time) calls, which took
   // about two thirds of the search's time.
-  PointBins bins;
-  bins.Build(locator, xyz, n, /*withCoordinates=*/false);
   const int* divisions = bins.GetDivisions();
   const vtkIdType numberOfBuckets = bins.GetNumberOfBuckets();
   std::vector<int32_t> bucketStart(static_cast<size_t>(numberOfBuckets) + 1, 0);
@@ -549,6 +575,17 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
 
 bool OnOneScanLine(const double* xyz, const double* stretch, int32_t a, int32_t b, int32_t c)
 {
+  // Each edge needs an end with a stretch: at least two of the three points. (Most points of
+  // a cloud have none: the usual answer, without the products.)
+  auto stretched = [stretch](int32_t p)
+  {
+    const double* s = stretch + 3 * static_cast<size_t>(p);
+    return s[0] != 0.0 || s[1] != 0.0 || s[2] != 0.0;
+  };
+  if ((stretched(a) ? 1 : 0) + (stretched(b) ? 1 : 0) + (stretched(c) ? 1 : 0) < 2)
+  {
+    return false;
+  }
   auto along = [&](int32_t p, int32_t q)
   {
     const double* pp = xyz + 3 * static_cast<size_t>(p);

@@ -1323,16 +1323,21 @@ int64_t Front::Add(Id a, Id b, Id c, uint8_t origin)
   ++this->State;
   this->Origin.push_back(origin);
   const Id v[3] = { a, b, c };
+  double lengths[3]; // of the edge v[i] v[i + 1]
   for (int i = 0; i < 3; ++i)
   {
     const Id from = v[i], to = v[(i + 1) % 3];
     const double length = std::sqrt(Distance2(this->P(from), this->P(to)));
+    lengths[i] = length;
     this->LongestEdge = std::max(this->LongestEdge, length);
     this->MaxIncident[from] = std::max(this->MaxIncident[from], length);
     this->MaxIncident[to] = std::max(this->MaxIncident[to], length);
-    this->EdgeReach.Add(this->P(from), length);
-    this->EdgeReach.Add(this->P(to), length);
     this->Link(from, to);
+  }
+  // Each vertex's cell keeps the longer of its two new edges (one lookup per vertex).
+  for (int i = 0; i < 3; ++i)
+  {
+    this->EdgeReach.Add(this->P(v[i]), std::max(lengths[i], lengths[(i + 2) % 3]));
   }
   // Its edges, and the front edges next to its vertices (which may now close as ears).
   for (int i = 0; i < 3; ++i)

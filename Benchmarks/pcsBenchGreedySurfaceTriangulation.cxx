@@ -282,6 +282,8 @@ int main(int argc, char* argv[])
         greedy->SetFairHoleFills(value != 0.0);
       else if (name == "CapOpenEnds")
         greedy->SetCapOpenEnds(value != 0.0);
+      else if (name == "GrowRegions")
+        greedy->SetGrowRegions(value != 0.0);
       else
       {
         std::cerr << "unknown parameter " << name << std::endl;

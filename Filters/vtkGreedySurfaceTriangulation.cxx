@@ -3,6 +3,7 @@
 #include "pcsCoordinateScaling.h"
 #include "pcsDuplicatePoints.h"
 #include "pcsFieldData.h"
+#include "pcsFrontGrowth.h"
 #include "pcsGatherInput.h"
 #include "pcsHoleFilling.h"
 #include "pcsNearestNeighbors.h"
@@ -44,6 +45,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -161,6 +163,7 @@ public:
   std::vector<double> BoundaryVectors; // 3 per vertex (boundary vertices only), smoothed over b
   std::vector<double> EdgeVectors;     // the same from the vertex's own two edges (step 5)
   std::vector<std::array<int32_t, 2>> Links; // bridges and chords (step 7)
+  std::vector<int32_t> Dissolved;            // the points of the islands step 2 dissolved
 
   // Loops (steps 3 to 6).
   struct Node
@@ -178,7 +181,7 @@ public:
   // Counts.
   vtkIdType LostPoints = 0, Islands = 0, Holes = 0, Bridges = 0, Chords = 0, HolesFilled = 0,
             HolesLeftOpen = 0, Swaps = 0, Inserted = 0, Added = 0, LoopsClosed = 0,
-            LoopsFilledByDihedral = 0, EndsCapped = 0;
+            LoopsFilledByDihedral = 0, EndsCapped = 0, Grown = 0;
   bool Aborted = false;
 
   const double* P(int32_t i) const { return &this->X[3 * static_cast<size_t>(i)]; }
@@ -197,6 +200,10 @@ public:
   void ComputeNormals(bool local);
   void Step1GreedyEdges(double begin, double end);
   void Step2Umbrella(double begin, double end);
+  void GrowRegions(double begin, double end);
+  void RemoveSmallOpenGrownParts();
+  void RemoveGrownFlaps();
+  void TakeBack(int64_t t);
   void Step3Status();
   void Step4Bridges();
   void Step6FillHoles(double begin, double end);
@@ -838,6 +845,7 @@ Reconstruction::Umbrella Reconstruction::CheckUmbrella(int32_t v,
 void Reconstruction::Step2Umbrella(double begin, double end)
 {
   this->LostPoints = 0;
+  this->Dissolved.clear();
   const size_t numberOfTriangles = this->Step1Triangles.size() / 3;
   std::vector<int64_t> offsets(static_cast<size_t>(this->N) + 1, 0);
   for (int32_t v : this->Step1Triangles)
@@ -1073,6 +1081,7 @@ void Reconstruction::Step2Umbrella(double begin, double end)
       if (this->Status[v] != vtkGreedySurfaceTriangulation::LOST && this->Mesh.IsFree(v))
       {
         this->Status[v] = vtkGreedySurfaceTriangulation::LOST;
+        this->Dissolved.push_back(v);
         ++this->LostPoints;
       }
     }
@@ -1145,6 +1154,148 @@ void Reconstruction::ComputeComponents()
     }
     ++next;
   }
+}
+
+//------------------------------------------------------------------------------------------------
+// A grown triangle removed; its vertices left without triangles are lost points again.
+void Reconstruction::TakeBack(int64_t t)
+{
+  const int32_t* tri = this->Mesh.GetTriangle(t);
+  const int32_t v[3] = { tri[0], tri[1], tri[2] };
+  this->Mesh.RemoveTriangle(t);
+  for (int32_t x : v)
+  {
+    if (this->Mesh.IsFree(x))
+    {
+      this->Status[x] = vtkGreedySurfaceTriangulation::LOST;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+// After the small loops and the caps: a piece with grown triangles (stage 2) that is still open
+// and has fewer than MinimumIslandTriangles triangles is taken back, as step 2 dissolves its
+// small islands (a seed that grew into a strip the later steps could not join or close); its
+// points are lost again and reported unused.
+void Reconstruction::RemoveSmallOpenGrownParts()
+{
+  if (this->Grown == 0)
+  {
+    return;
+  }
+  const int64_t ids = std::min<int64_t>(this->Mesh.GetNumberOfTriangleIds(), this->Stage.size());
+  const int64_t minimum = this->Self->GetMinimumIslandTriangles();
+  std::vector<char> visited(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 0);
+  std::vector<int64_t> part;
+  for (int64_t seed = 0; seed < ids; ++seed)
+  {
+    if (this->Mesh.IsTriangleRemoved(seed) || visited[seed] || this->Stage[seed] != 2)
+    {
+      continue;
+    }
+    visited[seed] = 1;
+    part.assign(1, seed);
+    bool open = false;
+    for (size_t i = 0; i < part.size(); ++i)
+    {
+      const int32_t* tri = this->Mesh.GetTriangle(part[i]);
+      for (int j = 0; j < 3; ++j)
+      {
+        const int64_t u = this->Mesh.FindTriangle(tri[(j + 1) % 3], tri[j]);
+        open = open || u < 0;
+        if (u >= 0 && !visited[u])
+        {
+          visited[u] = 1;
+          part.push_back(u);
+        }
+      }
+    }
+    if (!open || static_cast<int64_t>(part.size()) >= minimum)
+    {
+      continue;
+    }
+    for (int64_t t : part)
+    {
+      this->TakeBack(t);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+// Grown triangles (stage 2) hanging by one edge (two boundary edges) are taken back, until none:
+// expansions the later steps folded against.
+void Reconstruction::RemoveGrownFlaps()
+{
+  if (this->Grown == 0)
+  {
+    return;
+  }
+  auto boundaryEdges = [this](int64_t t)
+  {
+    const int32_t* tri = this->Mesh.GetTriangle(t);
+    int count = 0;
+    for (int j = 0; j < 3; ++j)
+    {
+      count += this->Mesh.FindTriangle(tri[(j + 1) % 3], tri[j]) < 0 ? 1 : 0;
+    }
+    return count;
+  };
+  const int64_t ids = std::min<int64_t>(this->Mesh.GetNumberOfTriangleIds(), this->Stage.size());
+  bool removed = true;
+  while (removed)
+  {
+    removed = false;
+    for (int64_t t = 0; t < ids; ++t)
+    {
+      if (!this->Mesh.IsTriangleRemoved(t) && this->Stage[t] == 2 && boundaryEdges(t) >= 2)
+      {
+        this->TakeBack(t);
+        removed = true;
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+// After step 2: the regions grown into the lost points by vtkLocalOptimumGrowth's expansion
+// (pcs::GrowFront, its default constraints). The new triangles are stage 2, the points they use
+// "lost and used" (Status 3).
+void Reconstruction::GrowRegions(double begin, double end)
+{
+  if (!this->Self->GetGrowRegions() || this->Mesh.GetNumberOfTriangles() == 0)
+  {
+    return;
+  }
+  const int64_t before = this->Mesh.GetNumberOfTriangleIds();
+  pcs::FrontGrowthParameters parameters;
+  bool aborted = false;
+  if (pcs::GrowFront(this->Mesh,
+        this->X.data(),
+        this->N,
+        this->Neighbors,
+        this->K,
+        this->Stretch,
+        false,
+        this->Dissolved,
+        parameters,
+        this->Self,
+        begin,
+        end,
+        aborted) > 0)
+  {
+    this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 2);
+    std::fill(this->Stage.begin() + before, this->Stage.end(), 2);
+    for (int32_t v = 0; v < this->N; ++v)
+    {
+      if (this->Status[v] == vtkGreedySurfaceTriangulation::LOST && !this->Mesh.IsFree(v))
+      {
+        this->Status[v] = vtkGreedySurfaceTriangulation::LOST_USED_BY_HOLE_FILLING;
+        ++this->Grown;
+      }
+    }
+    this->ComputeComponents();
+  }
+  this->Aborted = this->Aborted || aborted;
 }
 
 //------------------------------------------------------------------------------------------------
@@ -3135,24 +3286,83 @@ int vtkGreedySurfaceTriangulation::RequestData(
       }
     }
   }
-  r.Step3Status();
-  if (!r.Progress(0.65))
+  // Steps 3 to 8 on the regions of step 2, and on the same regions grown into the lost points of
+  // the islands step 2 dissolved (GrowRegions): the grown ones are kept when the repaired mesh
+  // uses more points without more boundary edges.
+  auto repair = [](Reconstruction& x)
+  {
+    x.Step3Status();
+    if (!x.Progress(0.65))
+    {
+      return false;
+    }
+    x.Step4Bridges();
+    if (!x.Progress(0.7))
+    {
+      return false;
+    }
+    x.Step6FillHoles(0.7, 0.97);
+    if (x.Aborted)
+    {
+      return false;
+    }
+    x.InsertLostPoints(0.97, 0.98);
+    if (x.Aborted)
+    {
+      return false;
+    }
+    x.RemoveGrownFlaps();
+    x.CloseSmallLoops();
+    x.CapOpenEnds();
+    x.RemoveSmallOpenGrownParts();
+    x.Step7Swaps();
+    return true;
+  };
+  std::unique_ptr<Reconstruction> grown;
+  if (this->GrowRegions && !r.Dissolved.empty())
+  {
+    grown.reset(new Reconstruction(r));
+    grown->GrowRegions(0.6, 0.63);
+    if (grown->Aborted)
+    {
+      return finish();
+    }
+    if (grown->Grown == 0)
+    {
+      grown.reset();
+    }
+  }
+  if (!repair(r))
   {
     return finish();
   }
-  r.Step4Bridges();
-  if (!r.Progress(0.7))
+  if (grown)
   {
-    return finish();
+    if (!repair(*grown))
+    {
+      return finish();
+    }
+    auto unused = [](const Reconstruction& x)
+    {
+      vtkIdType count = 0;
+      for (int32_t v = 0; v < x.N; ++v)
+      {
+        count += x.Mesh.IsFree(v) ? 1 : 0;
+      }
+      return count;
+    };
+    if (grown->Mesh.GetNumberOfBoundaryHalfEdges() <= r.Mesh.GetNumberOfBoundaryHalfEdges() &&
+      unused(*grown) < unused(r))
+    {
+      // The locator's points wrap r.X: r keeps that buffer (the copy holds the same values).
+      grown->X.swap(r.X);
+      r = std::move(*grown);
+    }
+    grown.reset();
   }
   if (r.Bridges > 0)
   {
     steps += ", 3, 4";
-  }
-  r.Step6FillHoles(0.7, 0.97);
-  if (r.Aborted)
-  {
-    return finish();
   }
   if (r.Chords > 0)
   {
@@ -3162,14 +3372,6 @@ int vtkGreedySurfaceTriangulation::RequestData(
   {
     steps += ", 6";
   }
-  r.InsertLostPoints(0.97, 0.98);
-  if (r.Aborted)
-  {
-    return finish();
-  }
-  r.CloseSmallLoops();
-  r.CapOpenEnds();
-  r.Step7Swaps();
   if (r.Bridges + r.Chords > 0)
   {
     steps += ", 7";
@@ -3324,6 +3526,7 @@ void vtkGreedySurfaceTriangulation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumHolePoints: " << this->MaximumHolePoints << "\n";
   os << indent << "SwapBridgeEdges: " << this->SwapBridgeEdges << "\n";
   os << indent << "InsertLostPoints: " << this->InsertLostPoints << "\n";
+  os << indent << "GrowRegions: " << this->GrowRegions << "\n";
   os << indent << "FairHoleFills: " << this->FairHoleFills << "\n";
   os << indent << "CapOpenEnds: " << this->CapOpenEnds << "\n";
   os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";

@@ -3,6 +3,7 @@
 #include "pcsCoordinateScaling.h"
 #include "pcsDuplicatePoints.h"
 #include "pcsFieldData.h"
+#include "pcsFrontGrowth.h"
 #include "pcsGatherInput.h"
 #include "pcsHoleFilling.h"
 #include "pcsNearestNeighbors.h"
@@ -108,6 +109,25 @@ struct Parameters
   bool Relax = true;
 };
 
+// The internal form of the constraints (cosines, tangent) for K neighbours per point.
+Parameters MakeParameters(int k, const pcs::FrontGrowthParameters& constraints)
+{
+  Parameters parameters;
+  parameters.K = k;
+  parameters.CosNormal = std::cos(vtkMath::RadiansFromDegrees(constraints.MaximumNormalAngle));
+  parameters.CosHalfNormal =
+    std::cos(vtkMath::RadiansFromDegrees(0.5 * constraints.MaximumNormalAngle));
+  parameters.TanNormal = constraints.MaximumNormalAngle >= 90.0
+    ? std::numeric_limits<double>::infinity()
+    : std::tan(vtkMath::RadiansFromDegrees(constraints.MaximumNormalAngle));
+  parameters.MinRatio = constraints.MinimumEdgeRatio;
+  parameters.MaxRatio = constraints.MaximumEdgeRatio;
+  parameters.CosBase = std::cos(vtkMath::RadiansFromDegrees(constraints.MaximumBaseAngle));
+  parameters.MaxHoleEdges = constraints.MaximumHoleEdges;
+  parameters.Relax = constraints.RelaxConstraints;
+  return parameters;
+}
+
 //------------------------------------------------------------------------------------------------
 // The growth (steps 2 to 6 of the class documentation) on distinct finite points X (packed
 // x,y,z, internal ids 0..N-1) with their K nearest neighbours Knn (N*K ids, -1 padded).
@@ -132,8 +152,14 @@ public:
   }
 
   void Run();
+  // The expansion alone (steps 3 and 4 of the class documentation: no hole filling) from the front
+  // of `mesh` (when expandFront), which the grower takes over with its triangle ids; then from
+  // seeds at the points of SeedOrder when the front has stalled.
+  void GrowFrom(const pcs::SurfaceMesh& mesh, bool expandFront);
+  void Grow();
 
   pcs::SurfaceMesh Mesh;
+  double ProgressBegin = 0.15, ProgressEnd = 0.9; // the algorithm's progress over the growth
   // The points in the order the seeds are tried (paper, step 1: the extreme point first): x
   // descending, then y, then z; a permutation of 0..N-1.
   std::vector<Id> SeedOrder;
@@ -1242,8 +1268,9 @@ void Grower::ReportProgress()
 {
   if ((++this->Work & 1023) == 0)
   {
-    this->Algorithm->UpdateProgress(
-      0.15 + 0.75 * this->UsedVertices / std::max<double>(this->N, 1));
+    this->Algorithm->UpdateProgress(this->ProgressBegin +
+      (this->ProgressEnd - this->ProgressBegin) * this->UsedVertices /
+        std::max<double>(this->N, 1));
     this->Aborted = this->Algorithm->GetAbortExecute() != 0;
   }
 }
@@ -2132,12 +2159,31 @@ void Grower::OrientComponents()
   }
 }
 
-void Grower::Run()
+void Grower::GrowFrom(const pcs::SurfaceMesh& mesh, bool expandFront)
 {
-  if (!this->PlantSeed())
+  this->Mesh = mesh;
+  for (Id v = 0; v < this->N; ++v)
   {
-    return;
+    this->UsedVertices += this->Mesh.IsFree(v) ? 0 : 1;
   }
+  const int64_t count = this->Mesh.GetNumberOfTriangleIds();
+  for (int64_t t = 0; t < count; ++t)
+  {
+    if (!this->Mesh.IsTriangleRemoved(t))
+    {
+      this->Register(t);
+    }
+  }
+  if (!expandFront)
+  {
+    this->Queue.clear();
+  }
+  this->Grow();
+}
+
+// The front expanded until it stalls, then a new seed planted, until none can be.
+void Grower::Grow()
+{
   while (!this->Aborted)
   {
     this->ProcessQueue();
@@ -2150,6 +2196,15 @@ void Grower::Run()
       break;
     }
   }
+}
+
+void Grower::Run()
+{
+  if (!this->PlantSeed())
+  {
+    return;
+  }
+  this->Grow();
   if (!this->Aborted)
   {
     this->InsertOrphans();
@@ -2160,6 +2215,33 @@ void Grower::Run()
 }
 
 } // namespace
+
+//------------------------------------------------------------------------------------------------
+int64_t pcs::GrowFront(pcs::SurfaceMesh& mesh,
+  const double* x,
+  int32_t n,
+  const std::vector<int32_t>& knn,
+  int k,
+  const std::vector<double>& stretch,
+  bool expandFront,
+  const std::vector<int32_t>& seeds,
+  const pcs::FrontGrowthParameters& parameters,
+  vtkAlgorithm* algorithm,
+  double progressBegin,
+  double progressEnd,
+  bool& aborted)
+{
+  const int64_t before = mesh.GetNumberOfTriangles();
+  Grower grower(x, n, knn, MakeParameters(k, parameters), algorithm);
+  grower.SeedOrder = seeds;
+  grower.SetStretch(std::vector<double>(stretch));
+  grower.ProgressBegin = progressBegin;
+  grower.ProgressEnd = progressEnd;
+  grower.GrowFrom(mesh, expandFront);
+  aborted = grower.Aborted;
+  mesh = std::move(grower.Mesh);
+  return mesh.GetNumberOfTriangles() - before;
+}
 
 //------------------------------------------------------------------------------------------------
 vtkLocalOptimumGrowth::vtkLocalOptimumGrowth() = default;
@@ -2448,20 +2530,14 @@ int vtkLocalOptimumGrowth::RequestData(
   this->NumberOfUnusedPoints = this->NumberOfOutliers;
   this->UpdateProgress(0.15);
 
-  Parameters parameters;
-  parameters.K = k;
-  parameters.CosNormal = std::cos(vtkMath::RadiansFromDegrees(this->MaximumNormalAngle));
-  parameters.CosHalfNormal =
-    std::cos(vtkMath::RadiansFromDegrees(0.5 * this->MaximumNormalAngle));
-  parameters.TanNormal = this->MaximumNormalAngle >= 90.0
-    ? std::numeric_limits<double>::infinity()
-    : std::tan(vtkMath::RadiansFromDegrees(this->MaximumNormalAngle));
-  parameters.MinRatio = this->MinimumEdgeRatio;
-  parameters.MaxRatio = this->MaximumEdgeRatio;
-  parameters.CosBase = std::cos(vtkMath::RadiansFromDegrees(this->MaximumBaseAngle));
-  parameters.MaxHoleEdges = this->MaximumHoleEdges;
-  parameters.Relax = this->RelaxConstraints;
-  Grower grower(x.data(), n, knn, parameters, this);
+  pcs::FrontGrowthParameters constraints;
+  constraints.MaximumNormalAngle = this->MaximumNormalAngle;
+  constraints.MinimumEdgeRatio = this->MinimumEdgeRatio;
+  constraints.MaximumEdgeRatio = this->MaximumEdgeRatio;
+  constraints.MaximumBaseAngle = this->MaximumBaseAngle;
+  constraints.MaximumHoleEdges = this->MaximumHoleEdges;
+  constraints.RelaxConstraints = this->RelaxConstraints != 0;
+  Grower grower(x.data(), n, knn, MakeParameters(k, constraints), this);
   grower.SetStretch(std::move(stretch));
   {
     // Seeds: the points in decreasing lexicographic order (internal ids; outliers left out).

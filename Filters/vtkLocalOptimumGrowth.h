@@ -25,13 +25,13 @@
  *    Added, scan-line sampling (laser-line and LiDAR scans: points 5-20 times denser along lines
  *    than across): when the K/2 nearest of a point all lie on its own line (their spread is
  *    one-dimensional, none off the line), its farthest neighbours are replaced by the nearest
- *    points of the lines on either side, within 4 times its K-th distance (pcs::AddOffLineNeighbors,
- *    shared with the other filters, see pcsNearestNeighbors.h). At such points constraint 2
- *    (below) measures lengths in the metric of the sampling: the component along the line is
- *    stretched by the ratio A of the distance to the nearest point off the line to the distance to
- *    the nearest neighbour (averaged over the edge's two ends), so that a triangle between two
- *    lines, whose edge along its line is A times shorter than the others, meets the ratios
- *    [1/3, 3]. Elsewhere lengths are Euclidean, bit for bit. Measured (Benchmarks/results/
+ *    points of the lines on either side, within 4 times its K-th distance
+ * (pcs::AddOffLineNeighbors, shared with the other filters, see pcsNearestNeighbors.h). At such
+ * points constraint 2 (below) measures lengths in the metric of the sampling: the component along
+ * the line is stretched by the ratio A of the distance to the nearest point off the line to the
+ * distance to the nearest neighbour (averaged over the edge's two ends), so that a triangle between
+ * two lines, whose edge along its line is A times shorter than the others, meets the ratios [1/3,
+ * 3]. Elsewhere lengths are Euclidean, bit for bit. Measured (Benchmarks/results/
  *    local_optimum.md): 16 lines of 1250 points 12.5 times denser along than across on a wavy
  *    sheet, 6656 one-triangle components (three points of one line each) in 10.2 s CPU before, the
  *    strip triangulation (37,470 triangles between adjacent lines, one boundary loop, every
@@ -102,6 +102,8 @@
  *    vertex; it is kept only together with the ear that removes the pinch at once (on either
  *    side, under the same rules), otherwise it is taken back. Two parts grown from different
  *    seeds with opposite orientations are made consistent first (one part is reversed).
+ *    The expansion and the deferred edges of step 4 are shared with vtkGreedySurfaceTriangulation
+ *    (pcs::GrowFront, pcsFrontGrowth.h: the growth from a given mesh and seed points).
  * 4. Deferred edges and relaxation: a front edge without a valid candidate is set aside and
  *    retried when the front has stalled and its neighbourhood (its ends and their K nearest)
  *    has changed; a retry looks only at the edges near the vertices touched since the previous
@@ -217,9 +219,9 @@
  * represents each input point: itself, the first of a group of exact duplicates, or -1 for a
  * point with a NaN or infinite coordinate); field data `NumberOfInputPoints`,
  * `NumberOfTriangles`, `NumberOfSeeds`, `NumberOfHolesClosed`, `NumberOfUnusedPoints` (distinct
- * finite points no triangle uses, outliers included), `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`
- * (non-finite), `NumberOfBoundaryEdges` (edges of a single triangle left in the mesh),
- * `NumberOfOutliers` (far outliers excluded, OutlierFactor).
+ * finite points no triangle uses, outliers included), `NumberOfDuplicatePoints`,
+ * `NumberOfSkippedPoints` (non-finite), `NumberOfBoundaryEdges` (edges of a single triangle left in
+ * the mesh), `NumberOfOutliers` (far outliers excluded, OutlierFactor).
  *
  * Cost: O(KN) for N points (the paper's bound): the neighbour search is done once, each front
  * edge examines at most 2K candidates and their neighbourhood, and every topological query is

@@ -256,7 +256,8 @@ bool CheckArrays(vtkGreedySurfaceTriangulation* filter, const std::string& what)
       ++ssrFinite;
     }
   }
-  // Stage: 1 (step 1, kept by step 2), 6 (hole filling), 7 (swap) or 8 (lost point insertion);
+  // Stage: 1 (step 1, kept by step 2), 2 (grown), 6 (hole filling), 7 (swap) or 8 (lost point
+  // insertion);
   // every triangle around a correct point comes from step 1 unless lost points were inserted
   // (an insertion splits triangles at correct points; then never a hole filling triangle), and a
   // step 1 triangle has only correct or boundary vertices.
@@ -269,8 +270,8 @@ bool CheckArrays(vtkGreedySurfaceTriangulation* filter, const std::string& what)
   {
     const auto& t = triangles[c];
     const int s = static_cast<int>(stage->GetTuple1(c));
-    PCS_CHECK(s == 1 || s == 6 || s == 7 || s == 8,
-              what << ": Stage " << s << " of triangle " << c);
+    PCS_CHECK(s == 1 || (s == 2 && filter->GetGrowRegions()) || s == 6 || s == 7 || s == 8,
+      what << ": Stage " << s << " of triangle " << c);
     bool correctVertex = false, lostVertex = false;
     for (vtkIdType v : t)
     {

@@ -71,7 +71,8 @@ DEFAULTS = {"NumberOfNeighbors": 12, "CrossingTest": 2, "AutomaticCorrectFractio
             "MinimumIslandTriangles": 20, "BoundaryVectorRadius": 3.0, "StatusNeutralAngle": 15.0,
             "BridgeIslands": True, "MaximumBridgeLength": 10.0, "MinimumBridgeSeparation": 0.5,
             "FillHoles": True, "MaximumHoleDiameter": DOUBLE_MAX, "AuxiliaryPointDistance": 0.5,
-            "MaximumHolePoints": 256, "SwapBridgeEdges": True, "InsertLostPoints": True,
+            "MaximumHolePoints": 256, "SwapBridgeEdges": True, "GrowRegions": True,
+            "InsertLostPoints": True,
             "FairHoleFills": True, "CapOpenEnds": True}
 RANGES = {"NumberOfNeighbors": (3, 64), "CrossingTest": (0, 2),
           "AutomaticCorrectFraction": (0.0, 1.0), "UniformityNeighbors": (2, 64),
@@ -189,6 +190,45 @@ for seed in range(6):
         closed_loops += noisy.GetOutput().GetFieldData().GetArray(
             "NumberOfSmallLoopsClosed").GetValue(0)
 check(closed_loops > 0, "noisy spheres and tori: small loops closed (%d)" % closed_loops)
+
+# A unit sphere (3,000 random points, the points inside the tail's radius left out) with a thin
+# tail along +x sampled in bands, as the tail of CGAL's camel: each band two rings of 8 points
+# (the second turned by half a step) 0.5 spacings apart, radius 1.2 spacings, bands 1.6 spacings
+# apart, an end point on the axis. The chords across the tail are shorter than the way to the next
+# band, so step 1 makes small discs there that step 2 dissolves; GrowRegions meshes their points
+# again. Every point must be used, the mesh closed, manifold and consistently oriented.
+def banded_tail(seed):
+    rng = numpy.random.default_rng(seed)
+    sphere = rng.normal(size=(3000, 3))
+    sphere /= numpy.linalg.norm(sphere, axis=1)[:, None]
+    spacing = math.sqrt(4.0 * math.pi / 3000)
+    radius = 1.2 * spacing
+    sphere = sphere[~((sphere[:, 0] > 0) & (numpy.hypot(sphere[:, 1], sphere[:, 2]) < radius))]
+    parts, x, band = [sphere], math.sqrt(1.0 - radius * radius), 0
+    while x < 2.0:
+        for ring in range(2):
+            angles = 2.0 * math.pi * (numpy.arange(8) + 0.5 * ((band + ring) % 2)) / 8
+            parts.append(numpy.c_[numpy.full(8, x + 0.5 * ring * spacing),
+                                  radius * numpy.cos(angles), radius * numpy.sin(angles)])
+        x += 0.5 * spacing + 1.6 * spacing
+        band += 1
+    parts.append(numpy.array([[x, 0.0, 0.0]]))
+    return numpy.vstack(parts)
+
+
+for seed in (0, 1):
+    tail = vtkGreedySurfaceTriangulation()
+    tail.SetInputData(cloud_from_array(banded_tail(seed)))
+    tail.Update()
+    out = tail.GetOutput()
+    q = quality(out)
+    stages = out.GetCellData().GetArray("Stage")
+    grown = sum(1 for t in range(out.GetNumberOfCells()) if stages.GetValue(t) == 2)
+    check(out.GetFieldData().GetArray("NumberOfUnusedPoints").GetValue(0) == 0
+          and q["NumberOfBoundaryEdges"] == 0 and q["NumberOfNonManifoldEdges"] == 0
+          and q["OrientationConsistency"] == 1.0 and grown > 0,
+          "banded tail %d: every point used, closed, manifold, grown triangles %d (%s)"
+          % (seed, grown, q))
 
 # The vertices of CGAL's camel (demo data, when installed): a closed genus-0 mesh (checked below
 # from its own counts) whose thin legs are sampled in rings, several spacings apart along the

@@ -564,13 +564,16 @@ public:
 
   // Try the group that starts at cell c; on success the cells are removed and listed in Group.
   // A group that opens a handle is accepted only when c's largest exterior facet exceeds
-  // handleThreshold or the group holds more than 8 cells.
-  bool Try(int64_t c, double threshold, double handleThreshold)
+  // handleThreshold or the group holds more than 8 cells. With keepTopology (rule 7 of the class
+  // docs) the group goes on past a manifold state that opened a handle, and is accepted only when
+  // the topology is the same and it shows the outside no facet larger than c's largest.
+  bool Try(int64_t c, double threshold, double handleThreshold, bool keepTopology = false)
   {
     this->Group.clear();
     this->BadCount = 0;
     this->DirtyBadCount = 0;
-    const bool mayOpenHandle = this->Solid.LargestExteriorFacet(c) > handleThreshold;
+    const double startFacet = this->Solid.LargestExteriorFacet(c);
+    const bool mayOpenHandle = startFacet > handleThreshold;
     std::priority_queue<std::pair<double, int64_t>> grow;
     bool ok = this->Add(c, threshold, grow);
     while (ok)
@@ -579,7 +582,7 @@ public:
       // that went on (its links were once checked only when it doubled) could pinch the boundary
       // again and grow, largest facet first, along a torus's tube to the size bound instead of
       // closing up across the hole.
-      if (this->IsManifold())
+      if (this->IsManifold() && (!keepTopology || this->EulerChange() >= 0))
       {
         break;
       }
@@ -613,23 +616,18 @@ public:
       // opened by a short group (at most 8 cells) whose start facet is not over handleThreshold
       // (HandleFactor; by default every group start passes: the short groups punch the webs of
       // flat tetrahedra left across concave regions, see the class docs).
-      const int64_t after = this->BoundaryEuler();
-      for (int64_t g : this->Group)
+      const int64_t change = this->EulerChange();
+      if (keepTopology)
       {
-        this->Solid.SetInside(g, true);
+        ok = change == 0 && !this->ShowsLargerFacet(startFacet);
       }
-      const int64_t before = this->BoundaryEuler();
-      for (int64_t g : this->Group)
-      {
-        this->Solid.SetInside(g, false);
-      }
-      if (after < before)
+      else if (change < 0)
       {
         ok = mayOpenHandle || this->Group.size() > 8;
       }
       else
       {
-        ok = after == before || this->StaysConnected(true);
+        ok = change == 0 || this->StaysConnected(true);
       }
     }
     if (!ok)
@@ -700,6 +698,40 @@ public:
   }
 
   std::vector<int64_t> Group;
+
+  // Whether the (removed) group shows the outside a facet larger than `measure`.
+  bool ShowsLargerFacet(double measure) const
+  {
+    for (int64_t g : this->Group)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        if (this->Solid.IsInside(this->DT.Neighbor(g, k)) &&
+          this->Solid.FacetMeasure(g, k) > measure)
+        {
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  // The change of the boundary's Euler characteristic that the (removed) group made: -2 for each
+  // handle opened, 0 when the topology stayed.
+  int64_t EulerChange()
+  {
+    const int64_t after = this->BoundaryEuler();
+    for (int64_t g : this->Group)
+    {
+      this->Solid.SetInside(g, true);
+    }
+    const int64_t before = this->BoundaryEuler();
+    for (int64_t g : this->Group)
+    {
+      this->Solid.SetInside(g, false);
+    }
+    return after - before;
+  }
 
 private:
   // Whether the cells of state `inside` next to the group (of the other state now) are still
@@ -1550,11 +1582,18 @@ int vtkPerimeterPeelSurface::RequestData(
       : (this->FacetMeasure == CIRCUMRADIUS ? side / std::sqrt(3.0) : this->GroupStartLimit);
   }
   bool limitedStart = false;
-  auto groupStart = [&]()
+  auto normalStart = [&]()
   {
     return limitedStart ? std::min(threshold * groupFactor, groupStartLimit)
                         : threshold * groupFactor;
   };
+  // Once the peel has converged (rule 7 of the class docs), groups that keep the topology and
+  // show no facet larger than their start facet may start at facets over twice the threshold (a
+  // ratio of lengths: squared for the area measure).
+  const double keepTopologyFactor = this->FacetMeasure == AREA ? 4.0 : 2.0;
+  bool converged = false;
+  auto groupStart = [&]()
+  { return converged ? std::min(normalStart(), keepTopologyFactor * threshold) : normalStart(); };
   // Whether the inside cell c, whose exterior facets are `mask` and the largest of them m, may
   // not be removed now. With ManifoldOutput, a cell is not removed when it would show a facet more
   // than 1.5 times larger than the bottleneck of its widest way in (WidestWayIn: the smallest facet
@@ -1744,7 +1783,8 @@ int vtkPerimeterPeelSurface::RequestData(
           // started under a small bottleneck (a cave's wall) does not open a free way inwards.
           const double way = pathRule ? solid.WidestWayIn(c, m, std::numeric_limits<float>::max())
                                       : std::numeric_limits<double>::infinity();
-          if (m <= threshold || !groups->Try(c, threshold, threshold * handleFactor))
+          if (m <= threshold ||
+            !groups->Try(c, threshold, threshold * handleFactor, m <= normalStart()))
           {
             continue;
           }
@@ -1775,12 +1815,13 @@ int vtkPerimeterPeelSurface::RequestData(
     const double updated = exteriorMean();
     if (updated == 0.0 || std::fabs(updated - mean) <= this->ConvergenceTolerance * mean)
     {
-      if (updated > 0.0 && !limitedStart && groupStartLimit > 0.0 &&
-        groupStartLimit < threshold * groupFactor)
+      if (updated > 0.0 && manifold && !converged)
       {
-        // Converged with a group start over the limit (rule 5): go on, groups starting at the
-        // limit too (the threshold stays until the mean moves again).
-        limitedStart = true;
+        // Converged: go on with groups starting at the group start limit (rule 5) when the
+        // group start is over it, and groups that keep the topology from facets over twice the
+        // threshold (rule 7); the threshold stays until the mean moves again.
+        converged = true;
+        limitedStart = groupStartLimit > 0.0 && groupStartLimit < threshold * groupFactor;
         continue;
       }
       break;

@@ -196,6 +196,7 @@ public:
   }
 
   void FindNeighbors(double begin, double end);
+  void ExtendNeighbors();
   void ComputeUniformity();
   void ComputeNormals(bool local);
   void Step1GreedyEdges(double begin, double end);
@@ -235,8 +236,8 @@ private:
 };
 
 //------------------------------------------------------------------------------------------------
-// K nearest neighbours of every point (vtkStaticPointLocator), in blocks so that progress and
-// abort are handled between threaded passes.
+// K nearest neighbours of every point (vtkStaticPointLocator, nearest first), in blocks so that
+// progress and abort are handled between threaded passes.
 void Reconstruction::FindNeighbors(double begin, double end)
 {
   vtkNew<vtkPoints> points;
@@ -260,8 +261,15 @@ void Reconstruction::FindNeighbors(double begin, double end)
   if (!pcs::FindNearestNeighbors(this->Locator, this->X.data(), this->N, k, this->Neighbors,
         [&](double fraction) { return this->Progress(begin + (end - begin) * fraction); }))
   {
-    return;
+    this->Aborted = true; // (the progress callback stopped it)
   }
+}
+
+// The neighbour table extended on scan lines, then the mean spacing.
+void Reconstruction::ExtendNeighbors()
+{
+  const int k = this->K;
+
   // Scan-line sampling: a point whose K / 2 nearest lie along one line, as do those of half of
   // its K nearest, also gets the nearest points of the lines beside it, and its stretch
   // (pcsNearestNeighbors.h). The share keeps the few points of an ordinary sample that happen to
@@ -3159,13 +3167,13 @@ int vtkGreedySurfaceTriangulation::RequestData(
       }
     }
   }
-  outliers = pcs::RemoveOutliers(
-    xyz.data(), order, this->OutlierFactor, [this](double) { return !this->GetAbortExecute(); });
-  if (outliers > 0)
+  // Far outliers: read from the neighbour table below when it holds enough neighbours per point
+  // (pcs::FlagOutliers), else found here by their own search.
+  const bool outliersFromTable = this->NumberOfNeighbors >= pcs::OutlierNeighbors;
+  if (!outliersFromTable)
   {
-    vtkWarningMacro("Excluded " << outliers << " far outlier(s) (OutlierFactor "
-                                << this->OutlierFactor
-                                << "): point data Used = 0, Status 4, field data NumberOfOutliers.");
+    outliers = pcs::RemoveOutliers(
+      xyz.data(), order, this->OutlierFactor, [this](double) { return !this->GetAbortExecute(); });
   }
   // Exact duplicates: each copy is mapped to the copy of smallest id (order is ascending).
   std::vector<std::pair<int32_t, int32_t>> merged;
@@ -3183,11 +3191,6 @@ int vtkGreedySurfaceTriangulation::RequestData(
     localOf[id] = static_cast<int32_t>(inputIds.size());
     inputIds.push_back(id);
   }
-  if (duplicates > 0)
-  {
-    vtkWarningMacro("Triangulated " << duplicates
-                                    << " exact duplicate point(s) once (Status 4 for the copies).");
-  }
   r.N = static_cast<int32_t>(inputIds.size());
   r.X.resize(3 * static_cast<size_t>(r.N));
   for (int32_t i = 0; i < r.N; ++i)
@@ -3197,20 +3200,77 @@ int vtkGreedySurfaceTriangulation::RequestData(
   xyz.clear();
   xyz.shrink_to_fit();
   this->UpdateProgress(0.02);
-  if (r.N < 3)
-  {
-    vtkWarningMacro("Fewer than 3 distinct finite points (" << r.N
-                                                            << "): no surface can be made.");
-    return finish();
-  }
 
-  // Neighbours, spacing, uniformity.
+  // Neighbours (the plain nearest-first table, which the outlier rule reads), spacing,
+  // uniformity.
   r.K = std::min<int>(this->NumberOfNeighbors, r.N - 1);
-  r.FindNeighbors(0.02, 0.25);
+  if (r.N >= 3)
+  {
+    r.FindNeighbors(0.02, 0.25);
+  }
   if (r.Aborted)
   {
     return finish();
   }
+  std::vector<uint8_t> far;
+  if (outliersFromTable && r.N >= 3 &&
+    pcs::FlagOutliers(r.X.data(), r.N, r.Neighbors, r.K, this->OutlierFactor, far) > 0)
+  {
+    // The flagged points and their exact copies leave the cloud (Status 4, NumberOfOutliers: the
+    // copies of an outlier are outliers, not duplicates); the table is made again without them.
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    {
+      if (representative[i] >= 0 && far[localOf[representative[i]]])
+      {
+        ++outliers;
+        duplicates -= representative[i] != i ? 1 : 0;
+        representative[i] = -1;
+      }
+    }
+    int32_t kept = 0;
+    for (int32_t i = 0; i < r.N; ++i)
+    {
+      if (!far[i])
+      {
+        std::copy_n(&r.X[3 * static_cast<size_t>(i)], 3, &r.X[3 * static_cast<size_t>(kept)]);
+        inputIds[kept++] = inputIds[i];
+      }
+    }
+    r.N = kept;
+    r.X.resize(3 * static_cast<size_t>(kept));
+    inputIds.resize(kept);
+    localOf.assign(numberOfPoints, -1);
+    for (int32_t i = 0; i < kept; ++i)
+    {
+      localOf[inputIds[i]] = i;
+    }
+    r.K = std::min<int>(this->NumberOfNeighbors, r.N - 1);
+    if (r.N >= 3)
+    {
+      r.FindNeighbors(0.02, 0.25);
+    }
+    if (r.Aborted)
+    {
+      return finish();
+    }
+  }
+  if (outliers > 0)
+  {
+    vtkWarningMacro(
+      "Excluded " << outliers << " far outlier(s) (OutlierFactor " << this->OutlierFactor
+                  << "): point data Used = 0, Status 4, field data NumberOfOutliers.");
+  }
+  if (duplicates > 0)
+  {
+    vtkWarningMacro(
+      "Triangulated " << duplicates << " exact duplicate point(s) once (Status 4 for the copies).");
+  }
+  if (r.N < 3)
+  {
+    vtkWarningMacro("Fewer than 3 distinct finite points (" << r.N << "): no surface can be made.");
+    return finish();
+  }
+  r.ExtendNeighbors();
   r.ComputeUniformity();
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {

@@ -7,7 +7,6 @@
 #include "pcsGatherInput.h"
 #include "pcsHoleFilling.h"
 #include "pcsNearestNeighbors.h"
-#include "pcsNormalEstimation.h"
 #include "pcsOutliers.h"
 #include "pcsPointInsertion.h"
 #include "pcsPredicates.h"
@@ -234,8 +233,7 @@ private:
   bool FillNarrowLoop(const std::vector<Id>& frontLoop);
   void OrientComponents();
   void Unfold();
-  double NoiseBand(Id v);
-  bool WithinNoiseBand(Id a, Id b, Id c, Id d);
+  bool NeighborDiagonal(Id c, Id d) const;
   void ReportProgress();
 
   // Neighbourhood of the current operation: candidate vertices (the K-neighbourhoods of the
@@ -335,13 +333,6 @@ private:
   size_t SeedCursor = 0;
   Id UsedVertices = 0;
   double MeanSpacing = -1.0; // mean nearest-neighbour distance, computed when first needed
-  // Step 7, computed when first needed: per point its noise band (-1: not yet) and the normal of
-  // its least-squares plane (NaN: not yet); gathered neighbours of the band's quadric fit.
-  std::vector<double> NoiseBands;
-  std::vector<double> PlaneNormals;
-  std::vector<double> BandXyz, BandNormals;
-  std::vector<Id> BandRow;
-  bool PlaneNormal(Id v, double normal[3]);
   int64_t Work = 0;
 
   // Scratch.
@@ -1876,10 +1867,11 @@ void Grower::InsertOrphans()
 }
 
 // Step 7: folds repaired by edge flips. An edge whose two triangles bend by more than constraint 1
-// allows is flipped when the other diagonal of its quadrilateral is shorter and absent from the
-// mesh, and the flip raises the smallest normal dot product among the five edges of the
-// quadrilateral (the edge itself and the four around it). Topology: the flip keeps every vertex
-// and boundary edge, and the two new triangles are checked by the mesh before they are kept.
+// allows is flipped when the other diagonal of its quadrilateral is absent from the mesh and
+// shorter, or joins two K nearest neighbours (NeighborDiagonal), and the flip raises the smallest
+// normal dot product among the five edges of the quadrilateral (the edge itself and the four around
+// it). Topology: the flip keeps every vertex and boundary edge, and the two new triangles are
+// checked by the mesh before they are kept.
 void Grower::Unfold()
 {
   auto normalOf = [this](Id x, Id y, Id z, double* n) {
@@ -1916,11 +1908,12 @@ void Grower::Unfold()
     const Id c = this->Mesh.OppositeVertex(a, b), d = this->Mesh.OppositeVertex(b, a);
     double n1[3], n2[3];
     if (c == d || !normalOf(a, b, c, n1) || !normalOf(b, a, d, n2) ||
-      Dot(n1, n2) >= this->Par.CosNormal || this->Mesh.GetEdgeValence(c, d) > 0)
+      Dot(n1, n2) >= this->Par.CosNormal || this->Mesh.GetEdgeValence(c, d) > 0 ||
+      (Distance2(this->P3(c), this->P3(d)) >= Distance2(this->P3(a), this->P3(b)) &&
+        !this->NeighborDiagonal(c, d)))
     {
       continue;
     }
-    const bool longer = Distance2(this->P3(c), this->P3(d)) >= Distance2(this->P3(a), this->P3(b));
     double m1[3], m2[3]; // the new triangles (a, d, c) and (b, c, d)
     if (pcs::projected::Collinear(this->P3(a), this->P3(d), this->P3(c)) ||
       pcs::projected::Collinear(this->P3(b), this->P3(c), this->P3(d)) ||
@@ -1943,7 +1936,7 @@ void Grower::Unfold()
         after = std::min(after, Dot(no, owners[i][1]));
       }
     }
-    if (!(after > before) || (longer && !this->WithinNoiseBand(a, b, c, d)))
+    if (!(after > before))
     {
       continue;
     }
@@ -1976,140 +1969,17 @@ void Grower::Unfold()
   }
 }
 
-// Step 7's noise band at the point v: 3 times its height noise (the residual of a quadric height
-// field over its tangent plane fitted to v and those of its K nearest points whose planes are
-// within 60 degrees of v's, pcs::QuadricHeightNoise: the band of vtkCDTAdvancingFront's
-// NoiseBandFactor at its default), at most the cloud's mean spacing; 0 where the fit is not
-// possible. The planes are those of each point and its K nearest (least squares, unoriented:
-// each neighbour's normal is turned towards v's for the same-sheet test). Computed once per point
-// and only for the points of a folded quadrilateral whose other diagonal is longer.
-double Grower::NoiseBand(Id v)
-{
-  constexpr double BandFactor = 3.0;
-  constexpr double SameSheetNormalDot = 0.5;
-  if (this->NoiseBands.empty())
-  {
-    this->NoiseBands.assign(static_cast<size_t>(this->N), -1.0);
-  }
-  double& band = this->NoiseBands[v];
-  if (band >= 0.0)
-  {
-    return band;
-  }
-  band = 0.0;
-  double normal[3];
-  if (!this->PlaneNormal(v, normal))
-  {
-    return band;
-  }
-  // QuadricHeightNoise reads points and normals by row index: the neighbours are gathered.
-  this->BandXyz.clear();
-  this->BandNormals.clear();
-  this->BandRow.clear();
-  const Id* neighbors = this->Neighbors(v);
-  for (int j = 0; j < this->K; ++j)
-  {
-    double m[3];
-    if (neighbors[j] < 0 || !this->PlaneNormal(neighbors[j], m))
-    {
-      continue;
-    }
-    const double sign = Dot(m, normal) < 0.0 ? -1.0 : 1.0;
-    for (int i = 0; i < 3; ++i)
-    {
-      this->BandXyz.push_back(this->P3(neighbors[j])[i]);
-      this->BandNormals.push_back(sign * m[i]);
-    }
-    this->BandRow.push_back(static_cast<Id>(this->BandRow.size()));
-  }
-  const double noise = pcs::QuadricHeightNoise(this->BandXyz.data(),
-    this->BandNormals.data(),
-    this->P3(v),
-    normal,
-    this->BandRow.data(),
-    static_cast<int>(this->BandRow.size()),
-    SameSheetNormalDot);
-  if (noise > 0.0)
-  {
-    band = std::min(BandFactor * noise, this->CloudSpacing());
-  }
-  return band;
-}
-
-// The unit normal of the least-squares plane of v and its K nearest (sign arbitrary), cached.
-bool Grower::PlaneNormal(Id v, double normal[3])
-{
-  if (this->PlaneNormals.empty())
-  {
-    this->PlaneNormals.assign(3 * static_cast<size_t>(this->N), std::nan(""));
-  }
-  double* cached = &this->PlaneNormals[3 * static_cast<size_t>(v)];
-  if (std::isnan(cached[0]))
-  {
-    double covariance[3][3], values[3];
-    cached[0] = cached[1] = cached[2] = 0.0;
-    if (pcs::OffsetCovariance(
-          this->X, this->P3(v), this->Neighbors(v), this->K, true, covariance) >= 3.0)
-    {
-      pcs::SmallestEigenvector(covariance, values, cached);
-    }
-    if (!(std::isfinite(cached[0]) && std::isfinite(cached[1]) && std::isfinite(cached[2])))
-    {
-      cached[0] = cached[1] = cached[2] = 0.0;
-    }
-  }
-  normal[0] = cached[0];
-  normal[1] = cached[1];
-  normal[2] = cached[2];
-  return Dot(normal, normal) > 0.0;
-}
-
-// May the fold of the quadrilateral (a, c, b, d) be flipped to its longer diagonal c-d? When its
-// four points lie within the noise band of their least-squares plane (each height over it at
-// most the largest band of the four), either diagonal is as close to the sampled surface as the
-// noise lets one tell. The band holds at the scale where it was measured: c and d must be K
-// nearest neighbours (one of the other). A longer diagonal across a quadrilateral larger than
+// May the fold of the quadrilateral (a, c, b, d) be flipped to its longer diagonal c-d? When c
+// and d are K nearest neighbours (one of the other): an edge the growth could have made, at the
+// scale of the sampling and of its noise. A longer diagonal across a quadrilateral larger than
 // that, on a sharply bent part, leaves the surface (10^5 samples of CGAL's armadillo: Hausdorff
-// 1.79 -> 2.12 mean spacings without this bound).
-bool Grower::WithinNoiseBand(Id a, Id b, Id c, Id d)
+// 1.79 -> 2.12 mean spacings when any longer diagonal was allowed).
+bool Grower::NeighborDiagonal(Id c, Id d) const
 {
   const Id* nc = this->Neighbors(c);
   const Id* nd = this->Neighbors(d);
-  if (std::find(nc, nc + this->K, d) == nc + this->K &&
-    std::find(nd, nd + this->K, c) == nd + this->K)
-  {
-    return false;
-  }
-  const Id others[3] = { b, c, d };
-  double covariance[3][3], values[3], normal[3];
-  pcs::OffsetCovariance(this->X, this->P3(a), others, 3, true, covariance);
-  pcs::SmallestEigenvector(covariance, values, normal);
-  const Id quad[4] = { a, b, c, d };
-  double heights[4], mean = 0.0;
-  for (int i = 0; i < 4; ++i)
-  {
-    double offset[3];
-    Sub(this->P3(quad[i]), this->P3(a), offset);
-    heights[i] = Dot(offset, normal);
-    mean += 0.25 * heights[i];
-  }
-  double highest = 0.0;
-  for (double height : heights)
-  {
-    highest = std::max(highest, std::fabs(height - mean));
-  }
-  if (!std::isfinite(highest))
-  {
-    return false;
-  }
-  for (Id v : quad)
-  {
-    if (this->NoiseBand(v) >= highest)
-    {
-      return true;
-    }
-  }
-  return false;
+  return std::find(nc, nc + this->K, d) != nc + this->K ||
+    std::find(nd, nd + this->K, c) != nd + this->K;
 }
 
 // Closed components are turned outwards: positive signed volume.

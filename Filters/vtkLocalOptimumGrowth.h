@@ -176,42 +176,36 @@
  *    now, the camel keeps one handle of three, its loops open or closed).
  * 7. Folds (added): an edge whose two triangles bend by more than MaximumNormalAngle (the
  *    bound of constraint 1) is flipped when the other diagonal of its quadrilateral is not in the
- *    mesh and is shorter -- or, when longer, joins two K nearest neighbours and the quadrilateral's
- *    four points lie within the noise band of their least-squares plane (below) --, and the flip
- *    raises the smallest normal dot product among the five edges of the quadrilateral (the edge
- *    and the four around it); the mesh checks the two new triangles (oriented, manifold) before
- *    they are kept, and the edges around a flipped edge are tried again (at most 4 flips per
- *    triangle on average). The noise band of a point is 3 times its height noise: the residual
- *    of a quadric height field over its least-squares plane fitted to it and those of its K
- *    nearest points whose planes are within 60 degrees of its own (pcs::QuadricHeightNoise, the
- *    band of vtkCDTAdvancingFront::NoiseBandFactor at its default), at most the mean spacing;
- *    the quadrilateral passes when the height of each of its points over their plane is at most
- *    the largest band of the four. Within the noise either diagonal is as close to the sampled
- *    surface as the points tell, and on noisy scans the folds are small standing triangles
- *    (three points nearly in line in the tangent plane at different noise heights) whose
- *    shorter diagonal is often the folded one. The band holds at the scale where it was
- *    measured, hence the K-neighbour condition: without it a 9-spacing diagonal across a sparse,
- *    sharply bent spot of the 10^5 armadillo samples left the surface (Hausdorff 1.79 -> 2.12
- *    mean spacings). Measured (edges bending by more than 90 degrees, shorter diagonal only ->
- *    with the band; Benchmarks/results/local_optimum.md): random spheres of 20,000 points with
- *    Gaussian noise of 0.1 and 0.2 sqrt(area / N) 1012 -> 644 and 3050 -> 2599 (CGAL's advancing
- *    front 264 at 0.1), CGAL's bunny00 vertices with noise of 0.25 mean spacings 4708 -> 4339;
- *    clean 10^5 mesh samples 73-370 -> 41-212 and every Hausdorff distance, boundary edge count
- *    and coverage unchanged. Of the 644 folds left on that sphere, 223 have their other
- *    diagonal in the mesh already (mostly at a vertex of 3 triangles) and 396 would not be less
- *    folded by the flip; the triangles standing up against the surface there were made at the
- *    last relaxation level (40 %: a point close to an edge admitted by its height), at the
- *    others, by orphan insertions and by hole fills (temporary trace). The vertices and the boundary
- *    edges stay the same. Such folds are left where ears, later-stage expansions and hole fills
- *    meet at a sharply bent spot (on 10^5 samples of CGAL's armadillo 1015 edges bend by more
- *    than 90 degrees, 368 after): the worst triangle of that cloud, folded by 139 degrees
- *    against a hole fill, set its Hausdorff distance (2.07 mean spacings, 1.79 after), and on
- *    the elephant samples a corner cut by the wrong diagonal set it (2.13, 1.66 after). Without
- *    the length condition the flips of edges bending by more than 60 degrees made the armadillo
- *    samples worse (2.12: a long diagonal leaves the surface); flips of edges bending by more
- *    than 90 degrees only gave 1.94 and 2.13. Slivers (angles below 1 degree) left by step 5
- *    may still fold, and so may a triangle folded against all three of its neighbours, which no
- *    single flip improves (two of the five hard random torus samples of the test keep one).
+ *    mesh and is shorter, or joins two K nearest neighbours (one is among the other's: an edge
+ *    the growth could have made), and the flip raises the smallest normal dot product among the
+ *    five edges of the quadrilateral (the edge and the four around it); the mesh checks the two
+ *    new triangles (oriented, manifold) before they are kept, and the edges around a flipped edge
+ *    are tried again (at most 4 flips per triangle on average). On noisy scans the folds are small
+ *    standing triangles (three points nearly in line in the tangent plane at different noise
+ *    heights) whose unfolding diagonal is often the longer one. A longer diagonal beyond the K
+ *    nearest, across a sparse, sharply bent spot, leaves the surface: allowed, it made the 10^5
+ *    armadillo samples' Hausdorff 1.79 -> 2.12 mean spacings. Measured (edges bending by more than
+ *    90 degrees, shorter diagonal only -> with K-neighbour diagonals; Benchmarks/results/
+ *    local_optimum.md): random spheres of 20,000 points with Gaussian noise of 0.1 and 0.2
+ *    sqrt(area / N) 1012 -> 644 and 3050 -> 2599 (CGAL's advancing front 264 at 0.1), CGAL's
+ *    bunny00 vertices with noise of 0.25 mean spacings 4708 -> 4339, clean 10^5 mesh samples
+ *    73-370 -> 41-212, with every Hausdorff distance, boundary edge count and coverage unchanged.
+ *    (Also asking the four points to lie within the noise band of their plane, the rule of
+ *    vtkCDTAdvancingFront::NoiseBandFactor, changed nothing once the diagonal is a K-neighbour
+ *    pair: not kept.) Of the 644 folds left on that sphere, 223 have their other diagonal in the
+ *    mesh already (mostly at a vertex of 3 triangles) and 396 would not be less folded by the
+ *    flip; the triangles standing up against the surface there were made at the last relaxation
+ *    level (40 %: a point close to an edge admitted by its height), at the others, by orphan
+ *    insertions and by hole fills (temporary trace). On clean clouds such folds are left where
+ *    ears, later-stage expansions and hole fills meet at a sharply bent spot (on 10^5 samples of
+ *    CGAL's armadillo 1015 edges bend by more than 90 degrees, 368 with the shorter diagonal,
+ *    212 now): the worst triangle of that cloud, folded by 139 degrees against a hole fill, set
+ *    its Hausdorff distance (2.07 mean spacings, 1.79 after), and on the elephant samples a
+ *    corner cut by the wrong diagonal set it (2.13, 1.66 after). Flips of edges bending by more
+ *    than 90 degrees only (instead of MaximumNormalAngle) gave 1.94 and 2.13. Slivers (angles
+ *    below 1 degree) left by step 5 may still fold, and so may a triangle folded against all three
+ *    of its neighbours, which no single flip improves (two of the five hard random torus samples
+ *    of the test keep one).
  * 8. Each closed component is oriented outwards (positive signed volume).
  *
  * Output: all input points and point data, the triangles (consistently oriented), point data
@@ -225,8 +219,7 @@
  *
  * Cost: O(KN) for N points (the paper's bound): the neighbour search is done once, each front
  * edge examines at most 2K candidates and their neighbourhood, and every topological query is
- * O(1). Memory: about 4K + 230 bytes per point (32 of them for the bin grid), plus 32 for step
- * 7's planes and noise bands when a fold's other diagonal is longer. The neighbour
+ * O(1). Memory: about 4K + 230 bytes per point (32 of them for the bin grid). The neighbour
  * search is threaded (vtkSMPTools); the growth is sequential.
  *
  * @warning

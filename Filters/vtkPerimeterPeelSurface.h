@@ -241,11 +241,16 @@
  * too large; at ThresholdFactor 1.0 the paper's goblet cup (wall 0.1, about two spacings) comes
  * out closed over every point but zigzagging through the wall near the rim (clean from 1.5, or with
  * LocalSpacingNeighbors 0).
- * @warning Cost (measured 2026-11-23, processor times, load 5-8 on 2 cores): the peel takes 0.73
- * times the tetrahedralization on 10^5 random sphere points, 1.37 on a torus, and 1.28 and 1.42
- * at 10^6 points (issue 4 asks for 0.5). What remains is memory latency: the queue's
- * tests (half the peel: facet measures, edge walks), the local spacing (a fifth on the sphere)
- * and, on the torus, the group removals (a quarter).
+ * @warning Cost (measured 2026-11-24, processor times, load 10-14 on 2 cores; issue 4 asks for
+ * 0.5 times the tetrahedralization at 10^6 points): the peel takes 0.53 times the
+ * tetrahedralization on 10^6 random sphere points and 0.60 on a torus without the unfolding pass
+ * (rule 6), 1.09 on the sphere with it; on 10^5 points 0.90 (sphere) and 0.73 (torus). It
+ * works on a renumbered copy of the tetrahedralization (vertices in insertion order, cells sorted
+ * by their newest vertex: pcs::Delaunay3D::RenumberByInsertion; 36 bytes per cell more while the
+ * cells are copied), so that the cells and points the queue visits all over the surface are
+ * mostly near their neighbours in memory, and prefetches the cells of the next turns. What
+ * remains is memory latency: the queue's tests and the walks around edges, the unfolding pass,
+ * the local spacing and, on the torus, the group removals.
  * Random spheres of 10^5 points (16 seeds) and 10^6 points come out genus 0.
  *
  * @sa vtkIncrementalDelaunay3D vtkReconstructionQuality

@@ -702,6 +702,10 @@ bool Delaunay3DBuilder::Run(std::vector<int32_t> order, const Delaunay3D::Progre
     duplicate.first = order[duplicate.first];
     duplicate.second = order[duplicate.second];
   }
+  if (this->Owner.KeepInsertionOrder)
+  {
+    this->Owner.InsertionOrder = std::move(order);
+  }
   return true;
 }
 
@@ -788,9 +792,64 @@ bool Delaunay3D::Triangulate(
   return true;
 }
 
+std::vector<int32_t> Delaunay3D::RenumberByInsertion()
+{
+  std::vector<int32_t> order = std::move(this->InsertionOrder);
+  this->InsertionOrder = std::vector<int32_t>();
+  if (order.empty())
+  {
+    return order;
+  }
+  this->Circumradii.reset();
+  const int32_t largestId = *std::max_element(order.begin(), order.end());
+  std::vector<int32_t> position(static_cast<size_t>(largestId) + 1, -1);
+  for (size_t i = 0; i < order.size(); ++i)
+  {
+    position[order[i]] = static_cast<int32_t>(i);
+  }
+  // Counting sort of the cells by their newest vertex: first[v + 1] counts the cells whose
+  // newest vertex is v, then holds where they start.
+  const size_t cells = this->Cells.size();
+  std::vector<uint32_t> index(cells);
+  std::vector<uint32_t> first(order.size() + 1, 0);
+  for (size_t c = 0; c < cells; ++c)
+  {
+    int32_t* v = this->Cells[c].Vertices;
+    int32_t newest = 0;
+    for (int k = 0; k < 4; ++k)
+    {
+      v[k] = v[k] >= 0 ? position[v[k]] : v[k];
+      newest = std::max(newest, v[k]);
+    }
+    index[c] = static_cast<uint32_t>(newest);
+    ++first[newest + 1];
+  }
+  for (size_t i = 1; i < first.size(); ++i)
+  {
+    first[i] += first[i - 1];
+  }
+  for (size_t c = 0; c < cells; ++c)
+  {
+    index[c] = first[index[c]]++;
+  }
+  std::vector<Cell> sorted(cells);
+  for (size_t c = 0; c < cells; ++c)
+  {
+    Cell cell = this->Cells[c];
+    for (int j = 0; j < 4; ++j)
+    {
+      cell.Neighbors[j] = (index[cell.Neighbors[j] >> 2] << 2) | (cell.Neighbors[j] & 3);
+    }
+    sorted[index[c]] = cell;
+  }
+  this->Cells.swap(sorted);
+  return order;
+}
+
 void Delaunay3D::Clear()
 {
   this->Cells = std::vector<Cell>();
+  this->InsertionOrder = std::vector<int32_t>();
   this->Circumradii.reset();
   this->NumberOfFiniteCells = 0;
   this->Duplicates.clear();

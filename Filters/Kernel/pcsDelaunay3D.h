@@ -42,6 +42,21 @@ public:
   /// triangulation then no longer holds radii.
   double* ReleaseCircumradii() { return this->Circumradii.release(); }
 
+  /// Keep the insertion order after Triangulate, for RenumberByInsertion (4 bytes per point).
+  /// Default off.
+  void SetKeepInsertionOrder(bool keep) { this->KeepInsertionOrder = keep; }
+
+  /// Renumber for memory locality (after Triangulate with SetKeepInsertionOrder on): vertex ids
+  /// become insertion positions (BRIO rounds, each along a Hilbert curve; the last round holds
+  /// 7/8 of the points) and the cells are sorted by their newest vertex (stable), so that cells
+  /// and vertices close in space are mostly close in memory. Returns the point id at each
+  /// insertion position (the caller's ids, duplicates included: no cell references those), that
+  /// is, of each vertex id; Vertex() then returns vertex ids, not point ids. Returns an empty
+  /// vector and changes nothing when the order was not kept. GetDuplicates() keeps point ids;
+  /// circumradii are released (they follow the old cell order). Costs one pass over the cells
+  /// and a copy of them.
+  std::vector<int32_t> RenumberByInsertion();
+
   /// Number of finite cells.
   int64_t GetNumberOfFiniteCells() const { return this->NumberOfFiniteCells; }
 
@@ -100,8 +115,10 @@ private:
     void operator()(double* p) const { std::free(p); }
   };
   std::unique_ptr<double[], FreeDeleter> Circumradii;
+  std::vector<int32_t> InsertionOrder; // point id of each insertion position, when kept
   int64_t NumberOfFiniteCells = 0;
   bool ComputeCircumradii = false;
+  bool KeepInsertionOrder = false;
   friend class Delaunay3DBuilder;
 };
 } // namespace pcs

@@ -62,6 +62,9 @@ constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 // loop spans (twice a hemisphere bowl's), by a least-dihedral fill folding at most this much.
 constexpr double CapAreaRatio = 4.0;
 constexpr double MaximumCapDihedral = 150.0; // degrees
+// FillMeetsMesh searches the mesh vertices within a fill triangle's radius plus this many mean
+// spacings; the triangles with a longer edge are kept in a list and all tested.
+constexpr double LongEdgeSpacings = 4.0;
 // Scan-line sampling is taken for the pattern of a region when at least this share of a point's
 // K nearest lie along their lines too (pcs::AddOffLineNeighbors' minimumShare).
 constexpr double ScanLineShare = 0.5;
@@ -71,6 +74,32 @@ constexpr vtkIdType MaximumNumberOfPoints = 500000000;
 inline double Distance(const double* a, const double* b)
 {
   return std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+}
+
+// Axis-aligned bounding box (xmin, xmax, ymin, ymax, zmin, zmax) of the points `ids` of `xyz`.
+void BoundingBox(const double* xyz, const int32_t* ids, size_t count, double box[6])
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    box[2 * c] = std::numeric_limits<double>::infinity();
+    box[2 * c + 1] = -std::numeric_limits<double>::infinity();
+  }
+  for (size_t i = 0; i < count; ++i)
+  {
+    const double* p = xyz + 3 * static_cast<size_t>(ids[i]);
+    for (int c = 0; c < 3; ++c)
+    {
+      box[2 * c] = std::min(box[2 * c], p[c]);
+      box[2 * c + 1] = std::max(box[2 * c + 1], p[c]);
+    }
+  }
+}
+
+// Closed boxes with a common point.
+bool BoxesOverlap(const double a[6], const double b[6])
+{
+  return a[0] <= b[1] && b[0] <= a[1] && a[2] <= b[3] && b[2] <= a[3] && a[4] <= b[5] &&
+    b[4] <= a[5];
 }
 
 // Distance between the segments pq and rs (floating point; a metric threshold only).
@@ -181,8 +210,26 @@ public:
   // Counts.
   vtkIdType LostPoints = 0, Islands = 0, Holes = 0, Bridges = 0, Chords = 0, HolesFilled = 0,
             HolesLeftOpen = 0, Swaps = 0, Inserted = 0, Added = 0, LoopsClosed = 0,
-            LoopsFilledByDihedral = 0, EndsCapped = 0, Grown = 0;
+            LoopsFilledByDihedral = 0, EndsCapped = 0, Grown = 0, FillsRefused = 0;
   bool Aborted = false;
+  struct LongTriangle
+  {
+    int32_t Ids[3];
+    double Box[6];
+  };
+  std::vector<LongTriangle> LongTriangles; // FillMeetsMesh's triangles beyond its pad
+  std::vector<char> OnRefusedLoop;         // per vertex: on a hole whose fill step 6 refused
+  bool OnRefusedLoopAny(const std::vector<int32_t>& loop) const
+  {
+    for (int32_t v : loop)
+    {
+      if (!this->OnRefusedLoop.empty() && this->OnRefusedLoop[v])
+      {
+        return true;
+      }
+    }
+    return false;
+  }
 
   const double* P(int32_t i) const { return &this->X[3 * static_cast<size_t>(i)]; }
   double SamplingDistance(int32_t a, int32_t b) const;
@@ -209,6 +256,14 @@ public:
   void Step4Bridges();
   void Step6FillHoles(double begin, double end);
   void RecordFill(const pcs::holes::FillResult& result);
+  void CollectLongTriangles();
+  void AccountForFill(const std::vector<int32_t>& triangles);
+  bool FarApart(const int32_t* f, const int32_t* g) const;
+  bool FillMeetsMesh(const std::vector<int32_t>& fill) const;
+  bool FillsMeet(const std::vector<int32_t>& first, const std::vector<int32_t>& second) const;
+  bool LeastDihedralFill(const std::vector<int32_t>& loop,
+    double maximumDihedral,
+    std::vector<int32_t>& triangles);
   void InsertLostPoints(double begin, double end);
   void CloseSharpEars(int32_t start);
   void CloseSmallLoops();
@@ -1773,10 +1828,23 @@ void Reconstruction::Step6FillHoles(double begin, double end)
   std::vector<int32_t> loop, candidates;
   std::vector<double> vectors;
   std::vector<int64_t> added;
+  // The fills are first made for every hole, then checked: a fill that meets the mesh or the
+  // fill of another hole is not kept (FillMeetsMesh, FillsMeet), then the others are added.
+  struct Candidate
+  {
+    std::vector<int32_t> Loop;
+    std::vector<double> Vectors;
+    std::vector<int32_t> Lost;
+    pcs::holes::FillResult Result;
+    double Box[6];
+    bool MeetsMesh = false, MeetsFill = false;
+  };
+  std::vector<Candidate> fills;
   const size_t count = this->FinalLoops.size();
   for (size_t l = 0; l < count; ++l)
   {
-    if ((l & 63) == 0 && !this->Progress(begin + (end - begin) * l / static_cast<double>(count)))
+    if ((l & 63) == 0 &&
+      !this->Progress(begin + 0.5 * (end - begin) * l / static_cast<double>(count)))
     {
       return;
     }
@@ -1825,9 +1893,88 @@ void Reconstruction::Step6FillHoles(double begin, double end)
       }
     }
     std::sort(candidates.begin(), candidates.end());
-    pcs::holes::FillResult result;
-    filler.Fill(this->X.data(), loop, vectors, candidates, result);
+    Candidate fill;
+    filler.Fill(this->X.data(), loop, vectors, candidates, fill.Result);
+    if (fill.Result.Triangles.empty())
+    {
+      ++this->HolesLeftOpen;
+      continue;
+    }
+    fill.Loop = loop;
+    fill.Vectors = vectors;
+    fill.Lost = candidates;
+    BoundingBox(
+      this->X.data(), fill.Result.Triangles.data(), fill.Result.Triangles.size(), fill.Box);
+    fills.push_back(std::move(fill));
+  }
+  this->CollectLongTriangles();
+  for (size_t i = 0; i < fills.size(); ++i)
+  {
+    if ((i & 15) == 0 &&
+      !this->Progress(begin + (0.5 + 0.3 * i / static_cast<double>(fills.size())) * (end - begin)))
+    {
+      return;
+    }
+    Candidate& fill = fills[i];
+    fill.MeetsMesh = this->FillMeetsMesh(fill.Result.Triangles);
+    for (size_t j = i + 1; j < fills.size(); ++j)
+    {
+      if (BoxesOverlap(fill.Box, fills[j].Box) &&
+        this->FillsMeet(fill.Result.Triangles, fills[j].Result.Triangles))
+      {
+        fill.MeetsFill = true;
+        fills[j].MeetsFill = true;
+      }
+    }
+  }
+  const double maximumDihedral =
+    vtkMath::RadiansFromDegrees(this->Self->GetMaximumNormalDeviation());
+  for (Candidate& fill : fills)
+  {
+    // A lost point taken by an earlier fill: this hole is filled again without it, and checked
+    // again against the mesh.
+    bool taken = false;
+    for (int32_t q : fill.Result.UsedPoints)
+    {
+      taken =
+        taken || this->Status[q] != vtkGreedySurfaceTriangulation::LOST || !this->Mesh.IsFree(q);
+    }
+    if (taken && !fill.MeetsFill)
+    {
+      candidates.clear();
+      for (int32_t q : fill.Lost)
+      {
+        if (this->Status[q] == vtkGreedySurfaceTriangulation::LOST && this->Mesh.IsFree(q))
+        {
+          candidates.push_back(q);
+        }
+      }
+      fill.Result = pcs::holes::FillResult();
+      filler.Fill(this->X.data(), fill.Loop, fill.Vectors, candidates, fill.Result);
+      fill.MeetsMesh = this->FillMeetsMesh(fill.Result.Triangles);
+    }
+    // A fill meeting the mesh: the loop's least-dihedral triangulation instead, if it meets
+    // nothing. A loop whose fill meets another's, or with neither fill, stays open (and is not
+    // filled by the later steps either).
+    if (fill.MeetsMesh && !fill.MeetsFill)
+    {
+      fill.Result = pcs::holes::FillResult();
+      fill.MeetsMesh = !this->LeastDihedralFill(fill.Loop, maximumDihedral, fill.Result.Triangles);
+      fill.Result.Complete = !fill.MeetsMesh;
+    }
+    if (fill.MeetsMesh || fill.MeetsFill)
+    {
+      ++this->HolesLeftOpen;
+      ++this->FillsRefused;
+      this->OnRefusedLoop.resize(static_cast<size_t>(this->N), 0);
+      for (int32_t v : fill.Loop)
+      {
+        this->OnRefusedLoop[v] = 1;
+      }
+      continue;
+    }
     // Add the triangles; undo the whole hole if the mesh would not stay a manifold.
+    const pcs::holes::FillResult& result = fill.Result;
     if (result.Triangles.empty() ||
       !this->Mesh.AddTriangles(result.Triangles.data(), result.Triangles.size() / 3, added))
     {
@@ -1835,12 +1982,184 @@ void Reconstruction::Step6FillHoles(double begin, double end)
       continue;
     }
     this->RecordFill(result);
+    this->AccountForFill(result.Triangles);
     ++this->HolesFilled;
     if (!result.Complete)
     {
       ++this->HolesLeftOpen; // partly filled
     }
   }
+}
+
+//------------------------------------------------------------------------------------------------
+// Issue 7: a fill is a guess of missing surface; it may not pass through or touch the mesh
+// (a cap across a rim that another part of the mesh crosses or lies on, such as the outer rim of
+// a washer whose faces were not sampled: the inner tube ends on its flat cap) nor another fill
+// (the caps of two rims that bound one gap, such as the inner and outer rims of the washer's
+// face, overlap). The search: the mesh triangles with an edge longer than LongEdgeSpacings are
+// listed (CollectLongTriangles at the start of each filling step, AccountForFill after each fill)
+// and all tested; every other mesh triangle that meets a fill triangle has a vertex within that
+// fill triangle's radius around its centroid plus LongEdgeSpacings (the point locator).
+void Reconstruction::CollectLongTriangles()
+{
+  this->LongTriangles.clear();
+  const int64_t ids = this->Mesh.GetNumberOfTriangleIds();
+  for (int64_t t = 0; t < ids; ++t)
+  {
+    if (!this->Mesh.IsTriangleRemoved(t))
+    {
+      this->AccountForFill(
+        std::vector<int32_t>(this->Mesh.GetTriangle(t), this->Mesh.GetTriangle(t) + 3));
+    }
+  }
+}
+
+// Keeps the triangles (3 point ids each) with an edge longer than the search pad of
+// FillMeetsMesh, which tests them all.
+void Reconstruction::AccountForFill(const std::vector<int32_t>& triangles)
+{
+  const double pad = LongEdgeSpacings * this->Spacing;
+  for (size_t t = 0; t < triangles.size(); t += 3)
+  {
+    const int32_t* v = &triangles[t];
+    if (Distance(this->P(v[0]), this->P(v[1])) > pad ||
+      Distance(this->P(v[1]), this->P(v[2])) > pad || Distance(this->P(v[2]), this->P(v[0])) > pad)
+    {
+      LongTriangle t = { { v[0], v[1], v[2] }, {} };
+      BoundingBox(this->X.data(), v, 3, t.Box);
+      this->LongTriangles.push_back(t);
+    }
+  }
+}
+
+// Two triangles (3 point ids each) whose vertices are all farther apart than MaximumBridgeLength
+// spacings: parts of the surface that the sampling does not join, so a contact between them is a
+// crossing. Nearer, a contact is a fold at the resolution of the sampling (a fill projected flat
+// grazing the ring beyond its ragged rim, a fill on a thin part grazing its other side, the flat
+// fills of two neighbouring holes before fairing) and is tolerated.
+bool Reconstruction::FarApart(const int32_t* f, const int32_t* g) const
+{
+  const double limit = this->Self->GetMaximumBridgeLength() * this->Spacing;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      if (!(Distance(this->P(f[i]), this->P(g[j])) > limit))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// True when a triangle of `fill` (point ids, 3 per triangle, not in the mesh) meets a mesh
+// triangle far apart from it (FarApart; pcs::holes::TrianglesIntersect, exact).
+bool Reconstruction::FillMeetsMesh(const std::vector<int32_t>& fill) const
+{
+  std::vector<int64_t> around(64);
+  auto meet = [this](const int32_t* f, const int32_t* g)
+  {
+    return this->FarApart(f, g) &&
+      pcs::holes::TrianglesIntersect(
+        this->P(f[0]), this->P(f[1]), this->P(f[2]), this->P(g[0]), this->P(g[1]), this->P(g[2]));
+  };
+  const double pad = LongEdgeSpacings * this->Spacing;
+  vtkNew<vtkIdList> near;
+  for (size_t t = 0; t < fill.size(); t += 3)
+  {
+    const int32_t* f = &fill[t];
+    double box[6];
+    BoundingBox(this->X.data(), f, 3, box);
+    for (const auto& g : this->LongTriangles)
+    {
+      if (BoxesOverlap(box, g.Box) && meet(f, g.Ids))
+      {
+        return true;
+      }
+    }
+    // Every other triangle meeting f at a point x has a vertex within the pad of x, and x is
+    // within f's longest edge of each vertex of f: when these two add up to at most
+    // MaximumBridgeLength spacings, no such triangle is far apart from f.
+    const double longest = std::max({ Distance(this->P(f[0]), this->P(f[1])),
+      Distance(this->P(f[1]), this->P(f[2])),
+      Distance(this->P(f[2]), this->P(f[0])) });
+    if (longest + pad <= this->Self->GetMaximumBridgeLength() * this->Spacing)
+    {
+      continue;
+    }
+    // Otherwise those triangles have a vertex within f's radius around its centroid plus the
+    // pad (a triangle may be tested from each of its vertices).
+    double centre[3] = { 0, 0, 0 };
+    for (int j = 0; j < 3; ++j)
+    {
+      vtkMath::Add(centre, this->P(f[j]), centre);
+    }
+    vtkMath::MultiplyScalar(centre, 1.0 / 3.0);
+    double radius = 0.0;
+    for (int j = 0; j < 3; ++j)
+    {
+      radius = std::max(radius, Distance(centre, this->P(f[j])));
+    }
+    this->Locator->FindPointsWithinRadius(radius + pad, centre, near);
+    for (vtkIdType k = 0; k < near->GetNumberOfIds(); ++k)
+    {
+      const int32_t v = static_cast<int32_t>(near->GetId(k));
+      if (this->Mesh.IsFree(v))
+      {
+        continue;
+      }
+      int n = this->Mesh.GetVertexTriangles(v, around.data(), static_cast<int>(around.size()));
+      if (n > static_cast<int>(around.size()))
+      {
+        around.resize(static_cast<size_t>(n));
+        n = this->Mesh.GetVertexTriangles(v, around.data(), n);
+      }
+      for (int m = 0; m < n; ++m)
+      {
+        const int32_t* g = this->Mesh.GetTriangle(around[m]);
+        bool overlap = true;
+        for (int c = 0; c < 3 && overlap; ++c)
+        {
+          const double a = this->P(g[0])[c], b = this->P(g[1])[c], d = this->P(g[2])[c];
+          overlap = std::min({ a, b, d }) <= box[2 * c + 1] && std::max({ a, b, d }) >= box[2 * c];
+        }
+        if (overlap && meet(f, g))
+        {
+          return true;
+        }
+      }
+    }
+  }
+  return false;
+}
+
+// True when a triangle of `first` meets a triangle of `second` far apart from it (FarApart).
+bool Reconstruction::FillsMeet(const std::vector<int32_t>& first,
+  const std::vector<int32_t>& second) const
+{
+  std::vector<double> boxes(2 * second.size());
+  for (size_t t = 0; t < second.size(); t += 3)
+  {
+    BoundingBox(this->X.data(), &second[t], 3, &boxes[2 * t]);
+  }
+  for (size_t s = 0; s < first.size(); s += 3)
+  {
+    const int32_t* f = &first[s];
+    double box[6];
+    BoundingBox(this->X.data(), f, 3, box);
+    for (size_t t = 0; t < second.size(); t += 3)
+    {
+      const int32_t* g = &second[t];
+      if (BoxesOverlap(box, &boxes[2 * t]) && this->FarApart(f, g) &&
+        pcs::holes::TrianglesIntersect(
+          this->P(f[0]), this->P(f[1]), this->P(f[2]), this->P(g[0]), this->P(g[1]), this->P(g[2])))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------------------------
@@ -2077,6 +2396,7 @@ void Reconstruction::CloseSmallLoops()
   filler.MaximumGreedyPoints = this->Self->GetMaximumHolePoints();
   filler.EdgeExists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
   this->UseSamplingMetric(filler);
+  this->CollectLongTriangles();
   std::vector<int32_t> loop;
   for (const auto& front : loops)
   {
@@ -2109,7 +2429,12 @@ void Reconstruction::CloseSmallLoops()
     {
       continue;
     }
-    // A vertex twice in the loop (the loop touches itself) is left to step 5's chords.
+    // A vertex twice in the loop (the loop touches itself) is left to step 5's chords; a loop
+    // through a hole whose fill step 6 refused stays open.
+    if (this->OnRefusedLoopAny(loop))
+    {
+      continue;
+    }
     std::vector<int32_t> sorted(loop);
     std::sort(sorted.begin(), sorted.end());
     if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
@@ -2124,6 +2449,45 @@ void Reconstruction::CloseSmallLoops()
       this->LoopsFilledByDihedral += byDihedral ? 1 : 0;
     }
   }
+}
+
+// The triangulation of `loop` (reversed, as a hole) on its own vertices of least largest dihedral
+// angle (pcs::holes::LeastDihedralFill, the mesh triangles across the loop included), appended to
+// `triangles` when that angle is at most `maximumDihedral` (radians) and the fill meets no mesh
+// triangle (FillMeetsMesh). False (and a refused fill counted) otherwise.
+bool Reconstruction::LeastDihedralFill(const std::vector<int32_t>& loop,
+  double maximumDihedral,
+  std::vector<int32_t>& triangles)
+{
+  auto across = [this, &loop](int e, double nrm[3])
+  {
+    const int32_t a = loop[e], b = loop[(e + 1) % loop.size()];
+    const int32_t x = this->Mesh.OppositeVertex(b, a); // the mesh triangle (b, a, x)
+    if (x < 0)
+    {
+      return false;
+    }
+    double u[3], v[3];
+    vtkMath::Subtract(this->P(a), this->P(b), u);
+    vtkMath::Subtract(this->P(x), this->P(b), v);
+    vtkMath::Cross(u, v, nrm);
+    return vtkMath::Normalize(nrm) > 0.0;
+  };
+  auto edgeExists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
+  std::vector<int32_t> fill;
+  const double worst =
+    pcs::holes::LeastDihedralFill(this->X.data(), loop, edgeExists, across, fill);
+  if (!(worst >= 0.0 && worst <= maximumDihedral))
+  {
+    return false;
+  }
+  if (this->FillMeetsMesh(fill))
+  {
+    ++this->FillsRefused;
+    return false;
+  }
+  triangles.insert(triangles.end(), fill.begin(), fill.end());
+  return true;
 }
 
 // The fill of a loop left open after step 6 (`loop` reversed, as a hole; no vertex twice): steps
@@ -2157,39 +2521,24 @@ bool Reconstruction::FillOpenLoop(const pcs::holes::HoleFiller& filler,
   std::sort(candidates.begin(), candidates.end());
   pcs::holes::FillResult result;
   filler.Fill(this->X.data(), loop, vectors, candidates, result);
-  if (!result.Complete)
+  // A partial fill would leave a more ragged loop, a fill meeting the mesh may not be made: the
+  // triangulation of the loop of least largest dihedral angle instead (no lost point used).
+  if (!result.Complete || this->FillMeetsMesh(result.Triangles))
   {
-    // A partial fill would leave a more ragged loop: the triangulation of the loop of least
-    // largest dihedral angle instead (no lost point used).
     result = pcs::holes::FillResult();
-    auto across = [this, &loop](int e, double nrm[3]) {
-      const int32_t a = loop[e], b = loop[(e + 1) % loop.size()];
-      const int32_t x = this->Mesh.OppositeVertex(b, a); // the mesh triangle (b, a, x)
-      if (x < 0)
-      {
-        return false;
-      }
-      double u[3], v[3];
-      vtkMath::Subtract(this->P(a), this->P(b), u);
-      vtkMath::Subtract(this->P(x), this->P(b), v);
-      vtkMath::Cross(u, v, nrm);
-      return vtkMath::Normalize(nrm) > 0.0;
-    };
-    const double worst =
-      pcs::holes::LeastDihedralFill(this->X.data(), loop, filler.EdgeExists, across, result.Triangles);
-    if (!(worst >= 0.0 && worst <= maximumDihedral))
+    if (!this->LeastDihedralFill(loop, maximumDihedral, result.Triangles))
     {
       return false;
     }
     byDihedral = true;
   }
   std::vector<int64_t> added;
-  if (result.Triangles.empty() ||
-    !this->Mesh.AddTriangles(result.Triangles.data(), result.Triangles.size() / 3, added))
+  if (!this->Mesh.AddTriangles(result.Triangles.data(), result.Triangles.size() / 3, added))
   {
     return false;
   }
   this->RecordFill(result);
+  this->AccountForFill(result.Triangles);
   return true;
 }
 
@@ -2238,6 +2587,7 @@ void Reconstruction::CapOpenEnds()
   filler.MaximumGreedyPoints = this->Self->GetMaximumHolePoints();
   filler.EdgeExists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
   this->UseSamplingMetric(filler);
+  this->CollectLongTriangles();
   std::vector<int32_t> loop, sorted;
   for (const auto& front : loops)
   {
@@ -2246,11 +2596,12 @@ void Reconstruction::CapOpenEnds()
       continue;
     }
     // Reversed: the fill traverses the boundary edges against the mesh (as in step 6). A loop
-    // touching itself at a vertex is left open.
+    // touching itself at a vertex, or through a hole whose fill step 6 refused, is left open.
     loop.assign(front.rbegin(), front.rend());
     sorted = loop;
     std::sort(sorted.begin(), sorted.end());
-    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end() ||
+      this->OnRefusedLoopAny(loop))
     {
       continue;
     }
@@ -3071,6 +3422,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
     pcs::AddFieldCount(fd, "NumberOfSmallLoopsClosed", r.LoopsClosed);
     pcs::AddFieldCount(fd, "NumberOfSmallLoopsFilledByDihedral", r.LoopsFilledByDihedral);
     pcs::AddFieldCount(fd, "NumberOfEndsCapped", r.EndsCapped);
+    pcs::AddFieldCount(fd, "NumberOfFillsRefused", r.FillsRefused);
     pcs::AddFieldCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
     pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", duplicates);
     pcs::AddFieldCount(fd, "NumberOfSkippedPoints", skipped);

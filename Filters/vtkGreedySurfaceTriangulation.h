@@ -129,6 +129,27 @@
  *   diagonal. The lost points of a hole are those within its radius of its centroid, projecting
  *   inside a piece and within half the piece's radius of its plane. A hole whose triangulation
  *   would break the manifold (an edge with a third triangle, a vertex with two fans) is left open.
+ * - Fills that cross (ours, issue 7; every fill of step 6, small loops and open ends): a fill is
+ *   a guess of missing surface, so it may not pass through or touch another part of the mesh
+ *   nor another fill. Every fill is checked before it is added: none of its triangles may meet
+ *   (exact triangle-triangle test, pcs::holes::TrianglesIntersect: crossing, touching or
+ *   overlapping in a common plane) a mesh triangle whose vertices are all farther than
+ *   MaximumBridgeLength spacings from its own -- a part of the surface the sampling does not
+ *   join to it; nearer, a contact is a fold at the sampling's resolution (a fill projected flat
+ *   grazing the ring beyond a ragged rim, or the other side of a thin part) and is tolerated.
+ *   The mesh triangles are found with the point locator (the mesh vertices within the fill
+ *   triangle's radius plus 4 spacings; the longer triangles are all tested). The fills of all
+ *   the holes of step 6 are made first and checked against each other too: two fills that meet
+ *   cap two rims of one gap -- the inner and outer rims of a washer's face sampled only at its
+ *   rims, where a disc on the outer rim lies on the inner rim and a disc on the inner rim closes
+ *   the through-hole -- and both holes stay open. A fill meeting the mesh is replaced by the
+ *   loop's least-dihedral triangulation (below) when that one meets nothing and its largest
+ *   dihedral angle is at most MaximumNormalDeviation; otherwise the hole stays open. A hole left
+ *   open by these rules is not filled by the later steps either. Counted in
+ *   NumberOfFillsRefused (and in NumberOfHolesLeftOpen for step 6). The fairing (below) moves
+ *   the new points of a fill afterwards and is not checked again. A tube open at both ends
+ *   with nothing inside is still capped at both ends (its rims are holes to step 3, and their
+ *   caps meet nothing).
  * - Step 7 (Fig. 14): the duplicated points are merged back (the mesh refers to the original
  *   points throughout) and, when SwapBridgeEdges is on, every bridge or chord edge AB whose two
  *   triangles ABC, BAD have |CD| < |AB| is replaced by CD, unless CD is an edge already or the
@@ -218,7 +239,7 @@
  * (after step 2), `NumberOfIslands`, `NumberOfHoles` (after step 4), `NumberOfBridges`,
  * `NumberOfChords`, `NumberOfHolesFilled`, `NumberOfHolesLeftOpen`, `NumberOfSwaps`,
  * `NumberOfInsertedPoints`, `NumberOfSmallLoopsClosed`, `NumberOfSmallLoopsFilledByDihedral`,
- * `NumberOfEndsCapped`, `NumberOfAddedPoints`,
+ * `NumberOfEndsCapped`, `NumberOfFillsRefused`, `NumberOfAddedPoints`,
  * `NumberOfUnusedPoints`,
  * `NumberOfDuplicatePoints`, `NumberOfSkippedPoints`, `NumberOfOutliers`, `MeanSpacing`, and the
  * columns of the paper's Table 1: `NumberOfPoints` (input points), `AverageUniformityInSSR` (mean m

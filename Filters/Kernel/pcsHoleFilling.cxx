@@ -209,6 +209,69 @@ bool SegmentsIntersect(const double* p, const double* q, const double* r, const 
     (o3 == 0 && OnClosedSegment(r, s, p)) || (o4 == 0 && OnClosedSegment(r, s, q));
 }
 
+namespace
+{
+// Exact: the closed segment pq meets the closed triangle abc.
+bool SegmentMeetsTriangle(const double* p,
+  const double* q,
+  const double* a,
+  const double* b,
+  const double* c)
+{
+  using predicates::Orient3D;
+  const int sideP = Orient3D(a, b, c, p), sideQ = Orient3D(a, b, c, q);
+  if (sideP * sideQ > 0)
+  {
+    return false;
+  }
+  if (sideP != 0 || sideQ != 0)
+  {
+    // The segment meets the plane at one point: on the line pq, inside the closed triangle
+    // when the line does not pass strictly on both sides of its edges.
+    const int s1 = Orient3D(p, q, a, b), s2 = Orient3D(p, q, b, c), s3 = Orient3D(p, q, c, a);
+    const bool positive = s1 > 0 || s2 > 0 || s3 > 0, negative = s1 < 0 || s2 < 0 || s3 < 0;
+    return !(positive && negative);
+  }
+  // Coplanar: on a coordinate plane where the triangle keeps a non-zero area (an affine map of
+  // the common plane, which keeps every incidence).
+  for (int drop = 2; drop >= 0; --drop)
+  {
+    const int i = (drop + 1) % 3, j = (drop + 2) % 3;
+    const double A[2] = { a[i], a[j] }, B[2] = { b[i], b[j] }, C[2] = { c[i], c[j] };
+    const int turn = Orient2D(A, B, C);
+    if (turn == 0)
+    {
+      continue;
+    }
+    const double P[2] = { p[i], p[j] }, Q[2] = { q[i], q[j] };
+    auto inside = [&](const double* x)
+    {
+      return Orient2D(A, B, x) * turn >= 0 && Orient2D(B, C, x) * turn >= 0 &&
+        Orient2D(C, A, x) * turn >= 0;
+    };
+    return inside(P) || inside(Q) || SegmentsIntersect(P, Q, A, B) ||
+      SegmentsIntersect(P, Q, B, C) || SegmentsIntersect(P, Q, C, A);
+  }
+  return false; // zero-area triangle
+}
+} // namespace
+
+bool TrianglesIntersect(const double* a,
+  const double* b,
+  const double* c,
+  const double* d,
+  const double* e,
+  const double* f)
+{
+  if (projected::Collinear(a, b, c) || projected::Collinear(d, e, f))
+  {
+    return false;
+  }
+  return SegmentMeetsTriangle(a, b, d, e, f) || SegmentMeetsTriangle(b, c, d, e, f) ||
+    SegmentMeetsTriangle(c, a, d, e, f) || SegmentMeetsTriangle(d, e, a, b, c) ||
+    SegmentMeetsTriangle(e, f, a, b, c) || SegmentMeetsTriangle(f, d, a, b, c);
+}
+
 bool IsSimplePolygon(const std::vector<double>& uv)
 {
   const size_t n = uv.size() / 2;

@@ -95,6 +95,18 @@ bool GreedyTriangulation2D(const std::vector<double>& uv,
   std::vector<int32_t>& triangles,
   const std::function<double(int, int)>& length2 = nullptr);
 
+/// Exact: the closed triangles abc and def have a common point (crossing, touching at a point
+/// or along an edge, or overlapping in a common plane). Two closed triangles meet exactly when an
+/// edge of one meets the other, which is decided with orientation predicates (pcsPredicates.h)
+/// on the input coordinates; coplanar cases are decided on a coordinate plane onto which the
+/// triangle projects with non-zero area. A triangle of zero area is met by nothing (false).
+bool TrianglesIntersect(const double* a,
+  const double* b,
+  const double* c,
+  const double* d,
+  const double* e,
+  const double* f);
+
 /// Result of HoleFiller::Fill.
 struct FillResult
 {

@@ -12,6 +12,11 @@
 // - a capsule cut in two by an empty slab wider than MaximumBridgeLength: two closed pieces (the
 //   cut ends capped, the caps within the tube and on their side of the cut); with CapOpenEnds off
 //   two open ends; an open disc and a hemisphere bowl keep their one boundary loop;
+// - a washer sampled like a CAD part's mesh vertices (issue 7): a dense inner tube, an outer band
+//   sampled in sparse rings, the two flat faces sampled only at their rims (gaps far wider than
+//   MaximumBridgeLength): no fill across the through-hole or over the faces (a cap of the outer
+//   rim would lie on the inner rim, the caps of the two rims of a face overlap): two open
+//   components (four rims), every triangle on one of the two cylinders;
 // - the point data Status, LocalUniformity and the cell data Stage agree with each other and with
 //   the field data counts (the paper's Table 1 columns are recomputed from them);
 // - degenerate inputs (no point, 2 points, collinear points, a NaN point): a warning and a valid
@@ -669,6 +674,78 @@ bool TestOpenEnds()
   return true;
 }
 
+// The vertices of a washer's mesh: inner cylinder of radius 1 sampled every 0.05 (125 points
+// per ring, a ring every 0.05), outer cylinder of radius 2 sampled in rings of 48 points every
+// 0.25, both over |z| <= 1; the flat faces z = +-1 between them have no sample but their rims.
+std::vector<double> SparseWasher()
+{
+  std::vector<double> xyz;
+  auto ring = [&xyz](double r, double z, int n)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const double angle = 2.0 * vtkMath::Pi() * i / n;
+      xyz.insert(xyz.end(), { r * std::cos(angle), r * std::sin(angle), z });
+    }
+  };
+  for (int k = 0; k <= 40; ++k)
+  {
+    ring(1.0, -1.0 + 0.05 * k, 125);
+  }
+  for (int k = 0; k <= 8; ++k)
+  {
+    ring(2.0, -1.0 + 0.25 * k, 48);
+  }
+  return xyz;
+}
+
+bool TestWasher()
+{
+  const auto xyz = SparseWasher();
+  vtkNew<vtkGreedySurfaceTriangulation> greedy;
+  greedy->SetInputData(pcstest::MakeCloud(xyz));
+  greedy->Update();
+  vtkPolyData* mesh = greedy->GetOutput();
+  const double spacing = greedy->GetMeanSpacing();
+  PCS_CHECK(1.0 / spacing > greedy->GetMaximumBridgeLength(),
+    "washer: the faces (" << 1.0 / spacing << " spacings) are narrower than a bridge");
+  const Quality q = Measure(mesh);
+  PCS_CHECK(q.Components == 2 && q.Loops == 4,
+    "washer: " << q.Components << " components, " << q.Loops << " boundary loops");
+  PCS_CHECK(q.NonManifoldEdges == 0 && q.NonManifoldVertices == 0,
+    "washer: non-manifold " << q.NonManifoldEdges << " edges");
+  PCS_CHECK(q.UsedPoints == static_cast<double>(xyz.size() / 3), "washer: every point used");
+  // Every triangle lies on one of the two cylinders (its vertices on one radius, its centroid
+  // within a spacing of it): none across the through-hole, over a face or through the other
+  // part of the mesh.
+  int inside = 0, across = 0;
+  for (const auto& t : pcstest::CellTuples<3>(mesh))
+  {
+    double r[3], centroid[3] = { 0, 0, 0 };
+    for (int j = 0; j < 3; ++j)
+    {
+      double p[3];
+      mesh->GetPoint(t[j], p);
+      r[j] = std::hypot(p[0], p[1]);
+      vtkMath::Add(centroid, p, centroid);
+    }
+    vtkMath::MultiplyScalar(centroid, 1.0 / 3.0);
+    const double rc = std::hypot(centroid[0], centroid[1]);
+    inside += rc < 1.0 - spacing ? 1 : 0;
+    const bool onInner =
+      std::max({ std::abs(r[0] - 1), std::abs(r[1] - 1), std::abs(r[2] - 1) }) < 1e-9 &&
+      std::abs(rc - 1.0) < spacing;
+    const bool onOuter =
+      std::max({ std::abs(r[0] - 2), std::abs(r[1] - 2), std::abs(r[2] - 2) }) < 1e-9 &&
+      std::abs(rc - 2.0) < spacing;
+    across += onInner || onOuter ? 0 : 1;
+  }
+  PCS_CHECK(inside == 0, "washer: " << inside << " triangles inside the through-hole");
+  PCS_CHECK(across == 0, "washer: " << across << " triangles off the two cylinders");
+  PCS_CHECK(CheckArrays(greedy, "washer"), "");
+  return true;
+}
+
 bool TestDegenerate()
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -704,6 +781,7 @@ int TestGreedySurfaceTriangulation(int, char*[])
   ok = TestDamagedSphere() && ok;
   ok = TestBridgedIslands() && ok;
   ok = TestOpenEnds() && ok;
+  ok = TestWasher() && ok;
   ok = TestDegenerate() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -712,6 +712,61 @@ void TestDegenerateFills()
   }
 }
 
+// TrianglesIntersect on configurations whose answer is known by construction: crossing,
+// touching at a vertex, along an edge or at an edge crossing, coplanar overlap and containment,
+// and the same with a small gap (which each must not see), in both argument orders.
+void TestTrianglesIntersect()
+{
+  using pcs::holes::TrianglesIntersect;
+  struct Case
+  {
+    const char* Name;
+    double T[6][3];
+    bool Meet;
+  };
+  const Case cases[] = {
+    { "crossing",
+      { { 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 0.5, 0.5, -1 }, { 0.5, 0.5, 1 }, { 3, 3, 0.5 } },
+      true },
+    { "vertex on the face",
+      { { 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 0.5, 0.5, 0 }, { 0.5, 0.5, 1 }, { 1, 2, 1 } },
+      true },
+    { "vertex above the face",
+      { { 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 0.5, 0.5, 1e-12 }, { 0.5, 0.5, 1 }, { 1, 2, 1 } },
+      false },
+    { "edges crossing",
+      { { 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 1, -1, 0 }, { 1, 1, 0 }, { 1, 0, 1 } },
+      true },
+    { "edges apart",
+      { { 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 1, -1, 1e-9 }, { 1, 1, 1e-9 }, { 1, 0, 1 } },
+      false },
+    { "coplanar overlap",
+      { { 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 1, 1, 0 }, { 3, 1, 0 }, { 1, 3, 0 } },
+      true },
+    { "coplanar inside",
+      { { 0, 0, 0 }, { 4, 0, 0 }, { 0, 4, 0 }, { 1, 1, 0 }, { 2, 1, 0 }, { 1, 2, 0 } },
+      true },
+    { "coplanar apart",
+      { { 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 1.5, 1.5, 0 }, { 3, 1.5, 0 }, { 1.5, 3, 0 } },
+      false },
+    { "tilted coplanar touch",
+      { { 0, 0, 0 }, { 2, 0, 2 }, { 0, 2, 0 }, { 1, 1, 1 }, { 3, 1, 3 }, { 1, 3, 1 } },
+      true },
+    { "parallel planes",
+      { { 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 0, 0, 1 }, { 2, 0, 1 }, { 0, 2, 1 } },
+      false },
+  };
+  for (const Case& c : cases)
+  {
+    const auto& t = c.T;
+    CHECK(TrianglesIntersect(t[0], t[1], t[2], t[3], t[4], t[5]) == c.Meet, "%s", c.Name);
+    CHECK(TrianglesIntersect(t[3], t[4], t[5], t[0], t[1], t[2]) == c.Meet, "%s (swapped)", c.Name);
+  }
+  const double flat[3][3] = { { 0, 0, 0 }, { 1, 1, 1 }, { 2, 2, 2 } };
+  const double any[3][3] = { { 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 } };
+  CHECK(!TrianglesIntersect(flat[0], flat[1], flat[2], any[0], any[1], any[2]), "zero area");
+}
+
 int main()
 {
   TestPolygonPredicates();
@@ -719,6 +774,7 @@ int main()
   TestHoleFiller();
   TestLeastDihedralFill();
   TestDegenerateFills();
+  TestTrianglesIntersect();
   std::printf("%d failure(s)\n", Failures);
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -115,6 +115,27 @@ void PointBins::Build(vtkStaticPointLocator* locator,
     this->Origin[c] = bounds[2 * c];
     this->Inverse[c] = spacing[c] > 0.0 ? 1.0 / spacing[c] : 0.0;
   }
+  this->Fill(xyz, n, withCoordinates);
+}
+
+void PointBins::Build(const double bounds[6],
+  const int divisions[3],
+  const double* xyz,
+  int32_t n,
+  bool withCoordinates)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    const double extent = bounds[2 * c + 1] - bounds[2 * c];
+    this->Divisions[c] = std::max(1, divisions[c]);
+    this->Origin[c] = std::isfinite(bounds[2 * c]) ? bounds[2 * c] : 0.0;
+    this->Inverse[c] = extent > 0.0 && std::isfinite(extent) ? this->Divisions[c] / extent : 0.0;
+  }
+  this->Fill(xyz, n, withCoordinates);
+}
+
+void PointBins::Fill(const double* xyz, int32_t n, bool withCoordinates)
+{
   const int64_t nx = this->Divisions[0];
   const int64_t nxy = nx * this->Divisions[1];
   const int64_t buckets = nxy * this->Divisions[2];
@@ -145,13 +166,26 @@ void PointBins::Build(vtkStaticPointLocator* locator,
 bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int32_t n, int k,
   std::vector<int32_t>& neighbors, const std::function<bool(double)>& progress)
 {
+  PointBins bins;
+  if (n >= 2 && k >= 1)
+  {
+    bins.Build(locator, xyz, n, /*withCoordinates=*/false);
+  }
+  return FindNearestNeighbors(bins, xyz, n, k, neighbors, progress);
+}
+
+bool FindNearestNeighbors(const PointBins& bins,
+  const double* xyz,
+  int32_t n,
+  int k,
+  std::vector<int32_t>& neighbors,
+  const std::function<bool(double)>& progress)
+{
   neighbors.assign(static_cast<size_t>(std::max(n, 0)) * std::max(k, 0), -1);
   if (n < 2 || k < 1)
   {
     return true;
   }
-  PointBins bins;
-  bins.Build(locator, xyz, n, /*withCoordinates=*/false);
   // Starting radius: the k-th neighbour of a surface sample lies about sqrt(k) nearest-neighbour
   // distances away; the mean nearest-neighbour distance comes from a few hundred points, each
   // searched in the bins within one, then two bucket widths (a copy of the point counts, at
@@ -160,9 +194,8 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
   double sum = 0.0;
   int samples = 0;
   {
-    double width[3];
-    locator->GetSpacing(width);
-    const double reach = std::max({ width[0], width[1], width[2] });
+    const double reach =
+      std::max({ bins.GetBucketWidth(0), bins.GetBucketWidth(1), bins.GetBucketWidth(2) });
     const int* grid = bins.GetDivisions();
     const int32_t* offsets = bins.GetOffsets();
     const int32_t* ids = bins.GetIds();
@@ -201,17 +234,19 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
   double start = samples > 0 ? 1.5 * std::sqrt(static_cast<double>(k)) * sum / samples : 0.0;
   if (!(start > 0) || !std::isfinite(start))
   {
-    double bounds[6];
-    locator->GetDataSet()->GetBounds(bounds);
-    start = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+    start = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      start = std::max(start, bins.GetBucketWidth(c) * bins.GetDivisions()[c]);
+    }
     start = start > 0 && std::isfinite(start) ? start * 1e-3 : 1.0;
   }
 
-  // The candidates of a query are read from the locator's bucket grid directly (PointBins): all
-  // points of the buckets that the cube around the ball overlaps, with their distances computed
-  // here on the packed coordinates. The ball is large enough when it holds more than k points
+  // The candidates of a query are read from the bucket grid directly (PointBins): the points of
+  // the buckets that the ball overlaps, with their distances computed here on the packed
+  // coordinates. The ball is large enough when it holds more than k points
   // (the query point included): the k nearest others are then among the candidates, whatever the
-  // cube adds beyond the ball. This is the bucket walk of FindPointsWithinRadius without its
+  // buckets add beyond the ball. This is the bucket walk of FindPointsWithinRadius without its
   // per-point virtual GetPoint and per-query BuildLocator (modification time) calls, which took
   // about two thirds of the search's time.
   const int* divisions = bins.GetDivisions();
@@ -261,10 +296,137 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
     }
     entryStart.push_back(static_cast<int32_t>(members.size()));
   }
+  // A lower bound of |q[c] - p[c]| for every point q of the buckets of index j along axis c, from
+  // p's position f in bucket units (PointBins::BucketCoordinate): the whole buckets between them,
+  // less 10^-6 of a bucket for the rounding of the index formula. 0 next to p, in the clamped
+  // first and last buckets, and on an axis of one bucket.
+  auto gapTo = [&bins](double f, int j, int c)
+  {
+    double units = 0.0;
+    if (j + 1 < f && j + 1 < bins.GetDivisions()[c])
+    {
+      units = f - (j + 1);
+    }
+    else if (j > f && j > 0)
+    {
+      units = j - f;
+    }
+    return units > 1e-6 ? (units - 1e-6) * bins.GetBucketWidth(c) : 0.0;
+  };
+  // One query: the kk nearest other points of point i, as (squared distance, id) pairs, nearest
+  // first, in `found` (its first min(kk, size) entries; returns that count). The ball starts at
+  // `radius` and grows until it holds more than kk points; `radius` is left a little beyond the
+  // kk-th neighbour (or at `start` after a pile of copies), to start the next query.
+  // Only the candidates inside the ball are kept: once the ball holds more than kk points, the
+  // kk nearest others are inside it, ties at its radius included. A row of buckets (fixed y and
+  // z) is walked only where the ball reaches it: over the x range of the ball's section there
+  // (the rows' y and z distances to p bounded from below by gapTo). After the last allowed growth
+  // (a degenerate cloud) every candidate of the whole box of buckets is kept, as the ball may not
+  // hold kk others.
+  auto query = [&](int32_t i,
+                 int kk,
+                 double start,
+                 double& radius,
+                 std::vector<std::pair<double, int32_t>>& found) -> size_t
+  {
+    const double* p = xyz + 3 * static_cast<size_t>(i);
+    double f[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      f[c] = bins.BucketCoordinate(p[c], c);
+    }
+    bool all = false;
+    for (int attempt = 0;; ++attempt)
+    {
+      all = attempt > 200;
+      found.clear();
+      int lo[3], hi[3];
+      bins.BucketRange(p, radius, lo, hi);
+      const double r2 = radius * radius;
+      int64_t inside = 0;
+      for (int bz = lo[2]; bz <= hi[2]; ++bz)
+      {
+        const double gz = all ? 0.0 : gapTo(f[2], bz, 2);
+        for (int by = lo[1]; by <= hi[1]; ++by)
+        {
+          const double gy = all ? 0.0 : gapTo(f[1], by, 1);
+          const double g2 = gy * gy + gz * gz;
+          if (g2 > r2)
+          {
+            continue;
+          }
+          int xlo = lo[0], xhi = hi[0];
+          if (g2 > 0.0)
+          {
+            const double margin = (std::sqrt(r2 - g2) + 1e-6 * radius) * (1.0 + 1e-9) + 1e-300;
+            xlo = bins.BucketIndex(p[0] - margin, 0);
+            xhi = bins.BucketIndex(p[0] + margin, 0);
+          }
+          const int64_t row = divisions[0] * (by + static_cast<int64_t>(divisions[1]) * bz);
+          for (int32_t e = bucketStart[row + xlo]; e < bucketStart[row + xhi + 1]; ++e)
+          {
+            const double d2 = Distance2(p, &entryXYZ[3 * static_cast<size_t>(e)]);
+            if (d2 <= r2 || all)
+            {
+              inside += d2 <= r2 ? entryStart[e + 1] - entryStart[e] : 0;
+              int taken = 0;
+              for (int32_t m = entryStart[e]; m < entryStart[e + 1] && taken < kk; ++m)
+              {
+                if (members[m] != i)
+                {
+                  found.emplace_back(d2, members[m]);
+                  ++taken;
+                }
+              }
+            }
+          }
+        }
+      }
+      if (inside > kk || inside >= n || attempt > 200)
+      {
+        break;
+      }
+      radius *= inside > 1 ? std::min(2.0, 1.1 * std::sqrt((kk + 1.0) / inside)) : 2.0;
+    }
+    const size_t keep = std::min<size_t>(kk, found.size());
+    if (!all && found.size() <= 32)
+    {
+      // The usual case (the carried radius holds about 1.2 k points): a short list is sorted
+      // whole by insertion, cheaper than the partial sort. Same order: the entries (squared
+      // distance, id) are distinct and, inside the ball, not NaN.
+      for (size_t j = 1; j < found.size(); ++j)
+      {
+        const std::pair<double, int32_t> entry = found[j];
+        size_t to = j;
+        for (; to > 0 && entry < found[to - 1]; --to)
+        {
+          found[to] = found[to - 1];
+        }
+        found[to] = entry;
+      }
+    }
+    else
+    {
+      if (keep < found.size())
+      {
+        std::nth_element(found.begin(), found.begin() + keep, found.end());
+      }
+      std::sort(found.begin(), found.begin() + keep);
+    }
+    // The next query starts a little beyond this point's kk-th neighbour; after a point whose
+    // kk nearest are all copies of it, from `start` (keeping the radius of the previous distinct
+    // point, far larger than a pile's, made every copy's query walk a box of up to all the
+    // bins: hours for 300,000 copies on a grid of 4 bins per point).
+    if (keep > 0)
+    {
+      radius = found[keep - 1].first > 0 ? 1.1 * std::sqrt(found[keep - 1].first) : start;
+    }
+    return keep;
+  };
+
   // The queries run in bucket order (entry by entry; members holds every point once):
   // consecutive queries are then close in space, which keeps the carried radius apt and the
   // buckets they read in cache. The order does not change the result.
-
   vtkSMPThreadLocal<double> radii(start);
   const int32_t block = 65536;
   for (int32_t first = 0; first < n; first += block)
@@ -280,91 +442,11 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
       for (int32_t position = begin; position < end; ++position)
       {
         const int32_t i = members[position];
-        const double* p = xyz + 3 * static_cast<size_t>(i);
-        // Only the candidates inside the ball are kept: once the ball holds more than k points,
-        // the k nearest others are inside it, ties at its radius included. After the last
-        // allowed growth (a degenerate cloud) every candidate is kept, as the ball may not hold
-        // k others.
-        bool all = false;
-        for (int attempt = 0;; ++attempt)
-        {
-          all = attempt > 200;
-          found.clear();
-          int lo[3], hi[3];
-          bins.BucketRange(p, radius, lo, hi);
-          const double r2 = radius * radius;
-          vtkIdType inside = 0;
-          for (int bz = lo[2]; bz <= hi[2]; ++bz)
-          {
-            for (int by = lo[1]; by <= hi[1]; ++by)
-            {
-              for (int bx = lo[0]; bx <= hi[0]; ++bx)
-              {
-                const vtkIdType bucket =
-                  bx + divisions[0] * (by + static_cast<vtkIdType>(divisions[1]) * bz);
-                for (int32_t e = bucketStart[bucket]; e < bucketStart[bucket + 1]; ++e)
-                {
-                  const double d2 = Distance2(p, &entryXYZ[3 * static_cast<size_t>(e)]);
-                  if (d2 <= r2 || all)
-                  {
-                    inside += d2 <= r2 ? entryStart[e + 1] - entryStart[e] : 0;
-                    int taken = 0;
-                    for (int32_t m = entryStart[e]; m < entryStart[e + 1] && taken < k; ++m)
-                    {
-                      if (members[m] != i)
-                      {
-                        found.emplace_back(d2, members[m]);
-                        ++taken;
-                      }
-                    }
-                  }
-                }
-              }
-            }
-          }
-          if (inside > k || inside >= n || attempt > 200)
-          {
-            break;
-          }
-          radius *= inside > 1 ? std::min(2.0, 1.1 * std::sqrt((k + 1.0) / inside)) : 2.0;
-        }
-        const size_t keep = std::min<size_t>(k, found.size());
-        if (!all && found.size() <= 32)
-        {
-          // The usual case (the carried radius holds about 1.2 k points): a short list is sorted
-          // whole by insertion, cheaper than the partial sort. Same order: the entries (squared
-          // distance, id) are distinct and, inside the ball, not NaN.
-          for (size_t j = 1; j < found.size(); ++j)
-          {
-            const std::pair<double, int32_t> entry = found[j];
-            size_t to = j;
-            for (; to > 0 && entry < found[to - 1]; --to)
-            {
-              found[to] = found[to - 1];
-            }
-            found[to] = entry;
-          }
-        }
-        else
-        {
-          if (keep < found.size())
-          {
-            std::nth_element(found.begin(), found.begin() + keep, found.end());
-          }
-          std::sort(found.begin(), found.begin() + keep);
-        }
+        const size_t keep = query(i, k, start, radius, found);
         int32_t* out = &neighbors[static_cast<size_t>(i) * k];
         for (size_t j = 0; j < keep; ++j)
         {
           out[j] = found[j].second;
-        }
-        // The next query starts a little beyond this point's k-th neighbour; after a point whose
-        // k nearest are all copies of it, from the initial radius (keeping the radius of the
-        // previous distinct point, far larger than a pile's, made every copy's query walk a box
-        // of up to all the bins: hours for 300,000 copies on a grid of 4 bins per point).
-        if (keep > 0)
-        {
-          radius = found[keep - 1].first > 0 ? 1.1 * std::sqrt(found[keep - 1].first) : start;
         }
       }
     });
@@ -392,41 +474,27 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
     return 0;
   }
   const int perSide = std::max(1, k / 4);
-  // The points confined to a curve, all of them first when a share of confined neighbours is
-  // asked for (then the test is made again, on the same row, where it passed).
-  std::vector<uint8_t> confined;
-  if (minimumShare > 0.0)
-  {
-    confined.assign(static_cast<size_t>(n), 0);
-    vtkSMPTools::For(0,
-      n,
-      [&](int32_t begin, int32_t end)
+  // The points confined to a curve, all of them first (the test is made again, on the same row,
+  // where it passed): the locator is built only when a row is to be extended.
+  std::vector<uint8_t> confined(static_cast<size_t>(n), 0);
+  vtkSMPTools::For(0,
+    n,
+    [&](int32_t begin, int32_t end)
+    {
+      double e[3], reach;
+      for (int32_t i = begin; i < end; ++i)
       {
-        double e[3], reach;
-        for (int32_t i = begin; i < end; ++i)
-        {
-          confined[i] = SpreadsAlongCurve(xyz,
-                          xyz + 3 * static_cast<size_t>(i),
-                          &neighbors[static_cast<size_t>(i) * k],
-                          k,
-                          linearity,
-                          e,
-                          reach)
-            ? 1
-            : 0;
-        }
-      });
-  }
-  // The balls of the confined points are searched in the locator's bins (PointBins: no virtual
-  // call per point, less than half the instructions of FindPointsWithinRadius on the camel's
-  // scan-line patch) when the first pass found some; else the locator answers the queries.
-  PointBins bins;
-  const bool useBins =
-    !confined.empty() && std::find(confined.begin(), confined.end(), 1) != confined.end();
-  if (useBins)
-  {
-    bins.Build(locator, xyz, n);
-  }
+        confined[i] = SpreadsAlongCurve(xyz,
+                        xyz + 3 * static_cast<size_t>(i),
+                        &neighbors[static_cast<size_t>(i) * k],
+                        k,
+                        linearity,
+                        e,
+                        reach)
+          ? 1
+          : 0;
+      }
+    });
   auto enoughConfined = [&](const int32_t* table)
   {
     int count = 0, share = 0;
@@ -437,6 +505,26 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
     }
     return share >= minimumShare * count;
   };
+  auto extended = [&](int32_t i)
+  {
+    return confined[i] &&
+      (minimumShare <= 0.0 || enoughConfined(&neighbors[static_cast<size_t>(i) * k]));
+  };
+  int32_t firstExtended = 0;
+  while (firstExtended < n && !extended(firstExtended))
+  {
+    ++firstExtended;
+  }
+  if (firstExtended == n)
+  {
+    return progress && !progress(1.0) ? -1 : 0;
+  }
+  // The balls of the confined points are searched in the locator's bins (PointBins: no virtual
+  // call per point, less than half the instructions of FindPointsWithinRadius on the camel's
+  // scan-line patch; the same points). The locator is built once, before the threads read it.
+  locator->BuildLocator();
+  PointBins bins;
+  bins.Build(locator, xyz, n);
   std::atomic<int32_t> changed(0);
   struct Candidate
   {
@@ -461,7 +549,6 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
       last,
       [&](int32_t begin, int32_t end)
       {
-        vtkNew<vtkIdList> ball;
         std::vector<Candidate> offLine, row;
         std::vector<int32_t> wanted;
         int32_t rowsChanged = 0;
@@ -470,8 +557,7 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
           const double* p = xyz + 3 * static_cast<size_t>(i);
           int32_t* table = &neighbors[static_cast<size_t>(i) * k];
           double e[3], reach;
-          if ((!confined.empty() && (!confined[i] || !enoughConfined(table))) ||
-            !SpreadsAlongCurve(xyz, p, table, k, linearity, e, reach))
+          if (!extended(i) || !SpreadsAlongCurve(xyz, p, table, k, linearity, e, reach))
           {
             continue;
           }
@@ -501,17 +587,8 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
           auto collectOffLine = [&](double radius)
           {
             offLine.clear();
-            if (useBins)
-            {
-              bins.ForEachPointWithinRadius(
-                radius, p, [&](int32_t id, double) { return consider(id); });
-              return;
-            }
-            locator->FindPointsWithinRadius(radius, p, ball);
-            for (vtkIdType j = 0; j < ball->GetNumberOfIds(); ++j)
-            {
-              consider(static_cast<int32_t>(ball->GetId(j)));
-            }
+            bins.ForEachPointWithinRadius(
+              radius, p, [&](int32_t id, double) { return consider(id); });
           };
           // Within 4 dk first, and within radiusFactor dk only when no point is off the line
           // there: the same answer where the nearest lines are within 4 dk, a smaller ball.
@@ -627,8 +704,10 @@ bool OnOneScanLine(const double* xyz, const double* stretch, int32_t a, int32_t 
   return along(a, b) && along(b, c) && along(c, a);
 }
 
-void SetSurfaceSampleDivisions(
-  vtkStaticPointLocator* locator, const double bounds[6], int32_t n, double binsPerPoint)
+void SurfaceSampleDivisions(const double bounds[6],
+  int32_t n,
+  double binsPerPoint,
+  int divisions[3])
 {
   // Cubic bins of side h with prod(extent / h) = bins over the axes longer than h; an axis
   // shorter than h gets one division and leaves the product, and h is recomputed without it
@@ -670,15 +749,24 @@ void SetSurfaceSampleDivisions(
       break;
     }
   }
-  int divisions[3] = { 1, 1, 1 };
   for (int i = 0; i < 3; ++i)
   {
+    divisions[i] = 1;
     if (active[i] && h > 0.0)
     {
       divisions[i] = static_cast<int>(
         std::min(std::ceil((bounds[2 * i + 1] - bounds[2 * i]) / h), std::ceil(bins)));
     }
   }
+}
+
+void SetSurfaceSampleDivisions(vtkStaticPointLocator* locator,
+  const double bounds[6],
+  int32_t n,
+  double binsPerPoint)
+{
+  int divisions[3];
+  SurfaceSampleDivisions(bounds, n, binsPerPoint, divisions);
   locator->AutomaticOff();
   locator->SetDivisions(divisions);
 }

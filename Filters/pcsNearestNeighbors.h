@@ -33,6 +33,15 @@ public:
     int32_t n,
     bool withCoordinates = true);
 
+  /// The same on the grid of `divisions` buckets over the box `bounds` (xmin, xmax, ymin, ...),
+  /// no locator needed: e.g. SurfaceSampleDivisions' grid, the bins SetSurfaceSampleDivisions
+  /// gives a locator, when no locator is to be built.
+  void Build(const double bounds[6],
+    const int divisions[3],
+    const double* xyz,
+    int32_t n,
+    bool withCoordinates = true);
+
   /// The index along axis c of coordinate v, clamped to [0, divisions - 1] (NaN: 0).
   int BucketIndex(double v, int c) const
   {
@@ -50,6 +59,17 @@ public:
       low[c] = this->BucketIndex(x[c] - margin, c);
       high[c] = this->BucketIndex(x[c] + margin, c);
     }
+  }
+
+  /// The position of coordinate v along axis c in bucket units (BucketIndex before the clamp).
+  double BucketCoordinate(double v, int c) const
+  {
+    return (v - this->Origin[c]) * this->Inverse[c];
+  }
+  /// The width of the buckets along axis c (0 on an axis of one bucket over a flat box).
+  double GetBucketWidth(int c) const
+  {
+    return this->Inverse[c] > 0.0 ? 1.0 / this->Inverse[c] : 0.0;
   }
 
   int64_t GetNumberOfBuckets() const { return static_cast<int64_t>(this->Offsets.size()) - 1; }
@@ -96,6 +116,8 @@ public:
   }
 
 private:
+  void Fill(const double* xyz, int32_t n, bool withCoordinates);
+
   int Divisions[3] = { 1, 1, 1 };
   double Origin[3] = { 0, 0, 0 };
   double Inverse[3] = { 0, 0, 0 };
@@ -116,9 +138,10 @@ private:
 /// previous point's k-th neighbour (the first from the mean nearest-neighbour distance of a
 /// sample) and grows until the ball holds k other points. The points are filed once into the
 /// locator's bucket grid (its divisions and bounds) by a counting sort, and the buckets a ball
-/// overlaps are walked directly on `xyz`, as FindPointsWithinRadius does but without its
-/// per-point virtual GetPoint and per-call BuildLocator checks (2.2x fewer instructions on a
-/// 2 x 10^4-point sphere). The coordinates are copied once in bucket order, the queries run in
+/// overlaps are walked directly on `xyz` (row by row of buckets, each over the x range of the
+/// ball's section there), as FindPointsWithinRadius does but without its per-point virtual
+/// GetPoint and per-call BuildLocator checks (2.2x fewer instructions on a 2 x 10^4-point
+/// sphere). The coordinates are copied once in bucket order, the queries run in
 /// that order (neighbouring queries one after the other), and only the candidates inside the
 /// ball are kept for the partial sort. The result does not depend on those radii, on the query
 /// order, nor on the number of threads (vtkSMPTools, in blocks). `progress` (optional) receives
@@ -127,11 +150,22 @@ private:
 bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int32_t n, int k,
   std::vector<int32_t>& neighbors, const std::function<bool(double)>& progress = nullptr);
 
+/// The same search on points already filed into `bins` (PointBins::Build, with or without
+/// coordinates; the same `xyz` and `n`), without a locator. The result does not depend on the
+/// grid.
+bool FindNearestNeighbors(const PointBins& bins,
+  const double* xyz,
+  int32_t n,
+  int k,
+  std::vector<int32_t>& neighbors,
+  const std::function<bool(double)>& progress = nullptr);
+
 /// Scan-line (strongly anisotropic) sampling: points much denser along lines than across them,
 /// as laser-line and LiDAR scanners give. When the lines are more than about k / 2 spacings
 /// apart, the k nearest neighbours of a point all lie on its own line and a filter working on
 /// them sees a curve, not a surface. This function finds those points in a table made by
-/// FindNearestNeighbors (same `locator`, `xyz`, `n`, `k`) and gives them neighbours off their line.
+/// FindNearestNeighbors (same `xyz`, `n`, `k`) and gives them neighbours off their line, searched
+/// with `locator` (set on exactly these points; built here, once, only when some point needs it).
 ///
 /// A point's neighbourhood is confined to a curve when its max(2, k / 2) nearest neighbours
 /// spread along one direction e only: with lambda1 >= lambda2 >= lambda3 the eigenvalues of
@@ -216,6 +250,12 @@ bool OnOneScanLine(const double* xyz, const double* stretch, int32_t a, int32_t 
 /// before BuildLocator; zero or non-finite extents give one division on that axis.
 void SetSurfaceSampleDivisions(
   vtkStaticPointLocator* locator, const double bounds[6], int32_t n, double binsPerPoint = 4.0);
+
+/// The divisions SetSurfaceSampleDivisions gives a locator, for PointBins::Build without one.
+void SurfaceSampleDivisions(const double bounds[6],
+  int32_t n,
+  double binsPerPoint,
+  int divisions[3]);
 }
 
 #endif

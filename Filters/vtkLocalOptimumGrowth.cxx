@@ -95,6 +95,51 @@ inline bool UnitNormal(const double* a, const double* b, const double* c, double
   return true;
 }
 
+// Whether the unit normal m of the triangle (a, b, c) (UnitNormal) has m . n >= cosine with a
+// margin of 10^-10 relative, far beyond the rounding of UnitNormal and of the dot product: the
+// comparison made on the normalized vector gives the same answer. Decided without the square
+// root and the divisions; false when not clear (then compare the normalized vector).
+inline bool ClearlyWithin(
+  const double* a, const double* b, const double* c, const double* n, double cosine)
+{
+  double ab[3], ac[3], m[3];
+  Sub(b, a, ab);
+  Sub(c, a, ac);
+  Cross(ab, ac, m);
+  const double length2 = Dot(m, m), along = Dot(m, n);
+  return cosine > 0.0 && length2 > 0.0 && std::isfinite(length2) && along > 0.0 &&
+    along * along > (1.0 + 1e-10) * (cosine * cosine) * length2;
+}
+
+// The angle between two vectors of lengths d and sqrt(l2) whose dot product is `dot` is wider
+// than the angle of cosine `cosine`: dot < cosine d sqrt(l2). An acute angle is never wider than
+// a right or obtuse bound, so the square root is taken only when it matters (same answer).
+inline bool WiderThan(double dot, double cosine, double d, double l2)
+{
+  if (cosine <= 0.0 && dot >= 0.0)
+  {
+    return false;
+  }
+  return dot < cosine * d * std::sqrt(l2);
+}
+
+// Asks for the memory at `address` to be brought into the cache (a hint; no effect on results).
+// The growth reads its tables (coordinates, K-nearest rows) at vertices known a little earlier:
+// the vertices of a neighbourhood are collected before their coordinates are read, the next front
+// edge of the queue and the admissible candidates before their neighbourhoods are collected.
+inline void Prefetch(const void* address)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(address);
+#else
+  (void)address;
+#endif
+}
+inline void PrefetchPoint(const double* x, Id v)
+{
+  Prefetch(x + 3 * static_cast<size_t>(v));
+}
+
 struct Parameters
 {
   int K = 20;
@@ -187,6 +232,12 @@ private:
 
   const double* P3(Id v) const { return this->X + 3 * static_cast<size_t>(v); }
   const Id* Neighbors(Id v) const { return this->Knn.data() + static_cast<size_t>(v) * this->K; }
+  void PrefetchNeighbors(Id v) const
+  {
+    const Id* row = this->Neighbors(v);
+    Prefetch(row);
+    Prefetch(row + (this->K - 1)); // a row of 20 spans two cache lines
+  }
 
   // Projection frame: origin, in-plane axes U, V and normal W (right-handed).
   void SetFrame(const double* origin, const double* u, const double* w);
@@ -247,8 +298,10 @@ private:
   bool WedgesOk(Id x, Id y, Id z);
   bool CrossesFront(Id x, Id y, Id z);
   bool FacesFrame(Id s, Id e) const;
-  bool Blocked(Id x, Id y, Id z);
-  bool ProjectedValid(Id x, Id y, Id z)
+  bool Blocked(Id x, Id y, Id z, const std::vector<Id>& blockers);
+  // `acrossEdge`: (x, y, z) is (b, a, c) of the expansion of the current front edge a->b, whose
+  // blocking points strictly on the near side of a->b are left out (EdgeBlockers).
+  bool ProjectedValid(Id x, Id y, Id z, bool acrossEdge = false)
   {
     this->Extend(x);
     this->Extend(y);
@@ -256,7 +309,8 @@ private:
     // Blocked before CrossesFront: it refuses more candidates (10^5 armadillo samples: 87,166
     // against 4,220 of the 178,000 tested after the wedges) and needs no front edge collection.
     return P::Orient2D(this->P2(x), this->P2(y), this->P2(z)) > 0 && this->WedgesOk(x, y, z) &&
-      !this->Blocked(x, y, z) && !this->CrossesFront(x, y, z);
+      !this->Blocked(x, y, z, acrossEdge ? this->EdgeBlockers : this->Blockers) &&
+      !this->CrossesFront(x, y, z);
   }
   // Ear (v, u, w) closing the front angle u->v->w: the smallest cosine of the angles between its
   // normal and its neighbours' (constraint 1), or -2 when invalid.
@@ -351,6 +405,10 @@ private:
   std::vector<Id> Near;     // neighbourhood vertices (not interior)
   std::vector<Id> Centers;  // vertices whose K-neighbourhood is in Near
   std::vector<Id> Blockers; // points that no new triangle may cover
+  // The blocking points of a triangle (b, a, c) expanding the front edge a->b: Blockers less
+  // those strictly on the near side of a->b in the frame (in the closed triangle, a point must
+  // lie on the far side of b->a or on its line: Orient2D is exact, so never wrongly left out).
+  std::vector<Id> EdgeBlockers;
   std::vector<std::pair<Id, Id>> FrontEdges;
   bool FrontEdgesReady = false; // FrontEdges is collected when first needed
   std::vector<Id> Admissible;
@@ -411,14 +469,14 @@ void Grower::CollectVertices(const Id* centers, int count)
   }
   this->Near.clear();
   this->Centers.assign(centers, centers + count);
+  // Interior points are skipped before their mark is read (most of a front vertex's neighbours
+  // lie behind the front, and the state is a byte per point): they are never marked, nor in Near.
   auto add = [this](Id v) {
-    if (v >= 0 && this->Scratch[v].Mark != this->MarkStamp)
+    if (v >= 0 && !this->Mesh.IsInterior(v) && this->Scratch[v].Mark != this->MarkStamp)
     {
       this->Scratch[v].Mark = this->MarkStamp;
-      if (!this->Mesh.IsInterior(v))
-      {
-        this->Near.push_back(v);
-      }
+      this->Near.push_back(v);
+      PrefetchPoint(this->X, v);
     }
   };
   for (int i = 0; i < count; ++i)
@@ -482,19 +540,18 @@ void Grower::Extend(Id v)
   for (int j = 0; j < this->K; ++j)
   {
     const Id q = nb[j];
-    if (q < 0 || this->Scratch[q].Mark == this->MarkStamp)
+    if (q < 0 || this->Mesh.IsInterior(q) || this->Scratch[q].Mark == this->MarkStamp)
     {
       continue;
     }
     this->Scratch[q].Mark = this->MarkStamp;
-    if (!this->Mesh.IsInterior(q))
+    this->Near.push_back(q);
+    PrefetchPoint(this->X, q);
+    this->Blockers.push_back(q);
+    this->EdgeBlockers.push_back(q);
+    if (this->FrontEdgesReady)
     {
-      this->Near.push_back(q);
-      this->Blockers.push_back(q);
-      if (this->FrontEdgesReady)
-      {
-        this->AddFrontEdges(q);
-      }
+      this->AddFrontEdges(q);
     }
   }
 }
@@ -630,7 +687,7 @@ bool Grower::FacesFrame(Id s, Id e) const
 
 // A blocking point lies in the closed projected triangle (x, y, z) (counter-clockwise). Points
 // of another sheet (farther from the triangle's mean height than its longest edge) do not block.
-bool Grower::Blocked(Id x, Id y, Id z)
+bool Grower::Blocked(Id x, Id y, Id z, const std::vector<Id>& blockers)
 {
   const double* a = this->P2(x);
   const double* b = this->P2(y);
@@ -642,7 +699,7 @@ bool Grower::Blocked(Id x, Id y, Id z)
   const double level = (this->Height(x) + this->Height(y) + this->Height(z)) / 3.0;
   const double reach = std::sqrt(std::max({ Distance2(this->P3(x), this->P3(y)),
     Distance2(this->P3(y), this->P3(z)), Distance2(this->P3(z), this->P3(x)) }));
-  for (Id q : this->Blockers)
+  for (Id q : blockers)
   {
     if (q == x || q == y || q == z)
     {
@@ -857,6 +914,7 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
   this->Admissible.clear();
   this->AdmissibleTier.clear();
   this->Blockers.clear();
+  this->EdgeBlockers.clear();
   for (Id c : this->Near)
   {
     if (c == a || c == b || c == y)
@@ -864,7 +922,12 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
       continue;
     }
     this->Blockers.push_back(c);
-    if (P::Orient2D(a2, b2, this->P2(c)) >= 0)
+    const int side = P::Orient2D(a2, b2, this->P2(c));
+    if (side <= 0)
+    {
+      this->EdgeBlockers.push_back(c);
+    }
+    if (side >= 0)
     {
       continue;
     }
@@ -886,13 +949,22 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
     // meeting almost along a line) has close to 180 degrees at every vertex. Such an ear must
     // then meet constraint 1 strictly towards both triangles it closes between.
     const double dotA = Dot(ab, ac), dotB = -Dot(ab, bc);
-    const bool wideBase = dotA < this->Par.CosBase * dab * std::sqrt(la2) ||
-      dotB < this->Par.CosBase * dab * std::sqrt(lb2);
+    const bool wideBase =
+      WiderThan(dotA, this->Par.CosBase, dab, la2) || WiderThan(dotB, this->Par.CosBase, dab, lb2);
     if (wideBase && (!ear || level < 2))
     {
       continue;
     }
     // Constraint 1: the angle between the normals of (b, a, c) and (a, b, y).
+    if (!wideBase &&
+      ClearlyWithin(this->P3(b), this->P3(a), this->P3(c), ne, this->Par.CosHalfNormal))
+    {
+      // Flat (tier 0), hence within constraint 1 too: decided without normalizing (same answer).
+      this->Admissible.push_back(c);
+      this->AdmissibleTier.push_back(0);
+      this->PrefetchNeighbors(c); // read by Extend if c is tested
+      continue;
+    }
     double nt[3];
     if (!UnitNormal(this->P3(b), this->P3(a), this->P3(c), nt))
     {
@@ -928,6 +1000,7 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
     }
     this->Admissible.push_back(c);
     this->AdmissibleTier.push_back(tier);
+    this->PrefetchNeighbors(c); // read by Extend if c is tested
   }
 
   while (!this->Admissible.empty())
@@ -978,7 +1051,7 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
     const pcs::SurfaceMesh::Check check = this->Mesh.CanAddTriangle(b, a, c, &offending);
     if (check == pcs::SurfaceMesh::Check::Ok)
     {
-      if (this->ProjectedValid(b, a, c))
+      if (this->ProjectedValid(b, a, c, true))
       {
         this->Commit(b, a, c);
         return true;
@@ -1026,7 +1099,7 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
       }
       continue;
     }
-    if (!this->ProjectedValid(b, a, c))
+    if (!this->ProjectedValid(b, a, c, true))
     {
       continue;
     }
@@ -1271,6 +1344,12 @@ void Grower::ProcessQueue()
   while (this->QueueHead < this->Queue.size() && !this->Aborted)
   {
     const Item item = this->Queue[this->QueueHead++];
+    if (this->QueueHead < this->Queue.size())
+    {
+      // The next edge's neighbourhood is collected right after this one's expansion.
+      this->PrefetchNeighbors(this->Queue[this->QueueHead].A);
+      this->PrefetchNeighbors(this->Queue[this->QueueHead].B);
+    }
     if (this->QueueHead >= (size_t(1) << 16) && 2 * this->QueueHead >= this->Queue.size())
     {
       this->Queue.erase(this->Queue.begin(), this->Queue.begin() + this->QueueHead);
@@ -1879,6 +1958,7 @@ void Grower::Unfold()
   };
   std::vector<std::pair<Id, Id>> stack;
   const int64_t count = this->Mesh.GetNumberOfTriangleIds();
+  stack.reserve(2 * static_cast<size_t>(count)); // each edge once (3 / 2 per triangle), and room
   for (int64_t t = 0; t < count; ++t)
   {
     if (!this->Mesh.IsTriangleRemoved(t))
@@ -2313,7 +2393,7 @@ int vtkLocalOptimumGrowth::RequestData(
   std::vector<double> stretch;
   int k = 0;
   bool neighborsFound = false;
-  vtkSmartPointer<vtkStaticPointLocator> builtLocator;
+  vtkSmartPointer<vtkStaticPointLocator> cloudLocator;
   auto findNeighbors = [&]() {
     x.resize(3 * static_cast<size_t>(n));
     for (Id i = 0; i < n; ++i)
@@ -2329,18 +2409,6 @@ int vtkLocalOptimumGrowth::RequestData(
     internalPoints->SetData(coordinates);
     vtkNew<vtkPolyData> cloud;
     cloud->SetPoints(internalPoints);
-    vtkSmartPointer<vtkStaticPointLocator> locator = this->Locator;
-    if (!locator)
-    {
-      // A surface sample fills only a thin layer of the bins of its bounding box: about 4 bins
-      // per point keep the radius queries short (see the class documentation).
-      locator = vtkSmartPointer<vtkStaticPointLocator>::New();
-      double bounds[6];
-      internalPoints->GetBounds(bounds);
-      pcs::SetSurfaceSampleDivisions(locator, bounds, n);
-    }
-    locator->SetDataSet(cloud);
-    locator->BuildLocator();
     // The shared K-nearest-neighbour search (adaptive radius queries, ties broken by index,
     // threaded in blocks); abort stops it between blocks and the growth is then skipped.
     auto progress = [this](double fraction)
@@ -2352,8 +2420,31 @@ int vtkLocalOptimumGrowth::RequestData(
       this->UpdateProgress(0.05 + 0.1 * fraction);
       return !this->GetAbortExecute();
     };
-    neighborsFound = pcs::FindNearestNeighbors(locator, x.data(), n, k, knn, progress);
-    builtLocator = locator;
+    vtkSmartPointer<vtkStaticPointLocator> locator = this->Locator;
+    if (locator)
+    {
+      locator->SetDataSet(cloud);
+      locator->BuildLocator();
+      neighborsFound = pcs::FindNearestNeighbors(locator, x.data(), n, k, knn, progress);
+    }
+    else
+    {
+      // A surface sample fills only a thin layer of the bins of its bounding box: about 4 bins
+      // per point keep the radius queries short (see the class documentation). The search files
+      // the points into its own bucket grid; the locator, on the same bins, is only built when
+      // the scan-line search below needs it.
+      double bounds[6];
+      internalPoints->GetBounds(bounds);
+      locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+      pcs::SetSurfaceSampleDivisions(locator, bounds, n);
+      locator->SetDataSet(cloud);
+      int divisions[3];
+      pcs::SurfaceSampleDivisions(bounds, n, 4.0, divisions);
+      pcs::PointBins bins;
+      bins.Build(bounds, divisions, x.data(), n, /*withCoordinates=*/false);
+      neighborsFound = pcs::FindNearestNeighbors(bins, x.data(), n, k, knn, progress);
+    }
+    cloudLocator = locator;
   };
   findNeighbors();
   if (outliersFromTable && !this->GetAbortExecute())
@@ -2380,7 +2471,7 @@ int vtkLocalOptimumGrowth::RequestData(
   // reads the plain nearest-first table.
   stretch.clear();
   if (neighborsFound && !this->GetAbortExecute() &&
-    pcs::AddOffLineNeighbors(builtLocator, x.data(), n, k, knn, &stretch) == 0)
+    pcs::AddOffLineNeighbors(cloudLocator, x.data(), n, k, knn, &stretch) == 0)
   {
     stretch.clear();
   }
@@ -2388,7 +2479,7 @@ int vtkLocalOptimumGrowth::RequestData(
   {
     this->Locator->SetDataSet(nullptr);
   }
-  builtLocator = nullptr;
+  cloudLocator = nullptr;
   xyz.clear();
   xyz.shrink_to_fit();
   if (this->NumberOfOutliers > 0)

@@ -11,12 +11,16 @@
  * Algorithm.
  * 1. Neighbours ("Materials and methods", K-nearest neighbours and hash table): the K =
  *    NumberOfNeighbors nearest neighbours of every point (ties: smaller index), computed once
- *    with a vtkStaticPointLocator, VTK's uniform bin grid, i.e. the paper's hash table, by the
- *    project's shared search (adaptive radius queries, threaded with vtkSMPTools). Points are
- *    renumbered along a Hilbert curve first (memory locality); exact duplicates are merged.
- *    Added: unless a locator is set, its grid has about 4 bins per point over the bounding box
- *    instead of VTK's automatic few points per bin -- a surface sample occupies only a thin
- *    layer of the box's bins, so the automatic grid puts tens of points in each occupied bin.
+ *    on a uniform bin grid, i.e. the paper's hash table, by the project's shared search
+ *    (pcs::FindNearestNeighbors: adaptive radius queries on the grid pcs::PointBins, the bins
+ *    of VTK's vtkStaticPointLocator; threaded with vtkSMPTools). Unless a locator is set, no
+ *    vtkStaticPointLocator is built for it: the search files the points into its own grid, and a
+ *    locator on the same bins is built only when the scan-line search below has rows to extend.
+ *    Points are renumbered along a Hilbert curve first (memory locality); exact duplicates are
+ *    merged. Added: unless a locator is set, the grid has about 4 bins per point over the
+ *    bounding box instead of VTK's automatic few points per bin -- a surface sample occupies
+ *    only a thin layer of the box's bins, so the automatic grid puts tens of points in each
+ *    occupied bin.
  *    Measured (1 thread, loaded machine, best of runs): neighbour search on 10^5 points sampled
  *    on CGAL's bunny 0.57 -> 0.50 s, on 10^6 sphere points 5.8 -> 5.1 s, on 10^5 sphere points
  *    unchanged (0.35 s); the triangles are the same. The shared search walks the locator's
@@ -340,9 +344,10 @@ public:
 
   ///@{
   /**
-   * The point locator used for the K-nearest-neighbour search. Default none: a
-   * vtkStaticPointLocator with about 4 bins per point is created. A locator set here is used
-   * with its own bin settings.
+   * The point locator used for the K-nearest-neighbour search. Default none: the search files
+   * the points into its own grid of about 4 bins per point (pcs::PointBins), and a
+   * vtkStaticPointLocator on the same bins is built only for the scan-line search (step 1). A
+   * locator set here is built and used, with its own bin settings.
    */
   void SetLocator(vtkStaticPointLocator* locator);
   vtkGetObjectMacro(Locator, vtkStaticPointLocator);

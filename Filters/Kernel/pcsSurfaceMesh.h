@@ -103,7 +103,8 @@ public:
 
   /// Can the oriented triangle (a, b, c) be added keeping an oriented 2-manifold? On
   /// NonManifoldVertex, `vertex` (when given) receives the offending vertex. Cost: one scan of
-  /// the wedges of a, b and c.
+  /// the wedges of a, b and c; none when a free vertex faces a front edge of a single-fan vertex
+  /// (the triangle (a, b, c) with c free and b->a on the front, or a rotation of it).
   Check CanAddTriangle(int32_t a, int32_t b, int32_t c, int32_t* vertex = nullptr) const;
 
   /// Add the oriented triangle (a, b, c) and return its id. Precondition: CanAddTriangle() is

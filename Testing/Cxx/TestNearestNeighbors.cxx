@@ -1,0 +1,218 @@
+// The shared K-nearest-neighbour search (pcs::FindNearestNeighbors, pcsNearestNeighbors.h)
+// against brute force, on a cloud with many exact distance ties and exact duplicates:
+// - a 16 x 16 lattice of spacing 1 in the plane z = 0 (each point has 4 neighbours at 1, 4 at
+//   sqrt(2), 4 at 2, ...: ties broken by the smaller id), 40 of its points repeated up to 3 times,
+//   and 1,500 random points of a sphere of radius 5 around it;
+// - the table of the k = 12 nearest others of each point, nearest first, ties by id, must equal
+//   the sorted brute-force list, for the search on bins filed without a locator
+//   (pcs::PointBins: about 4 bins per point; one bin; 40^3 bins, the ball's rows then cut short)
+//   and on a built vtkStaticPointLocator's grid;
+// - pcs::AddOffLineNeighbors builds the locator it is given only when a row is to be extended:
+//   on the lattice alone (no point confined to a curve) it changes nothing and the locator stays
+//   unbuilt; on scan lines (rows confined to their line) it builds it and extends every row.
+#include "pcsNearestNeighbors.h"
+
+#include "pcsTestUtilities.h"
+
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkStaticPointLocator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace
+{
+std::vector<double> TiesAndDuplicates()
+{
+  std::vector<double> xyz;
+  for (int j = 0; j < 16; ++j)
+  {
+    for (int i = 0; i < 16; ++i)
+    {
+      xyz.insert(xyz.end(), { static_cast<double>(i), static_cast<double>(j), 0.0 });
+    }
+  }
+  for (int copy = 0; copy < 40; ++copy)
+  {
+    const int source = (37 * copy) % 256;
+    for (int times = 0; times <= copy % 3; ++times)
+    {
+      xyz.insert(xyz.end(), { xyz[3 * source], xyz[3 * source + 1], xyz[3 * source + 2] });
+    }
+  }
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> g(0.0, 1.0);
+  for (int p = 0; p < 1500; ++p)
+  {
+    double v[3] = { g(rng), g(rng), g(rng) };
+    const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    xyz.insert(xyz.end(), { 7.5 + 5 * v[0] / length, 7.5 + 5 * v[1] / length, 5 * v[2] / length });
+  }
+  return xyz;
+}
+
+std::vector<int32_t> BruteForce(const std::vector<double>& xyz, int k)
+{
+  const int32_t n = static_cast<int32_t>(xyz.size() / 3);
+  std::vector<int32_t> table(static_cast<size_t>(n) * k, -1);
+  std::vector<std::pair<double, int32_t>> all;
+  for (int32_t i = 0; i < n; ++i)
+  {
+    all.clear();
+    for (int32_t j = 0; j < n; ++j)
+    {
+      if (j != i)
+      {
+        const double d[3] = {
+          xyz[3 * j] - xyz[3 * i], xyz[3 * j + 1] - xyz[3 * i + 1], xyz[3 * j + 2] - xyz[3 * i + 2]
+        };
+        all.emplace_back(d[0] * d[0] + d[1] * d[1] + d[2] * d[2], j);
+      }
+    }
+    std::partial_sort(all.begin(), all.begin() + k, all.end());
+    for (int c = 0; c < k; ++c)
+    {
+      table[static_cast<size_t>(i) * k + c] = all[c].second;
+    }
+  }
+  return table;
+}
+
+// The search on the bins of `divisions` over `bounds` (none: SurfaceSampleDivisions').
+std::vector<int32_t> Search(const std::vector<double>& xyz,
+  int k,
+  const double bounds[6],
+  const int* divisions = nullptr)
+{
+  const int32_t n = static_cast<int32_t>(xyz.size() / 3);
+  int sample[3];
+  pcs::SurfaceSampleDivisions(bounds, n, 4.0, sample);
+  pcs::PointBins bins;
+  bins.Build(bounds, divisions ? divisions : sample, xyz.data(), n, false);
+  std::vector<int32_t> table;
+  pcs::FindNearestNeighbors(bins, xyz.data(), n, k, table);
+  return table;
+}
+
+bool SameTable(const std::vector<int32_t>& found,
+  const std::vector<int32_t>& expected,
+  int k,
+  const char* what)
+{
+  PCS_CHECK(found.size() == expected.size(), what << ": " << found.size() << " entries");
+  for (size_t e = 0; e < found.size(); ++e)
+  {
+    PCS_CHECK(found[e] == expected[e],
+      what << ": point " << e / k << ", neighbour " << e % k << " is " << found[e] << ", not "
+           << expected[e]);
+  }
+  return true;
+}
+
+void Bounds(const std::vector<double>& xyz, double bounds[6])
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    bounds[2 * c] = bounds[2 * c + 1] = xyz[c];
+  }
+  for (size_t p = 0; p < xyz.size(); p += 3)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      bounds[2 * c] = std::min(bounds[2 * c], xyz[p + c]);
+      bounds[2 * c + 1] = std::max(bounds[2 * c + 1], xyz[p + c]);
+    }
+  }
+}
+
+vtkSmartPointer<vtkStaticPointLocator> Locator(const std::vector<double>& xyz, vtkPolyData* cloud)
+{
+  auto locator = vtkSmartPointer<vtkStaticPointLocator>::New();
+  double bounds[6];
+  Bounds(xyz, bounds);
+  pcs::SetSurfaceSampleDivisions(locator, bounds, static_cast<int32_t>(xyz.size() / 3));
+  locator->SetDataSet(cloud);
+  return locator;
+}
+
+bool CheckAgainstBruteForce()
+{
+  const std::vector<double> xyz = TiesAndDuplicates();
+  const int32_t n = static_cast<int32_t>(xyz.size() / 3);
+  const int k = 12;
+  const std::vector<int32_t> expected = BruteForce(xyz, k);
+  double bounds[6];
+  Bounds(xyz, bounds);
+  bool ok = SameTable(Search(xyz, k, bounds), expected, k, "own grid");
+  const int one[3] = { 1, 1, 1 }, fine[3] = { 40, 40, 40 };
+  ok = SameTable(Search(xyz, k, bounds, one), expected, k, "one bin") && ok;
+  ok = SameTable(Search(xyz, k, bounds, fine), expected, k, "40^3 bins") && ok;
+  std::vector<int32_t> table;
+  vtkSmartPointer<vtkPolyData> cloud = pcstest::MakeCloud(xyz);
+  vtkSmartPointer<vtkStaticPointLocator> locator = Locator(xyz, cloud);
+  locator->BuildLocator();
+  pcs::FindNearestNeighbors(locator, xyz.data(), n, k, table);
+  ok = SameTable(table, expected, k, "locator's grid") && ok;
+
+  // On the lattice alone no point's 6 nearest lie along one line (every one has a neighbour at
+  // 1 on each axis among them): the locator given is not built.
+  const std::vector<double> lattice(xyz.begin(), xyz.begin() + 3 * 256);
+  table = Search(lattice, k, bounds);
+  vtkSmartPointer<vtkPolyData> latticeCloud = pcstest::MakeCloud(lattice);
+  vtkSmartPointer<vtkStaticPointLocator> unbuilt = Locator(lattice, latticeCloud);
+  const int32_t changed = pcs::AddOffLineNeighbors(unbuilt, lattice.data(), 256, k, table);
+  PCS_CHECK(changed == 0, changed << " rows changed");
+  PCS_CHECK(unbuilt->GetBuildTime() == 0, "the locator was built without a row to extend");
+  return ok;
+}
+
+// 20 lines of 200 points, 0.01 apart along x, lines 0.2 apart in y (within 4 times the 12th
+// neighbour's distance): every row is confined to its line; the locator is built on demand and
+// each row gets the 3 nearest points of each line beside.
+bool CheckScanLines()
+{
+  std::vector<double> xyz;
+  for (int line = 0; line < 20; ++line)
+  {
+    for (int i = 0; i < 200; ++i)
+    {
+      xyz.insert(xyz.end(), { 0.01 * i, 0.2 * line, 0.0 });
+    }
+  }
+  const int32_t n = static_cast<int32_t>(xyz.size() / 3);
+  const int k = 12;
+  double bounds[6];
+  Bounds(xyz, bounds);
+  std::vector<int32_t> table = Search(xyz, k, bounds);
+  vtkSmartPointer<vtkPolyData> cloud = pcstest::MakeCloud(xyz);
+  vtkSmartPointer<vtkStaticPointLocator> unbuilt = Locator(xyz, cloud);
+  const int32_t changed = pcs::AddOffLineNeighbors(unbuilt, xyz.data(), n, k, table);
+  PCS_CHECK(changed == n, changed << " rows changed, not " << n);
+  PCS_CHECK(unbuilt->GetBuildTime() > 0, "the locator was not built");
+  int32_t offLine = 0;
+  for (int32_t i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < k; ++c)
+    {
+      const int32_t q = table[static_cast<size_t>(i) * k + c];
+      offLine += q >= 0 && xyz[3 * q + 1] != xyz[3 * i + 1] ? 1 : 0;
+    }
+  }
+  // k / 4 = 3 per side, one side only on the first and last lines.
+  PCS_CHECK(offLine == 3 * (2 * n - 2 * 200), offLine << " off-line neighbours");
+  return true;
+}
+}
+
+int TestNearestNeighbors(int, char*[])
+{
+  bool ok = CheckAgainstBruteForce();
+  ok = CheckScanLines() && ok;
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}

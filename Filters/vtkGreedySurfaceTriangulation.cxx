@@ -1321,7 +1321,7 @@ void Reconstruction::RemoveGrownFlaps()
 
 //------------------------------------------------------------------------------------------------
 // After step 2: the regions grown into the lost points by vtkLocalOptimumGrowth's expansion
-// (pcs::GrowFront, its default constraints). The new triangles are stage 2, the points they use
+// (pcs::GrowFront, its default constraints, on this filter's K). The new triangles are stage 2, the points they use
 // "lost and used" (Status 3).
 void Reconstruction::GrowRegions(double begin, double end)
 {

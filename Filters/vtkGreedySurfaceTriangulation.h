@@ -324,7 +324,7 @@ public:
 
   ///@{
   /**
-   * Far outliers are left out before the neighbour search and reported (point data Used = 0,
+   * Far outliers are reported and left out of the mesh (point data Used = 0,
    * Status 4, field data NumberOfOutliers, counted in NumberOfUnusedPoints, a warning): the rule
    * of vtkPerimeterPeelSurface::OutlierFactor (pcs::FindOutliers), same meaning: a point whose
    * reach (mean distance to its 8 nearest points) is over 4 times the cloud's median reach and
@@ -519,7 +519,8 @@ public:
   ///@{
   /**
    * After step 2: mesh the points of the small regions step 2 dissolved again with
-   * vtkLocalOptimumGrowth's front expansion (its default constraints), beside the regions of step
+   * vtkLocalOptimumGrowth's front expansion (its default constraints, on this filter's
+   * NumberOfNeighbors, 12 by default, not vtkLocalOptimumGrowth's 20), beside the regions of step
    * 2; the result is kept when, after steps 3 to 8, it uses more points without more boundary
    * edges (see the class documentation). Off: the paper's steps only. Default on.
    */

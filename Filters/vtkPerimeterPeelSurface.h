@@ -181,14 +181,13 @@
  *   (all its 8 nearest points sparse, a flat disc around it, and half of them passing the same
  *   test; pcsOutliers.h), however much denser the rest of the cloud (a dense patch holding most
  *   of the points made the rest "outliers" before 2026-11-24). Points within about 8 surface
- *   reaches (some 20 mean spacings)
- *   of the surface are not far outliers (they may be a sparse part of the surface). Measured
- *   (2026-11-23, against VTK's vtkStatisticalOutlierRemoval, Benchmarks/results/peel.md): no
- *   point flagged on the 9 CGAL
- *   vertex sets of the benchmark (their outputs are unchanged), 9 of 405,000 on the vertex sets
- *   of CGAL's 94 demo meshes of 32 points or more (handle, anchor, oblong: CAD vertices 10-20
- *   times sparser than their neighbours; 12 before the sparse-surface exemption of 2026-11-24);
- * uniform box clutter of 0.1-10 % of the points found at 62-100 %.
+ *   reaches (some 20 mean spacings) of the surface are not far outliers (they may be a sparse
+ *   part of the surface). Measured (2026-11-23, against VTK's vtkStatisticalOutlierRemoval,
+ *   Benchmarks/results/peel.md): no point flagged on the 9 CGAL vertex sets of the benchmark
+ *   (their outputs are unchanged), 9 of 405,000 on the vertex sets of CGAL's 94 demo meshes of
+ *   32 points or more (handle, anchor, oblong: CAD vertices 10-20 times sparser than their
+ *   neighbours; 12 before the sparse-surface exemption of 2026-11-24);
+ *   uniform box clutter of 0.1-10 % of the points found at 62-100 %.
  * - ManifoldOutput off: the paper's peeling, one tetrahedron at a time with no topology rule (no
  *   point orphaned); the surface may then have non-manifold edges and vertices.
  * - The triangles are oriented consistently, outward from the solid.

@@ -3555,10 +3555,12 @@ int vtkGreedySurfaceTriangulation::RequestData(
 
   // Neighbours (the plain nearest-first table, which the outlier rule reads), spacing,
   // uniformity.
+  // With the outlier rule on the table, the search may run twice: each gets its own range.
+  const double searchedAgain = outliersFromTable ? 0.14 : 0.25;
   r.K = std::min<int>(this->NumberOfNeighbors, r.N - 1);
   if (r.N >= 3)
   {
-    r.FindNeighbors(0.02, 0.25);
+    r.FindNeighbors(0.02, searchedAgain);
   }
   if (r.Aborted)
   {
@@ -3599,7 +3601,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
     r.K = std::min<int>(this->NumberOfNeighbors, r.N - 1);
     if (r.N >= 3)
     {
-      r.FindNeighbors(0.02, 0.25);
+      r.FindNeighbors(searchedAgain, 0.25);
     }
     if (r.Aborted)
     {
@@ -3663,16 +3665,16 @@ int vtkGreedySurfaceTriangulation::RequestData(
     {
       r.ComputeNormals(pass == 1);
     }
-    if (!r.Progress(pass == 0 ? 0.3 : 0.45))
+    if (!r.Progress(pass == 0 ? 0.3 : 0.5))
     {
       return finish();
     }
-    r.Step1GreedyEdges(pass == 0 ? 0.3 : 0.45, pass == 0 ? 0.45 : 0.55);
+    r.Step1GreedyEdges(pass == 0 ? 0.3 : 0.5, pass == 0 ? 0.45 : 0.57);
     if (r.Aborted)
     {
       return finish();
     }
-    r.Step2Umbrella(pass == 0 ? 0.45 : 0.55, pass == 0 ? 0.5 : 0.6);
+    r.Step2Umbrella(pass == 0 ? 0.45 : 0.57, pass == 0 ? 0.5 : 0.6);
     if (r.Aborted)
     {
       return finish();
@@ -3701,24 +3703,26 @@ int vtkGreedySurfaceTriangulation::RequestData(
   // Steps 3 to 8 on the regions of step 2, and on the same regions grown into the lost points of
   // the islands step 2 dissolved (GrowRegions): the grown ones are kept when the repaired mesh
   // uses more points without more boundary edges.
-  auto repair = [](Reconstruction& x)
+  // Progress from `begin` to `end` (two calls when the grown regions are repaired too).
+  auto repair = [](Reconstruction& x, double begin, double end)
   {
+    auto at = [begin, end](double fraction) { return begin + fraction * (end - begin); };
     x.Step3Status();
-    if (!x.Progress(0.65))
+    if (!x.Progress(at(0.05)))
     {
       return false;
     }
     x.Step4Bridges();
-    if (!x.Progress(0.7))
+    if (!x.Progress(at(0.2)))
     {
       return false;
     }
-    x.Step6FillHoles(0.7, 0.97);
+    x.Step6FillHoles(at(0.2), at(0.97));
     if (x.Aborted)
     {
       return false;
     }
-    x.InsertLostPoints(0.97, 0.98);
+    x.InsertLostPoints(at(0.97), end);
     if (x.Aborted)
     {
       return false;
@@ -3744,13 +3748,14 @@ int vtkGreedySurfaceTriangulation::RequestData(
       grown.reset();
     }
   }
-  if (!repair(r))
+  const double repairedGrown = grown ? 0.8 : 0.98;
+  if (!repair(r, 0.63, repairedGrown))
   {
     return finish();
   }
   if (grown)
   {
-    if (!repair(*grown))
+    if (!repair(*grown, repairedGrown, 0.98))
     {
       return finish();
     }

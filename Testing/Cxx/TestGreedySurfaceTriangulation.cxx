@@ -390,6 +390,37 @@ bool TestSphere()
   return true;
 }
 
+// Progress never runs backwards: a sphere with far points, whose outlier rule reads the
+// neighbour table and runs the search a second time (both searches had the range 0.02-0.25).
+void OnProgressRecordDrop(vtkObject*, unsigned long, void* client, void* call)
+{
+  auto* last = static_cast<double*>(client);
+  const double progress = *static_cast<double*>(call);
+  last[1] = std::max(last[1], last[0] - progress);
+  last[0] = progress;
+}
+
+bool TestMonotoneProgress()
+{
+  auto xyz = RandomSphere(2000, 13);
+  for (int i = 0; i < 5; ++i)
+  {
+    xyz.insert(xyz.end(), { 20.0 + 3.0 * i, -15.0, 10.0 * i });
+  }
+  vtkNew<vtkGreedySurfaceTriangulation> greedy;
+  greedy->SetInputData(pcstest::MakeCloud(xyz));
+  double last[2] = { 0.0, 0.0 }; // last progress, largest drop
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetCallback(&OnProgressRecordDrop);
+  callback->SetClientData(last);
+  greedy->AddObserver(vtkCommand::ProgressEvent, callback);
+  UpdateCountingWarnings(greedy);
+  const double outliers = FieldValue(greedy->GetOutput(), "NumberOfOutliers");
+  PCS_CHECK(outliers == 5, "progress: " << outliers << " outliers, not 5");
+  PCS_CHECK(last[1] == 0.0, "progress went back by " << last[1]);
+  return true;
+}
+
 bool TestTorus()
 {
   const int n = 5000;
@@ -777,6 +808,7 @@ int TestGreedySurfaceTriangulation(int, char*[])
 {
   bool ok = true;
   ok = TestSphere() && ok;
+  ok = TestMonotoneProgress() && ok;
   ok = TestTorus() && ok;
   ok = TestDamagedSphere() && ok;
   ok = TestBridgedIslands() && ok;

@@ -1304,16 +1304,41 @@ void Reconstruction::RemoveGrownFlaps()
     return count;
   };
   const int64_t ids = std::min<int64_t>(this->Mesh.GetNumberOfTriangleIds(), this->Stage.size());
-  bool removed = true;
-  while (removed)
+  auto isFlap = [&](int64_t t)
   {
-    removed = false;
-    for (int64_t t = 0; t < ids; ++t)
+    return t >= 0 && t < ids && !this->Mesh.IsTriangleRemoved(t) && this->Stage[t] == 2 &&
+      boundaryEdges(t) >= 2;
+  };
+  // A worklist: taking a flap back can make only its edge neighbours flaps (a strip is peeled
+  // from its end in linear time, not one pass over every triangle per step).
+  std::vector<int64_t> work;
+  for (int64_t t = 0; t < ids; ++t)
+  {
+    if (isFlap(t))
     {
-      if (!this->Mesh.IsTriangleRemoved(t) && this->Stage[t] == 2 && boundaryEdges(t) >= 2)
+      work.push_back(t);
+    }
+  }
+  while (!work.empty())
+  {
+    const int64_t t = work.back();
+    work.pop_back();
+    if (!isFlap(t))
+    {
+      continue;
+    }
+    const int32_t* tri = this->Mesh.GetTriangle(t);
+    int64_t neighbours[3];
+    for (int j = 0; j < 3; ++j)
+    {
+      neighbours[j] = this->Mesh.FindTriangle(tri[(j + 1) % 3], tri[j]);
+    }
+    this->TakeBack(t);
+    for (int64_t u : neighbours)
+    {
+      if (isFlap(u))
       {
-        this->TakeBack(t);
-        removed = true;
+        work.push_back(u);
       }
     }
   }

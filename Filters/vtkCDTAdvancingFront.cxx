@@ -1934,13 +1934,7 @@ int vtkCDTAdvancingFront::RequestData(
       everyPoint[k] = k;
     }
     exponent = pcs::PredicateSafeExponent(xyz.data(), 3, everyPoint);
-    if (exponent != 0)
-    {
-      for (double& c : xyz)
-      {
-        c = std::ldexp(c, exponent);
-      }
-    }
+    pcs::ScaleInPlace(xyz.data(), xyz.size(), exponent);
   }
   if (this->NumberOfSkippedPoints > 0)
   {

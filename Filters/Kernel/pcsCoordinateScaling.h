@@ -69,10 +69,7 @@ inline void ScaleInPlace(double* coords, size_t count, int exponent)
 inline std::vector<double> ScaledCopy(const double* coords, size_t count, int exponent)
 {
   std::vector<double> scaled(coords, coords + count);
-  for (double& c : scaled)
-  {
-    c = std::ldexp(c, exponent);
-  }
+  ScaleInPlace(scaled.data(), count, exponent);
   return scaled;
 }
 } // namespace pcs

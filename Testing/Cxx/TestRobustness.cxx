@@ -952,56 +952,109 @@ bool RunExtremes(const FilterEntry& filter)
   return true;
 }
 
+// The double parameters of each filter (NaN passes VTK's clamp macros: every comparison is
+// false).
+// Get: only where a test reads the parameter back (OutlierFactor, RunOutlierFactorLimits).
+struct DoubleSetter
+{
+  std::string Name;
+  std::function<void(vtkPolyDataAlgorithm*, double)> Set;
+  std::function<double(vtkPolyDataAlgorithm*)> Get;
+};
+template<typename T>
+DoubleSetter Setter(const char* name, void (T::*set)(double))
+{
+  return {
+    name, [set](vtkPolyDataAlgorithm* a, double v) { (static_cast<T*>(a)->*set)(v); }, nullptr
+  };
+}
+template<typename T, typename Getter>
+DoubleSetter Setter(const char* name, void (T::*set)(double), Getter get)
+{
+  DoubleSetter setter = Setter(name, set);
+  setter.Get = [get](vtkPolyDataAlgorithm* a) { return (static_cast<T*>(a)->*get)(); };
+  return setter;
+}
+
+std::vector<DoubleSetter> DoubleParametersOf(const std::string& name)
+{
+  if (name == "vtkIncrementalDelaunay3D")
+  {
+    return { Setter("Tolerance", &vtkIncrementalDelaunay3D::SetTolerance) };
+  }
+#ifdef PCS_HAVE_PEEL
+  if (name == "vtkPerimeterPeelSurface")
+  {
+    using F = vtkPerimeterPeelSurface;
+    return { Setter("ThresholdFactor", &F::SetThresholdFactor),
+      Setter("ConvergenceTolerance", &F::SetConvergenceTolerance),
+      Setter("Threshold", &F::SetThreshold),
+      Setter("GroupFactor", &F::SetGroupFactor),
+      Setter("HandleFactor", &F::SetHandleFactor),
+      Setter("CaveLimit", &F::SetCaveLimit),
+      Setter("GroupStartLimit", &F::SetGroupStartLimit),
+      Setter("OutlierFactor", &F::SetOutlierFactor, &F::GetOutlierFactor) };
+  }
+#endif
+#ifdef PCS_HAVE_CDT
+  if (name == "vtkCDTAdvancingFront")
+  {
+    using F = vtkCDTAdvancingFront;
+    return { Setter("NeighborhoodRadius", &F::SetNeighborhoodRadius),
+      Setter("NeighborhoodRadiusFactor", &F::SetNeighborhoodRadiusFactor),
+      Setter("MinimumNormalDot", &F::SetMinimumNormalDot),
+      Setter("MaximumRayDistance", &F::SetMaximumRayDistance),
+      Setter("MinimumTriangleArea", &F::SetMinimumTriangleArea),
+      Setter("HoleFillingRadiusFactor", &F::SetHoleFillingRadiusFactor),
+      Setter("HoleFillingMinimumNormalDot", &F::SetHoleFillingMinimumNormalDot),
+      Setter("NoiseBandFactor", &F::SetNoiseBandFactor) };
+  }
+#endif
+#ifdef PCS_HAVE_LOCAL_OPTIMUM
+  if (name == "vtkLocalOptimumGrowth")
+  {
+    using F = vtkLocalOptimumGrowth;
+    return { Setter("MaximumNormalAngle", &F::SetMaximumNormalAngle),
+      Setter("MinimumEdgeRatio", &F::SetMinimumEdgeRatio),
+      Setter("MaximumEdgeRatio", &F::SetMaximumEdgeRatio),
+      Setter("MaximumBaseAngle", &F::SetMaximumBaseAngle),
+      Setter("OutlierFactor", &F::SetOutlierFactor, &F::GetOutlierFactor) };
+  }
+#endif
+#ifdef PCS_HAVE_GREEDY
+  if (name == "vtkGreedySurfaceTriangulation")
+  {
+    using F = vtkGreedySurfaceTriangulation;
+    return { Setter("OutlierFactor", &F::SetOutlierFactor, &F::GetOutlierFactor),
+      Setter("AutomaticCorrectFraction", &F::SetAutomaticCorrectFraction),
+      Setter("UniformityAngle", &F::SetUniformityAngle),
+      Setter("MaximumNormalDeviation", &F::SetMaximumNormalDeviation),
+      Setter("BoundaryVectorRadius", &F::SetBoundaryVectorRadius),
+      Setter("StatusNeutralAngle", &F::SetStatusNeutralAngle),
+      Setter("MaximumBridgeLength", &F::SetMaximumBridgeLength),
+      Setter("MinimumBridgeSeparation", &F::SetMinimumBridgeSeparation),
+      Setter("MaximumHoleDiameter", &F::SetMaximumHoleDiameter),
+      Setter("AuxiliaryPointDistance", &F::SetAuxiliaryPointDistance) };
+  }
+#endif
+  return {};
+}
+
 // OutlierFactor at its limits, on a sphere sample with 3 far outliers (4 radii from the centre,
 // 30 to 40 sphere spacings from any point): 0 turns the rule off (and -1 is clamped to 0), so
 // nothing is excluded; a huge value is clamped to 1000, above these outliers' ratio (about 35):
 // nothing is excluded either; the default 8 excludes exactly the 3 with a warning, reported in
 // NumberOfOutliers with Used 0. No error, and a valid output, in every case. (NaN: an error,
 // RunNaNParameters.)
-struct OutlierFactorAccess
-{
-  std::function<void(vtkPolyDataAlgorithm*, double)> Set;
-  std::function<double(vtkPolyDataAlgorithm*)> Get;
-};
-
-template<typename T>
-OutlierFactorAccess OutlierFactorOf()
-{
-  return { [](vtkPolyDataAlgorithm* a, double v) { static_cast<T*>(a)->SetOutlierFactor(v); },
-    [](vtkPolyDataAlgorithm* a) { return static_cast<T*>(a)->GetOutlierFactor(); } };
-}
-
-// False for the filters without an OutlierFactor.
-bool FindOutlierFactor(const std::string& name, OutlierFactorAccess& access)
-{
-#ifdef PCS_HAVE_PEEL
-  if (name == "vtkPerimeterPeelSurface")
-  {
-    access = OutlierFactorOf<vtkPerimeterPeelSurface>();
-    return true;
-  }
-#endif
-#ifdef PCS_HAVE_LOCAL_OPTIMUM
-  if (name == "vtkLocalOptimumGrowth")
-  {
-    access = OutlierFactorOf<vtkLocalOptimumGrowth>();
-    return true;
-  }
-#endif
-#ifdef PCS_HAVE_GREEDY
-  if (name == "vtkGreedySurfaceTriangulation")
-  {
-    access = OutlierFactorOf<vtkGreedySurfaceTriangulation>();
-    return true;
-  }
-#endif
-  return false;
-}
-
 bool RunOutlierFactorLimits(const FilterEntry& filter)
 {
-  OutlierFactorAccess access;
-  if (!FindOutlierFactor(filter.Info.Name, access))
+  // The filters with an OutlierFactor: those whose double parameters list it, with its getter.
+  DoubleSetter access;
+  for (const DoubleSetter& parameter : DoubleParametersOf(filter.Info.Name))
+  {
+    access = parameter.Name == "OutlierFactor" ? parameter : access;
+  }
+  if (!access.Get)
   {
     return true;
   }
@@ -1181,79 +1234,6 @@ bool RunMismatchedPointData(const FilterEntry& filter)
   return CheckOutput(filter, label, prepared, output, true);
 }
 
-// The double parameters of each filter (NaN passes VTK's clamp macros: every comparison is
-// false).
-using DoubleSetter = std::pair<std::string, std::function<void(vtkPolyDataAlgorithm*, double)>>;
-template<typename T>
-DoubleSetter Setter(const char* name, void (T::*set)(double))
-{
-  return { name, [set](vtkPolyDataAlgorithm* a, double v) { (static_cast<T*>(a)->*set)(v); } };
-}
-
-std::vector<DoubleSetter> DoubleParametersOf(const std::string& name)
-{
-  if (name == "vtkIncrementalDelaunay3D")
-  {
-    return { Setter("Tolerance", &vtkIncrementalDelaunay3D::SetTolerance) };
-  }
-#ifdef PCS_HAVE_PEEL
-  if (name == "vtkPerimeterPeelSurface")
-  {
-    using F = vtkPerimeterPeelSurface;
-    return { Setter("ThresholdFactor", &F::SetThresholdFactor),
-      Setter("ConvergenceTolerance", &F::SetConvergenceTolerance),
-      Setter("Threshold", &F::SetThreshold),
-      Setter("GroupFactor", &F::SetGroupFactor),
-      Setter("HandleFactor", &F::SetHandleFactor),
-      Setter("CaveLimit", &F::SetCaveLimit),
-      Setter("GroupStartLimit", &F::SetGroupStartLimit),
-      Setter("OutlierFactor", &F::SetOutlierFactor) };
-  }
-#endif
-#ifdef PCS_HAVE_CDT
-  if (name == "vtkCDTAdvancingFront")
-  {
-    using F = vtkCDTAdvancingFront;
-    return { Setter("NeighborhoodRadius", &F::SetNeighborhoodRadius),
-      Setter("NeighborhoodRadiusFactor", &F::SetNeighborhoodRadiusFactor),
-      Setter("MinimumNormalDot", &F::SetMinimumNormalDot),
-      Setter("MaximumRayDistance", &F::SetMaximumRayDistance),
-      Setter("MinimumTriangleArea", &F::SetMinimumTriangleArea),
-      Setter("HoleFillingRadiusFactor", &F::SetHoleFillingRadiusFactor),
-      Setter("HoleFillingMinimumNormalDot", &F::SetHoleFillingMinimumNormalDot),
-      Setter("NoiseBandFactor", &F::SetNoiseBandFactor) };
-  }
-#endif
-#ifdef PCS_HAVE_LOCAL_OPTIMUM
-  if (name == "vtkLocalOptimumGrowth")
-  {
-    using F = vtkLocalOptimumGrowth;
-    return { Setter("MaximumNormalAngle", &F::SetMaximumNormalAngle),
-      Setter("MinimumEdgeRatio", &F::SetMinimumEdgeRatio),
-      Setter("MaximumEdgeRatio", &F::SetMaximumEdgeRatio),
-      Setter("MaximumBaseAngle", &F::SetMaximumBaseAngle),
-      Setter("OutlierFactor", &F::SetOutlierFactor) };
-  }
-#endif
-#ifdef PCS_HAVE_GREEDY
-  if (name == "vtkGreedySurfaceTriangulation")
-  {
-    using F = vtkGreedySurfaceTriangulation;
-    return { Setter("OutlierFactor", &F::SetOutlierFactor),
-      Setter("AutomaticCorrectFraction", &F::SetAutomaticCorrectFraction),
-      Setter("UniformityAngle", &F::SetUniformityAngle),
-      Setter("MaximumNormalDeviation", &F::SetMaximumNormalDeviation),
-      Setter("BoundaryVectorRadius", &F::SetBoundaryVectorRadius),
-      Setter("StatusNeutralAngle", &F::SetStatusNeutralAngle),
-      Setter("MaximumBridgeLength", &F::SetMaximumBridgeLength),
-      Setter("MinimumBridgeSeparation", &F::SetMinimumBridgeSeparation),
-      Setter("MaximumHoleDiameter", &F::SetMaximumHoleDiameter),
-      Setter("AuxiliaryPointDistance", &F::SetAuxiliaryPointDistance) };
-  }
-#endif
-  return {};
-}
-
 // Each double parameter set to NaN, one at a time: an error and a valid output without
 // triangles. (NaN went through the clamp: most parameters then acted as some limit, silently;
 // a NaN NeighborhoodRadiusFactor left vtkCDTAdvancingFront without any triangle, a NaN
@@ -1263,9 +1243,9 @@ bool RunNaNParameters(const FilterEntry& filter)
   auto prepared = filter.Prepare(pcstest::MakeCloud(Sphere(500, 81)));
   for (const DoubleSetter& parameter : DoubleParametersOf(filter.Info.Name))
   {
-    const std::string label = filter.Info.Name + " / " + parameter.first + " = NaN";
+    const std::string label = filter.Info.Name + " / " + parameter.Name + " = NaN";
     Algorithm algorithm = filter.Info.Make();
-    parameter.second(algorithm, std::numeric_limits<double>::quiet_NaN());
+    parameter.Set(algorithm, std::numeric_limits<double>::quiet_NaN());
     algorithm->SetInputData(prepared);
     const Messages messages = Update(algorithm);
     PCS_CHECK(messages.Errors > 0, label << ": no error");

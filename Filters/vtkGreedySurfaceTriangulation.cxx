@@ -3759,6 +3759,8 @@ int vtkGreedySurfaceTriangulation::RequestData(
     x.Step7Swaps();
     return true;
   };
+  // Step 1's triangles are read by steps 1 and 2 only: freed before the grown copy is made.
+  std::vector<int32_t>().swap(r.Step1Triangles);
   std::unique_ptr<Reconstruction> grown;
   if (this->GrowRegions && !r.Dissolved.empty())
   {

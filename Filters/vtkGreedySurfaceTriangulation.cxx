@@ -193,6 +193,7 @@ public:
   std::vector<double> EdgeVectors;     // the same from the vertex's own two edges (step 5)
   std::vector<std::array<int32_t, 2>> Links; // bridges and chords (step 7)
   std::vector<int32_t> Dissolved;            // the points of the islands step 2 dissolved
+  std::vector<char> InsertedPoints;          // per point, by InsertLostPoints (empty: none)
 
   // Loops (steps 3 to 6).
   struct Node
@@ -1277,9 +1278,21 @@ void Reconstruction::RemoveSmallOpenGrownParts()
     {
       continue;
     }
+    std::vector<int32_t> vertices;
     for (int64_t t : part)
     {
+      const int32_t* tri = this->Mesh.GetTriangle(t);
+      vertices.insert(vertices.end(), tri, tri + 3);
       this->TakeBack(t);
+    }
+    // A lost point inserted into the piece (stage 8) is lost again: no longer counted inserted.
+    for (int32_t v : vertices)
+    {
+      if (this->Mesh.IsFree(v) && !this->InsertedPoints.empty() && this->InsertedPoints[v])
+      {
+        this->InsertedPoints[v] = 0;
+        --this->Inserted;
+      }
     }
   }
 }
@@ -2252,6 +2265,8 @@ void Reconstruction::InsertLostPoints(double begin, double end)
       this->Status[q] = vtkGreedySurfaceTriangulation::LOST_USED_BY_HOLE_FILLING;
       this->Links.insert(this->Links.end(), result.OldEdges.begin(), result.OldEdges.end());
       ++this->Inserted;
+      this->InsertedPoints.resize(static_cast<size_t>(this->N), 0);
+      this->InsertedPoints[q] = 1;
       progress = true;
       if (result.Added.size() == 1)
       {

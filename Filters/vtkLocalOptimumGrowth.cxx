@@ -140,17 +140,18 @@ inline void PrefetchPoint(const double* x, Id v)
   Prefetch(x + 3 * static_cast<size_t>(v));
 }
 
+// Every member is set by MakeParameters (the defaults are pcs::FrontGrowthParameters').
 struct Parameters
 {
-  int K = 20;
-  double CosNormal = 0.5;
-  double TanNormal = 1.7320508075688772;
-  double CosHalfNormal = 0.8660254037844386; // preferred candidates bend by at most half
-  double MinRatio = 1.0 / 3.0;
-  double MaxRatio = 3.0;
-  double CosBase = 0.0;
-  int MaxHoleEdges = 8;
-  bool Relax = true;
+  int K;
+  double CosNormal;
+  double TanNormal;
+  double CosHalfNormal; // preferred candidates bend by at most half
+  double MinRatio;
+  double MaxRatio;
+  double CosBase;
+  int MaxHoleEdges;
+  bool Relax;
 };
 
 // The internal form of the constraints (cosines, tangent) for K neighbours per point.
@@ -2194,7 +2195,18 @@ int64_t pcs::GrowFront(pcs::SurfaceMesh& mesh,
 }
 
 //------------------------------------------------------------------------------------------------
-vtkLocalOptimumGrowth::vtkLocalOptimumGrowth() = default;
+// The constraints' defaults are pcs::FrontGrowthParameters' (one place, shared with greedy's
+// GrowRegions).
+vtkLocalOptimumGrowth::vtkLocalOptimumGrowth()
+{
+  const pcs::FrontGrowthParameters defaults;
+  this->MaximumNormalAngle = defaults.MaximumNormalAngle;
+  this->MinimumEdgeRatio = defaults.MinimumEdgeRatio;
+  this->MaximumEdgeRatio = defaults.MaximumEdgeRatio;
+  this->MaximumBaseAngle = defaults.MaximumBaseAngle;
+  this->MaximumHoleEdges = defaults.MaximumHoleEdges;
+  this->RelaxConstraints = defaults.RelaxConstraints;
+}
 
 vtkLocalOptimumGrowth::~vtkLocalOptimumGrowth()
 {

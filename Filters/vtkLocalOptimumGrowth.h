@@ -378,12 +378,13 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int NumberOfNeighbors = 20;
-  double MaximumNormalAngle = 60.0;
-  double MinimumEdgeRatio = 1.0 / 3.0;
-  double MaximumEdgeRatio = 3.0;
-  double MaximumBaseAngle = 120.0;
-  int MaximumHoleEdges = 8;
-  bool RelaxConstraints = true;
+  // The constraints: set by the constructor from pcs::FrontGrowthParameters' defaults.
+  double MaximumNormalAngle;
+  double MinimumEdgeRatio;
+  double MaximumEdgeRatio;
+  double MaximumBaseAngle;
+  int MaximumHoleEdges;
+  bool RelaxConstraints;
   double OutlierFactor = 8.0;
   vtkStaticPointLocator* Locator = nullptr;
 

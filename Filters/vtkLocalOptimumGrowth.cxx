@@ -1957,6 +1957,11 @@ void Grower::Unfold()
   auto normalOf = [this](Id x, Id y, Id z, double* n) {
     return UnitNormal(this->P3(x), this->P3(y), this->P3(z), n);
   };
+  auto thirdVertex = [this](int64_t t, Id a, Id b) {
+    const int32_t* v = this->Mesh.GetTriangle(t);
+    return static_cast<Id>(
+      static_cast<int64_t>(v[0]) + v[1] + v[2] - static_cast<int64_t>(a) - static_cast<int64_t>(b));
+  };
   std::vector<std::pair<Id, Id>> stack;
   const int64_t count = this->Mesh.GetNumberOfTriangleIds();
   stack.reserve(2 * static_cast<size_t>(count)); // each edge once (3 / 2 per triangle), and room
@@ -1986,7 +1991,8 @@ void Grower::Unfold()
     {
       continue;
     }
-    const Id c = this->Mesh.OppositeVertex(a, b), d = this->Mesh.OppositeVertex(b, a);
+    // The third vertices read from the two triangles found (no second scan of the wedges).
+    const Id c = thirdVertex(t1, a, b), d = thirdVertex(t2, a, b);
     double n1[3], n2[3];
     if (c == d || !normalOf(a, b, c, n1) || !normalOf(b, a, d, n2) ||
       Dot(n1, n2) >= this->Par.CosNormal || this->Mesh.GetEdgeValence(c, d) > 0 ||
@@ -2063,12 +2069,25 @@ bool Grower::NeighborDiagonal(Id c, Id d) const
     std::find(nd, nd + this->K, c) != nd + this->K;
 }
 
-// Closed components are turned outwards: positive signed volume.
+// Closed components are turned outwards: positive signed volume. The triangles across the edges
+// are found vertex by vertex: the umbrella of a vertex with a single fan is edge-connected, so
+// its triangles join the component together (one wedge scan per vertex rather than one per
+// triangle edge), and the component is open when the fan is (the vertex is not Interior). Only an
+// edge between two vertices of more than one fan is looked up on its own.
 void Grower::OrientComponents()
 {
   const int64_t count = this->Mesh.GetNumberOfTriangleIds();
   std::vector<char> visited(static_cast<size_t>(count), 0);
+  std::vector<char> vertexDone(static_cast<size_t>(this->N), 0);
   std::vector<int64_t> component;
+  std::vector<int64_t> umbrella(16);
+  auto join = [&](int64_t other) {
+    if (!visited[other])
+    {
+      visited[other] = 1;
+      component.push_back(other);
+    }
+  };
   for (int64_t t = 0; t < count; ++t)
   {
     if (visited[t] || this->Mesh.IsTriangleRemoved(t))
@@ -2091,16 +2110,30 @@ void Grower::OrientComponents()
       volume += Dot(e0, c);
       for (int j = 0; j < 3; ++j)
       {
-        const int64_t other = this->Mesh.FindTriangle(v[(j + 1) % 3], v[j]);
-        if (other < 0)
+        const Id s = v[j], e = v[(j + 1) % 3];
+        if (this->Mesh.GetNumberOfFans(s) > 1 && this->Mesh.GetNumberOfFans(e) > 1)
         {
-          closed = false;
+          const int64_t other = this->Mesh.FindTriangle(e, s);
+          closed = closed && other >= 0;
+          if (other >= 0)
+          {
+            join(other);
+          }
         }
-        else if (!visited[other])
+        if (this->Mesh.GetNumberOfFans(s) > 1 || vertexDone[s])
         {
-          visited[other] = 1;
-          component.push_back(other);
+          continue;
         }
+        vertexDone[s] = 1;
+        closed = closed && this->Mesh.IsInterior(s);
+        int degree =
+          this->Mesh.GetVertexTriangles(s, umbrella.data(), static_cast<int>(umbrella.size()));
+        if (degree > static_cast<int>(umbrella.size()))
+        {
+          umbrella.resize(static_cast<size_t>(degree));
+          degree = this->Mesh.GetVertexTriangles(s, umbrella.data(), degree);
+        }
+        std::for_each(umbrella.begin(), umbrella.begin() + degree, join);
       }
     }
     if (closed && volume < 0.0)

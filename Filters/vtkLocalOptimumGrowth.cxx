@@ -189,7 +189,6 @@ public:
     , Algorithm(algorithm)
   {
     this->Mesh.Initialize(n);
-    this->Mesh.ReserveTriangles(2 * static_cast<int64_t>(n));
     this->Scratch.assign(n, PointScratch());
     this->Touched.assign(n, 0);
     this->InTouchedSinceRetry.assign(n, 0);
@@ -200,7 +199,7 @@ public:
   // The expansion alone (steps 3 and 4 of the class documentation: no hole filling) from the front
   // of `mesh` (when expandFront), which the grower takes over with its triangle ids; then from
   // seeds at the points of SeedOrder when the front has stalled.
-  void GrowFrom(const pcs::SurfaceMesh& mesh, bool expandFront);
+  void GrowFrom(pcs::SurfaceMesh&& mesh, bool expandFront);
   void Grow();
 
   pcs::SurfaceMesh Mesh;
@@ -209,7 +208,7 @@ public:
   // descending, then y, then z; a permutation of 0..N-1.
   std::vector<Id> SeedOrder;
   // The scan-line stretch of every point (3 per point, see pcs::AddOffLineNeighbors), or empty.
-  void SetStretch(std::vector<double>&& stretch);
+  void SetStretch(const std::vector<double>& stretch); // read, not copied: must outlive the grower
   vtkIdType Seeds = 0;
   vtkIdType HolesClosed = 0;
   vtkIdType Inserted = 0;
@@ -355,7 +354,7 @@ private:
   const double* X;
   const Id N;
   const std::vector<Id>& Knn;
-  std::vector<double> Stretch;
+  const double* Stretch = nullptr; // 3 per point, or nullptr
   std::vector<uint8_t> Stretched; // per point: a stretch not zero (empty: none anywhere)
   const int K;
   const Parameters Par;
@@ -720,16 +719,16 @@ bool Grower::Blocked(Id x, Id y, Id z, const std::vector<Id>& blockers)
   return false;
 }
 
-void Grower::SetStretch(std::vector<double>&& stretch)
+void Grower::SetStretch(const std::vector<double>& stretch)
 {
-  this->Stretch = std::move(stretch);
+  this->Stretch = stretch.data();
   this->Stretched.clear();
-  for (size_t v = 0; 3 * v + 2 < this->Stretch.size(); ++v)
+  for (size_t v = 0; 3 * v + 2 < stretch.size(); ++v)
   {
-    const double* s = &this->Stretch[3 * v];
+    const double* s = &stretch[3 * v];
     if (s[0] != 0.0 || s[1] != 0.0 || s[2] != 0.0)
     {
-      this->Stretched.resize(this->Stretch.size() / 3, 0);
+      this->Stretched.resize(stretch.size() / 3, 0);
       this->Stretched[v] = 1;
     }
   }
@@ -2143,9 +2142,9 @@ void Grower::OrientComponents()
   }
 }
 
-void Grower::GrowFrom(const pcs::SurfaceMesh& mesh, bool expandFront)
+void Grower::GrowFrom(pcs::SurfaceMesh&& mesh, bool expandFront)
 {
-  this->Mesh = mesh;
+  this->Mesh = std::move(mesh);
   for (Id v = 0; v < this->N; ++v)
   {
     this->UsedVertices += this->Mesh.IsFree(v) ? 0 : 1;
@@ -2184,6 +2183,7 @@ void Grower::Grow()
 
 void Grower::Run()
 {
+  this->Mesh.ReserveTriangles(2 * static_cast<int64_t>(this->N));
   if (!this->PlantSeed())
   {
     return;
@@ -2218,10 +2218,10 @@ int64_t pcs::GrowFront(pcs::SurfaceMesh& mesh,
   const int64_t before = mesh.GetNumberOfTriangles();
   Grower grower(x, n, knn, MakeParameters(k, parameters), algorithm);
   grower.SeedOrder = seeds;
-  grower.SetStretch(std::vector<double>(stretch));
+  grower.SetStretch(stretch);
   grower.ProgressBegin = progressBegin;
   grower.ProgressEnd = progressEnd;
-  grower.GrowFrom(mesh, expandFront);
+  grower.GrowFrom(std::move(mesh), expandFront);
   aborted = grower.Aborted;
   mesh = std::move(grower.Mesh);
   return mesh.GetNumberOfTriangles() - before;
@@ -2544,7 +2544,7 @@ int vtkLocalOptimumGrowth::RequestData(
   constraints.MaximumHoleEdges = this->MaximumHoleEdges;
   constraints.RelaxConstraints = this->RelaxConstraints != 0;
   Grower grower(x.data(), n, knn, MakeParameters(k, constraints), this);
-  grower.SetStretch(std::move(stretch));
+  grower.SetStretch(stretch);
   {
     // Seeds: the points in decreasing lexicographic order (internal ids; outliers left out).
     std::vector<Id> internal(static_cast<size_t>(numberOfPoints), -1);

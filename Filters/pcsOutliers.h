@@ -3,6 +3,7 @@
 #ifndef pcsOutliers_h
 #define pcsOutliers_h
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -52,6 +53,37 @@ int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double 
 /// per point (1: outlier); returns their number (0 when `width` is too small).
 int64_t FlagOutliers(const double* x, int32_t n, const std::vector<int32_t>& knn, int width,
   double factor, std::vector<uint8_t>& far);
+
+/// FlagOutliers on the table of the points `x` (packed x, y, z, one per entry of `ids`), then
+/// the flagged points removed from `ids` and `x` (order kept): the caller then searches its
+/// table again without them (vtkGreedySurfaceTriangulation, vtkLocalOptimumGrowth). `far` keeps
+/// the flags by the old index. Returns their number.
+template<typename IdType>
+int64_t DropOutliersByTable(std::vector<double>& x,
+  std::vector<IdType>& ids,
+  const std::vector<int32_t>& knn,
+  int width,
+  double factor,
+  std::vector<uint8_t>& far)
+{
+  const int32_t n = static_cast<int32_t>(ids.size());
+  const int64_t count = FlagOutliers(x.data(), n, knn, width, factor, far);
+  if (count > 0)
+  {
+    int32_t kept = 0;
+    for (int32_t i = 0; i < n; ++i)
+    {
+      if (!far[i])
+      {
+        std::copy_n(&x[3 * static_cast<size_t>(i)], 3, &x[3 * static_cast<size_t>(kept)]);
+        ids[kept++] = ids[i];
+      }
+    }
+    x.resize(3 * static_cast<size_t>(kept));
+    ids.resize(kept);
+  }
+  return count;
+}
 
 /// FindOutliers, then the flagged points are removed from `ids` (order kept); returns their
 /// number. The filters' OutlierFactor.

@@ -3608,7 +3608,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
   }
   std::vector<uint8_t> far;
   if (outliersFromTable && r.N >= 3 &&
-    pcs::FlagOutliers(r.X.data(), r.N, r.Neighbors, r.K, this->OutlierFactor, far) > 0)
+    pcs::DropOutliersByTable(r.X, inputIds, r.Neighbors, r.K, this->OutlierFactor, far) > 0)
   {
     // The flagged points and their exact copies leave the cloud (Status 4, NumberOfOutliers: the
     // copies of an outlier are outliers, not duplicates); the table is made again without them.
@@ -3621,18 +3621,8 @@ int vtkGreedySurfaceTriangulation::RequestData(
         representative[i] = -1;
       }
     }
-    int32_t kept = 0;
-    for (int32_t i = 0; i < r.N; ++i)
-    {
-      if (!far[i])
-      {
-        std::copy_n(&r.X[3 * static_cast<size_t>(i)], 3, &r.X[3 * static_cast<size_t>(kept)]);
-        inputIds[kept++] = inputIds[i];
-      }
-    }
+    const int32_t kept = static_cast<int32_t>(inputIds.size());
     r.N = kept;
-    r.X.resize(3 * static_cast<size_t>(kept));
-    inputIds.resize(kept);
     localOf.assign(numberOfPoints, -1);
     for (int32_t i = 0; i < kept; ++i)
     {

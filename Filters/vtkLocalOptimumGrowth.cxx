@@ -2495,19 +2495,10 @@ int vtkLocalOptimumGrowth::RequestData(
   if (outliersFromTable && !this->GetAbortExecute())
   {
     std::vector<uint8_t> far;
-    this->NumberOfOutliers = pcs::FlagOutliers(x.data(), n, knn, k, this->OutlierFactor, far);
+    this->NumberOfOutliers = pcs::DropOutliersByTable(x, ids, knn, k, this->OutlierFactor, far);
     if (this->NumberOfOutliers > 0)
     {
-      Id kept = 0;
-      for (Id i = 0; i < n; ++i)
-      {
-        if (!far[i])
-        {
-          ids[kept++] = ids[i];
-        }
-      }
-      ids.resize(kept);
-      n = kept;
+      n = static_cast<Id>(ids.size());
       findNeighbors();
     }
   }

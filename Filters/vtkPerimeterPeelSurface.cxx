@@ -5,6 +5,7 @@
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 #include "pcsOutliers.h"
+#include "pcsProjectedTests.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -276,9 +277,9 @@ public:
     const double* a = this->XYZ + 3 * static_cast<int64_t>(t[0]);
     const double* b = this->XYZ + 3 * static_cast<int64_t>(t[1]);
     const double* d = this->XYZ + 3 * static_cast<int64_t>(t[2]);
-    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-    const double w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
-    return { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] };
+    std::array<double, 3> normal;
+    pcs::projected::TriangleNormal(a, b, d, normal.data());
+    return normal;
   }
 
   // Whether the edge of c joining its slots i and j is a fold of the boundary: it has two boundary

@@ -1479,7 +1479,8 @@ bool Front::Seed(Id p, const Parameters& parameters)
 // reversed): the normal rules refuse every triangle across such a hole, and the front triangles
 // made around it are tilted or folded. A loop is closed by the triangulation of its own vertices
 // of least largest dihedral angle (the shared kernel pcs::holes::LeastDihedralFill, Liepa 2003,
-// which reads no point normal), kept only when it stays on the sampled surface:
+// which reads no point normal), kept only when it stays on the sampled surface (the rules of
+// pcs::holes::FillLoopNearSamples, shared with vtkLocalOptimumGrowth; the parameters here):
 // - the centroid and the midpoints of the new edges of every fill triangle lie within 1.5 local
 //   spacings of an input point, the local spacing being the largest of the mean spacing, the mean
 //   nearest-point distance of the loop's vertices and the mean length of the interior mesh edges
@@ -1543,18 +1544,6 @@ private:
 
   const double* P(Id i) const { return this->XYZ + 3 * static_cast<size_t>(i); }
 
-  bool UnitNormal(Id a, Id b, Id c, double n[3]) const
-  {
-    const double u[3] = {
-      this->P(b)[0] - this->P(a)[0], this->P(b)[1] - this->P(a)[1], this->P(b)[2] - this->P(a)[2]
-    };
-    const double v[3] = {
-      this->P(c)[0] - this->P(a)[0], this->P(c)[1] - this->P(a)[1], this->P(c)[2] - this->P(a)[2]
-    };
-    vtkMath::Cross(u, v, n);
-    return vtkMath::Normalize(n) > 0.0;
-  }
-
   // The mean length of the interior mesh edges (two triangles) at the loop's vertices.
   double MeshEdgeLength(const std::vector<Id>& loop) const
   {
@@ -1610,76 +1599,23 @@ private:
     {
       return false; // too long, or through a vertex twice
     }
-    // The fill's triangles own the twins of the boundary half-edges: the loop walked backwards.
+    // The loop as the fill walks it (backwards), the order of the sums below.
     const std::vector<Id> loop(boundary.rbegin(), boundary.rend());
-    double spacing = 0.0, perimeter = 0.0, area[3] = { 0, 0, 0 };
-    for (size_t i = 0; i < m; ++i)
+    double spacing = 0.0;
+    for (Id v : loop)
     {
-      const double* p = this->P(loop[i]);
-      const double* q = this->P(loop[(i + 1) % m]);
-      spacing += std::max(this->Nearest[loop[i]], 0.0);
-      perimeter += std::sqrt(Distance2(p, q));
-      double c[3];
-      vtkMath::Cross(p, q, c);
-      for (int k = 0; k < 3; ++k)
-      {
-        area[k] += 0.5 * c[k];
-      }
+      spacing += std::max(this->Nearest[v], 0.0);
     }
     spacing =
       std::max({ spacing / static_cast<double>(m), this->MeanSpacing, this->MeshEdgeLength(loop) });
-    const double reach = 1.5 * spacing;
-    // A region bounded by the loop whose points all lie within `reach` of the loop has at most
-    // perimeter x reach of (vector) area: a wide open border is refused before the cubic fill.
-    if (!(std::sqrt(Dot(area, area)) <= 2.0 * perimeter * reach))
-    {
-      return false;
-    }
-    auto across = [&](int e, double n[3])
-    {
-      const Id a = loop[e], b = loop[(static_cast<size_t>(e) + 1) % m];
-      const Id x = this->Mesh.OppositeVertex(b, a); // the mesh triangle (b, a, x)
-      return x >= 0 && this->UnitNormal(b, a, x, n);
-    };
-    auto exists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
-    const double dihedral = pcs::holes::LeastDihedralFill(this->XYZ, loop, exists, across, fill);
-    if (dihedral < 0.0 || dihedral > MaximumDihedral || fill.empty())
-    {
-      return false;
-    }
-    for (size_t t = 0; t + 2 < fill.size(); t += 3)
-    {
-      const Id* v = &fill[t];
-      const double* q[3] = { this->P(v[0]), this->P(v[1]), this->P(v[2]) };
-      if (pcs::projected::Collinear(q[0], q[1], q[2]) ||
-        this->Mesh.OppositeVertex(v[1], v[0]) == v[2])
-      {
-        return false;
-      }
-      // The centroid, then the midpoints of the new edges (a loop edge is in the mesh already).
-      double centroid[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        centroid[k] = (q[0][k] + q[1][k] + q[2][k]) / 3.0;
-      }
-      bool near = this->NearSomePoint(centroid, reach);
-      for (int j = 0; j < 3 && near; ++j)
-      {
-        if (this->Mesh.GetEdgeValence(v[j], v[(j + 1) % 3]) == 0)
-        {
-          const double* r = q[(j + 1) % 3];
-          const double middle[3] = {
-            0.5 * (q[j][0] + r[0]), 0.5 * (q[j][1] + r[1]), 0.5 * (q[j][2] + r[2])
-          };
-          near = this->NearSomePoint(middle, reach);
-        }
-      }
-      if (!near)
-      {
-        return false;
-      }
-    }
-    return true;
+    return pcs::holes::FillLoopNearSamples(
+      this->XYZ,
+      boundary,
+      this->Mesh,
+      1.5 * spacing,
+      MaximumDihedral,
+      [this](const double* x, double reach) { return this->NearSomePoint(x, reach); },
+      fill);
   }
 
   pcs::SurfaceMesh& Mesh;

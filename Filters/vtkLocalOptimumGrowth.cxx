@@ -282,6 +282,7 @@ private:
   bool InsertOrphan(Id q);
   bool FillHole(const std::vector<Id>& frontLoop);
   bool FillNarrowLoop(const std::vector<Id>& frontLoop);
+  void GatherAround(const std::vector<Id>& loop, std::vector<Id>& around);
   void OrientComponents();
   void Unfold();
   bool NeighborDiagonal(Id c, Id d) const;
@@ -1697,69 +1698,9 @@ bool Grower::FillHole(const std::vector<Id>& frontLoop)
   return true;
 }
 
-// A loop longer than MaximumHoleEdges (or one the projected triangulation could not close)
-// closed by the triangulation of its own vertices of least largest dihedral angle
-// (pcs::holes::LeastDihedralFill), kept only when the fill stays on the sampled surface: the
-// centroid and the midpoints of the new edges of each of its triangles lie within 2 local
-// spacings of an input point (the accuracy bound asked of the whole mesh), the local spacing
-// being the mean distance of the loop's vertices to their nearest neighbours, or the cloud's
-// mean spacing when larger. A sampling gap on
-// a thin or sharply bent feature passes; a membrane across an open border, a slit, or between
-// parts that only come close passes through empty space and is refused.
-bool Grower::FillNarrowLoop(const std::vector<Id>& frontLoop)
+// The loop's vertices and their K nearest neighbours, each once, appended to `around`.
+void Grower::GatherAround(const std::vector<Id>& loop, std::vector<Id>& around)
 {
-  const size_t m = frontLoop.size();
-  if (m > 400)
-  {
-    return false; // the least-dihedral triangulation is cubic in the loop's length
-  }
-  // The fill's triangles own the twins of the front edges: the loop is walked backwards.
-  std::vector<Id> loop(frontLoop.rbegin(), frontLoop.rend());
-  double spacing = 0.0, perimeter = 0.0, area[3] = { 0, 0, 0 };
-  for (size_t i = 0; i < m; ++i)
-  {
-    const Id v = loop[i], w = loop[(i + 1) % m];
-    double nearest = std::numeric_limits<double>::infinity();
-    const Id* nb = this->Neighbors(v);
-    for (int j = 0; j < this->K && nb[j] >= 0; ++j)
-    {
-      nearest = std::min(nearest, Distance2(this->P3(v), this->P3(nb[j])));
-    }
-    spacing += std::sqrt(nearest);
-    perimeter += std::sqrt(Distance2(this->P3(v), this->P3(w)));
-    double c[3];
-    Cross(this->P3(v), this->P3(w), c);
-    for (int k = 0; k < 3; ++k)
-    {
-      area[k] += 0.5 * c[k];
-    }
-  }
-  spacing /= static_cast<double>(m);
-  // Not below the cloud's mean spacing, the unit of the Hausdorff bound: on a densely and
-  // anisotropically sampled thin feature the nearest neighbour is much closer than the mesh's
-  // edges (the camel's ears: 0.26 mean spacings, edges 0.7-0.9), and the local value alone
-  // refused fills that stay within 0.8 mean spacings of the points.
-  spacing = std::max(spacing, this->CloudSpacing());
-  const double reach = 2.0 * spacing;
-  // A flat region bounded by the loop whose points all lie within `reach` of the loop has at
-  // most perimeter x reach of area: a wide open border is refused before the cubic fill.
-  if (!(spacing > 0.0) || std::sqrt(Dot(area, area)) > 2.0 * perimeter * reach)
-  {
-    return false;
-  }
-  auto across = [this, &loop, m](int e, double nrm[3]) {
-    const Id a = loop[e], b = loop[(e + 1) % m];
-    const Id x = this->Mesh.OppositeVertex(b, a); // the mesh triangle (b, a, x)
-    return x >= 0 && UnitNormal(this->P3(b), this->P3(a), this->P3(x), nrm);
-  };
-  auto exists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
-  std::vector<Id> triangles;
-  if (pcs::holes::LeastDihedralFill(this->X, loop, exists, across, triangles) < 0.0 ||
-    triangles.empty())
-  {
-    return false;
-  }
-  // The input points around the loop: its vertices and their K nearest neighbours.
   if (++this->MarkStamp == 0)
   {
     for (PointScratch& scratch : this->Scratch)
@@ -1768,7 +1709,6 @@ bool Grower::FillNarrowLoop(const std::vector<Id>& frontLoop)
     }
     this->MarkStamp = 1;
   }
-  std::vector<Id> around;
   for (Id v : loop)
   {
     const Id* nb = this->Neighbors(v);
@@ -1782,45 +1722,76 @@ bool Grower::FillNarrowLoop(const std::vector<Id>& frontLoop)
       }
     }
   }
-  static const double weights[4][3] = { { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 }, { 0.5, 0.5, 0.0 },
-    { 0.0, 0.5, 0.5 }, { 0.5, 0.0, 0.5 } };
-  for (size_t t = 0; t + 2 < triangles.size(); t += 3)
+}
+
+// A loop longer than MaximumHoleEdges (or one the projected triangulation could not close)
+// closed by the triangulation of its own vertices of least largest dihedral angle, kept only
+// when the fill stays on the sampled surface (pcs::holes::FillLoopNearSamples, shared with
+// vtkCDTAdvancingFront; no bound on the dihedral angle here): the
+// centroid and the midpoints of the new edges of each of its triangles lie within 2 local
+// spacings of an input point (the accuracy bound asked of the whole mesh), the local spacing
+// being the mean distance of the loop's vertices to their nearest neighbours, or the cloud's
+// mean spacing when larger. A sampling gap on
+// a thin or sharply bent feature passes; a membrane across an open border, a slit, or between
+// parts that only come close passes through empty space and is refused.
+bool Grower::FillNarrowLoop(const std::vector<Id>& frontLoop)
+{
+  const size_t m = frontLoop.size();
+  if (m > 400)
   {
-    const Id* v = &triangles[t];
-    const double* q[3] = { this->P3(v[0]), this->P3(v[1]), this->P3(v[2]) };
-    // Nor a mesh triangle reversed (the loop of a lone triangle: two coincident triangles).
-    if (pcs::projected::Collinear(q[0], q[1], q[2]) ||
-      this->Mesh.OppositeVertex(v[1], v[0]) == v[2])
+    return false; // the least-dihedral triangulation is cubic in the loop's length
+  }
+  // The loop as the fill walks it (backwards), the order of the sum below.
+  const std::vector<Id> loop(frontLoop.rbegin(), frontLoop.rend());
+  double spacing = 0.0;
+  for (Id v : loop)
+  {
+    double nearest = std::numeric_limits<double>::infinity();
+    const Id* nb = this->Neighbors(v);
+    for (int j = 0; j < this->K && nb[j] >= 0; ++j)
     {
-      return false;
+      nearest = std::min(nearest, Distance2(this->P3(v), this->P3(nb[j])));
     }
-    for (int j = 0; j < 4; ++j)
+    spacing += std::sqrt(nearest);
+  }
+  spacing /= static_cast<double>(m);
+  // Not below the cloud's mean spacing, the unit of the Hausdorff bound: on a densely and
+  // anisotropically sampled thin feature the nearest neighbour is much closer than the mesh's
+  // edges (the camel's ears: 0.26 mean spacings, edges 0.7-0.9), and the local value alone
+  // refused fills that stay within 0.8 mean spacings of the points.
+  spacing = std::max(spacing, this->CloudSpacing());
+  if (!(spacing > 0.0))
+  {
+    return false;
+  }
+  // The input points around the loop: its vertices and their K nearest neighbours, gathered
+  // at the first query (most loops are refused before).
+  std::vector<Id> around;
+  auto nearSomePoint = [this, &loop, &around](const double* x, double reach)
+  {
+    if (around.empty())
     {
-      // The centroid, then the midpoints of the edges v[j-1] v[j % 3] that are new (a loop edge
-      // is in the mesh already).
-      if (j > 0 && this->Mesh.GetEdgeValence(v[j - 1], v[j % 3]) > 0)
+      this->GatherAround(loop, around);
+    }
+    for (Id p : around)
+    {
+      if (Distance2(x, this->P3(p)) <= reach * reach)
       {
-        continue;
-      }
-      double x[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        x[k] = weights[j][0] * q[0][k] + weights[j][1] * q[1][k] + weights[j][2] * q[2][k];
-      }
-      bool near = false;
-      for (Id p : around)
-      {
-        if (Distance2(x, this->P3(p)) <= reach * reach)
-        {
-          near = true;
-          break;
-        }
-      }
-      if (!near)
-      {
-        return false;
+        return true;
       }
     }
+    return false;
+  };
+  std::vector<Id> triangles;
+  if (!pcs::holes::FillLoopNearSamples(this->X,
+        frontLoop,
+        this->Mesh,
+        2.0 * spacing,
+        std::numeric_limits<double>::infinity(),
+        nearSomePoint,
+        triangles))
+  {
+    return false;
   }
   std::vector<int64_t> added;
   if (!this->Mesh.AddTriangles(triangles.data(), triangles.size() / 3, added))

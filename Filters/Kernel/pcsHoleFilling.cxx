@@ -4,6 +4,7 @@
 #include "pcsDuplicatePoints.h"
 #include "pcsPredicates.h"
 #include "pcsProjectedTests.h"
+#include "pcsSurfaceMesh.h"
 
 #include "vtkMath.h"
 
@@ -1165,6 +1166,100 @@ double LeastDihedralFill(const double* xyz, const std::vector<int32_t>& loop,
     stack.push_back({ k, range[1] });
   }
   return angle[at(0, n - 1)];
+}
+
+//------------------------------------------------------------------------------------------------
+bool FillLoopNearSamples(const double* xyz,
+  const std::vector<int32_t>& boundary,
+  const SurfaceMesh& mesh,
+  double reach,
+  double maximumDihedral,
+  const std::function<bool(const double*, double)>& nearSomePoint,
+  std::vector<int32_t>& fill)
+{
+  fill.clear();
+  const size_t m = boundary.size();
+  if (m < 3)
+  {
+    return false;
+  }
+  auto point = [xyz](int32_t v) { return xyz + 3 * static_cast<size_t>(v); };
+  const std::vector<int32_t> loop(boundary.rbegin(), boundary.rend());
+  double perimeter = 0.0, area[3] = { 0, 0, 0 };
+  for (size_t i = 0; i < m; ++i)
+  {
+    const double* p = point(loop[i]);
+    const double* q = point(loop[(i + 1) % m]);
+    perimeter += std::sqrt(vtkMath::Distance2BetweenPoints(p, q));
+    double c[3];
+    vtkMath::Cross(p, q, c);
+    for (int k = 0; k < 3; ++k)
+    {
+      area[k] += 0.5 * c[k];
+    }
+  }
+  if (!(std::sqrt(vtkMath::Dot(area, area)) <= 2.0 * perimeter * reach))
+  {
+    return false;
+  }
+  auto across = [&](int e, double n[3])
+  {
+    const int32_t a = loop[e], b = loop[(static_cast<size_t>(e) + 1) % m];
+    const int32_t x = mesh.OppositeVertex(b, a); // the mesh triangle (b, a, x)
+    if (x < 0)
+    {
+      return false;
+    }
+    pcs::projected::TriangleNormal(point(b), point(a), point(x), n);
+    const double length = std::sqrt(vtkMath::Dot(n, n));
+    if (!(length > 0.0) || !std::isfinite(length))
+    {
+      return false;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      n[k] /= length;
+    }
+    return true;
+  };
+  auto exists = [&mesh](int32_t a, int32_t b) { return mesh.GetEdgeValence(a, b) > 0; };
+  const double dihedral = LeastDihedralFill(xyz, loop, exists, across, fill);
+  if (dihedral < 0.0 || dihedral > maximumDihedral || fill.empty())
+  {
+    fill.clear();
+    return false;
+  }
+  for (size_t t = 0; t + 2 < fill.size(); t += 3)
+  {
+    const int32_t* v = &fill[t];
+    const double* q[3] = { point(v[0]), point(v[1]), point(v[2]) };
+    bool near =
+      !pcs::projected::Collinear(q[0], q[1], q[2]) && mesh.OppositeVertex(v[1], v[0]) != v[2];
+    if (near)
+    {
+      const double centroid[3] = { (q[0][0] + q[1][0] + q[2][0]) / 3.0,
+        (q[0][1] + q[1][1] + q[2][1]) / 3.0,
+        (q[0][2] + q[1][2] + q[2][2]) / 3.0 };
+      near = nearSomePoint(centroid, reach);
+    }
+    for (int j = 0; j < 3 && near; ++j)
+    {
+      if (mesh.GetEdgeValence(v[j], v[(j + 1) % 3]) == 0)
+      {
+        const double* r = q[(j + 1) % 3];
+        const double middle[3] = {
+          0.5 * (q[j][0] + r[0]), 0.5 * (q[j][1] + r[1]), 0.5 * (q[j][2] + r[2])
+        };
+        near = nearSomePoint(middle, reach);
+      }
+    }
+    if (!near)
+    {
+      fill.clear();
+      return false;
+    }
+  }
+  return true;
 }
 
 } // namespace holes

@@ -45,6 +45,8 @@
 
 namespace pcs
 {
+class SurfaceMesh;
+
 namespace holes
 {
 
@@ -186,6 +188,32 @@ private:
 double LeastDihedralFill(const double* xyz, const std::vector<int32_t>& loop,
   const std::function<bool(int32_t, int32_t)>& edgeExists,
   const std::function<bool(int, double[3])>& across, std::vector<int32_t>& triangles);
+
+/// A loop of `mesh`'s boundary closed by LeastDihedralFill, kept only when the fill stays on the
+/// sampled surface (the loop closers of vtkLocalOptimumGrowth and vtkCDTAdvancingFront, each
+/// with its own `reach` and near-point query). `boundary`: the loop of boundary half-edges
+/// (boundary[i] -> boundary[i + 1] has a mesh triangle on one side only); the fill is that of
+/// the loop walked backwards, so its triangles own the twins of those half-edges. Refused:
+/// - a loop whose vector area exceeds 2 x perimeter x reach (a region whose points all lie
+///   within `reach` of the loop has at most perimeter x reach of area): a wide open border,
+///   refused before the cubic fill;
+/// - no fill, or one whose largest dihedral angle exceeds `maximumDihedral` (radians; pass
+///   infinity for no bound);
+/// - a fill triangle that is exactly collinear or is a mesh triangle reversed (the loop of a
+///   lone triangle);
+/// - a fill triangle whose centroid, or the midpoint of one of its new edges (not in the mesh),
+///   has no input point within `reach`: `nearSomePoint(x, reach)` answers that.
+/// A sampling gap on a thin or sharply bent feature passes; a membrane across an open border, a
+/// slit, or between parts that only come close passes through empty space and is refused.
+/// On success the triangles (point ids, 3 per triangle) are in `fill` and true is returned;
+/// `mesh` is not changed.
+bool FillLoopNearSamples(const double* xyz,
+  const std::vector<int32_t>& boundary,
+  const SurfaceMesh& mesh,
+  double reach,
+  double maximumDihedral,
+  const std::function<bool(const double*, double)>& nearSomePoint,
+  std::vector<int32_t>& fill);
 
 } // namespace holes
 } // namespace pcs

@@ -6,6 +6,7 @@
 // directions), the greedy choice of the shorter diagonal, and the surface a folded hole comes
 // from.
 #include "pcsHoleFilling.h"
+#include "pcsSurfaceMesh.h"
 
 #include <algorithm>
 #include <cmath>
@@ -546,6 +547,91 @@ void TestLeastDihedralFill()
     "two vertices: no triangulation");
 }
 
+// FillLoopNearSamples on a unit cube without its top face (the samples: the 8 corners, and the
+// top face's centre when asked): the fill is the top's 2 triangles, whose farthest tested point,
+// the diagonal's midpoint, is sqrt(1/2) from every corner, and whose dihedral angle with the
+// sides is 90 degrees.
+void TestFillLoopNearSamples()
+{
+  std::vector<double> xyz;
+  for (int i = 0; i < 8; ++i)
+  {
+    xyz.insert(xyz.end(), { double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1) });
+  }
+  xyz.insert(xyz.end(), { 0.5, 0.5, 1.0 }); // point 8: the top face's centre, in no triangle
+  const int32_t sides[10][3] = { { 0, 2, 3 },
+    { 0, 3, 1 },
+    { 0, 1, 5 },
+    { 0, 5, 4 },
+    { 2, 6, 7 },
+    { 2, 7, 3 },
+    { 0, 4, 6 },
+    { 0, 6, 2 },
+    { 1, 3, 7 },
+    { 1, 7, 5 } };
+  pcs::SurfaceMesh mesh(9);
+  for (const auto& t : sides)
+  {
+    mesh.AddTriangle(t[0], t[1], t[2]);
+  }
+  std::vector<std::vector<int32_t>> loops;
+  mesh.GetBoundaryLoops(loops);
+  CHECK(loops.size() == 1 && loops[0].size() == 4, "open cube: one loop of 4 expected");
+  if (loops.size() != 1)
+  {
+    return;
+  }
+  const double halfPi = 0.5 * std::acos(-1.0);
+  int queries = 0;
+  auto nearPoint = [&](int samples)
+  {
+    return [&xyz, &queries, samples](const double* x, double reach)
+    {
+      ++queries;
+      for (int p = 0; p < samples; ++p)
+      {
+        const double* q = &xyz[3 * p];
+        const double d[3] = { x[0] - q[0], x[1] - q[1], x[2] - q[2] };
+        if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= reach * reach)
+        {
+          return true;
+        }
+      }
+      return false;
+    };
+  };
+  std::vector<int32_t> fill;
+  const double* p = xyz.data();
+  // The corners are within 1 of every tested point: kept, and it closes the cube.
+  CHECK(pcs::holes::FillLoopNearSamples(p, loops[0], mesh, 1.0, 1.1 * halfPi, nearPoint(8), fill),
+    "reach 1: the fill must be kept");
+  std::vector<int64_t> added;
+  CHECK(fill.size() == 6 && mesh.AddTriangles(fill.data(), 2, added) &&
+      mesh.GetNumberOfBoundaryHalfEdges() == 0,
+    "reach 1: 2 triangles closing the cube expected");
+  for (int64_t t : added)
+  {
+    mesh.RemoveTriangle(t);
+  }
+  // The diagonal's midpoint is sqrt(1/2) > 0.6 from every corner: refused, unless the face's
+  // centre is a sample.
+  CHECK(!pcs::holes::FillLoopNearSamples(p, loops[0], mesh, 0.6, 1.1 * halfPi, nearPoint(8), fill),
+    "reach 0.6, corners only: the fill must be refused");
+  CHECK(fill.empty(), "a refused fill must be empty");
+  CHECK(pcs::holes::FillLoopNearSamples(p, loops[0], mesh, 0.6, 1.1 * halfPi, nearPoint(9), fill),
+    "reach 0.6 with the face's centre: the fill must be kept");
+  // The fill meets the sides at 90 degrees: refused below that.
+  CHECK(!pcs::holes::FillLoopNearSamples(p, loops[0], mesh, 1.0, 0.9 * halfPi, nearPoint(8), fill),
+    "maximum dihedral 81 degrees: the fill must be refused");
+  // Area 1 > 2 x perimeter 4 x reach 0.1: refused before any near-point query.
+  queries = 0;
+  CHECK(
+    !pcs::holes::FillLoopNearSamples(p, loops[0], mesh, 0.1, 1.1 * halfPi, nearPoint(9), fill) &&
+      queries == 0,
+    "reach 0.1: refused by the area bound, %d queries",
+    queries);
+}
+
 // The triangles of `triangles` (3 ids each) whose points of `xyz` have a zero cross product;
 // exact for the small integer coordinates of the grids below.
 int ZeroAreaTriangles(const std::vector<double>& xyz, const std::vector<int32_t>& triangles)
@@ -773,6 +859,7 @@ int main()
   TestGreedy2D();
   TestHoleFiller();
   TestLeastDihedralFill();
+  TestFillLoopNearSamples();
   TestDegenerateFills();
   TestTrianglesIntersect();
   std::printf("%d failure(s)\n", Failures);

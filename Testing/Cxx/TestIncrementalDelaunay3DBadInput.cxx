@@ -22,16 +22,7 @@
 
 namespace
 {
-struct MessageCounter
-{
-  int Warnings = 0;
-  int Errors = 0;
-  static void Callback(vtkObject*, unsigned long event, void* data, void*)
-  {
-    auto* self = static_cast<MessageCounter*>(data);
-    (event == vtkCommand::ErrorEvent ? self->Errors : self->Warnings)++;
-  }
-};
+using MessageCounter = pcstest::MessageCounter;
 
 // Updates the filter on `input`; counts the warnings and errors of the filter and its executive.
 MessageCounter Run(vtkDataObject* input, int dimension, vtkIncrementalDelaunay3D* delaunay)

@@ -598,16 +598,7 @@ void AddPointArrays(vtkPolyData* cloud)
 }
 
 //------------------------------------------------------------------------------------------------
-struct Messages
-{
-  int Warnings = 0;
-  int Errors = 0;
-  static void Callback(vtkObject*, unsigned long event, void* data, void*)
-  {
-    auto* self = static_cast<Messages*>(data);
-    (event == vtkCommand::ErrorEvent ? self->Errors : self->Warnings)++;
-  }
-};
+using Messages = pcstest::MessageCounter;
 
 Messages Update(vtkPolyDataAlgorithm* algorithm)
 {

@@ -61,16 +61,7 @@ struct Mesh
   }
 };
 
-struct Counter
-{
-  int Warnings = 0;
-  int Errors = 0;
-  static void Callback(vtkObject*, unsigned long event, void* data, void*)
-  {
-    auto* self = static_cast<Counter*>(data);
-    (event == vtkCommand::ErrorEvent ? self->Errors : self->Warnings)++;
-  }
-};
+using Counter = pcstest::MessageCounter;
 
 // Runs the filter; counts its warnings and errors (and its executive's).
 inline vtkSmartPointer<vtkPolyData> Run(vtkPolyData* mesh,

@@ -4,6 +4,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
@@ -22,6 +23,19 @@
 
 namespace pcstest
 {
+// Counts the warnings and errors a filter (or its executive) emits: register Callback with a
+// vtkCallbackCommand whose client data is the counter.
+struct MessageCounter
+{
+  int Warnings = 0;
+  int Errors = 0;
+  static void Callback(vtkObject*, unsigned long event, void* data, void*)
+  {
+    auto* self = static_cast<MessageCounter*>(data);
+    (event == vtkCommand::ErrorEvent ? self->Errors : self->Warnings)++;
+  }
+};
+
 #define PCS_CHECK(condition, message)                                                              \
   do                                                                                               \
   {                                                                                                \

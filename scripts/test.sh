@@ -17,6 +17,12 @@
 # started at the same moment (other jobs on the host) can race for the same free number, and
 # then a rendering test loses its X connection.
 XVFB_FIRST=$(($$ % 800 + 100))
+# -noreset: by default Xvfb resets when its last client disconnects, and a test connecting during
+# that reset gets "bad X server connection" (SIGABRT in vtkXOpenGLRenderWindow). With ctest -j2
+# one test's window closing while the other opens its own made this happen about once in a
+# hundred connections (three loops of xdpyinfo against one xvfb-run: 31 failures in 450 without
+# -noreset, 0 with it).
+XVFB_SERVER_ARGS="-screen 0 1280x1024x24 -noreset"
 set -eu
 cd "$(dirname "$0")/.."
 if [ "${1:-}" = "--sanitize" ]; then
@@ -34,7 +40,7 @@ if [ "${1:-}" = "--sanitize" ]; then
   export LD_PRELOAD
   export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:detect_odr_violation=0"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-  exec xvfb-run -a -n "$XVFB_FIRST" ctest --test-dir build-asan --output-on-failure -j2
+  exec xvfb-run -a -n "$XVFB_FIRST" -s "$XVFB_SERVER_ARGS" ctest --test-dir build-asan --output-on-failure -j2
 fi
 ./scripts/setup.sh
 BUILD_DIR="${BUILD_DIR:-build}"
@@ -45,10 +51,10 @@ if [ "${1:-}" = "--valgrind" ]; then
   }
   # Time bounds of the tests (TestAbort) stretched for valgrind's slowdown.
   export PCS_TEST_TIME_SCALE=100
-  exec xvfb-run -a -n "$XVFB_FIRST" ctest --test-dir "$BUILD_DIR" -T memcheck -L "Filters|Kernel" \
+  exec xvfb-run -a -n "$XVFB_FIRST" -s "$XVFB_SERVER_ARGS" ctest --test-dir "$BUILD_DIR" -T memcheck -L "Filters|Kernel" \
     -E "Image|Kernel-TestPredicates|Kernel-TestProjectedTests" \
     --overwrite MemoryCheckCommand="$(command -v valgrind)" \
     --overwrite MemoryCheckCommandOptions="--error-exitcode=97 --leak-check=full --errors-for-leak-kinds=definite --track-origins=no" \
     --output-on-failure -j2 --timeout 3600
 fi
-xvfb-run -a -n "$XVFB_FIRST" ctest --test-dir "$BUILD_DIR" --output-on-failure -j2
+xvfb-run -a -n "$XVFB_FIRST" -s "$XVFB_SERVER_ARGS" ctest --test-dir "$BUILD_DIR" --output-on-failure -j2

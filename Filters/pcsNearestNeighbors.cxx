@@ -163,6 +163,19 @@ void PointBins::Fill(const double* xyz, int32_t n, bool withCoordinates)
   }
 }
 
+void PointBins::FileCoordinates(const double* xyz)
+{
+  if (this->XYZ.size() == 3 * this->Ids.size())
+  {
+    return;
+  }
+  this->XYZ.resize(3 * this->Ids.size());
+  for (size_t slot = 0; slot < this->Ids.size(); ++slot)
+  {
+    std::copy_n(xyz + 3 * static_cast<size_t>(this->Ids[slot]), 3, &this->XYZ[3 * slot]);
+  }
+}
+
 bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int32_t n, int k,
   std::vector<int32_t>& neighbors, const std::function<bool(double)>& progress)
 {
@@ -454,7 +467,11 @@ bool FindNearestNeighbors(const PointBins& bins,
   return !progress || progress(1.0);
 }
 
-int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
+namespace
+{
+// AddOffLineNeighbors on the bins that `fileBins` gives (called once, only when a row is to be
+// extended).
+int32_t AddOffLineNeighborsIn(const std::function<const PointBins&()>& fileBins,
   const double* xyz,
   int32_t n,
   int k,
@@ -475,7 +492,7 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
   }
   const int perSide = std::max(1, k / 4);
   // The points confined to a curve, all of them first (the test is made again, on the same row,
-  // where it passed): the locator is built only when a row is to be extended.
+  // where it passed): the bins are filed only when a row is to be extended.
   std::vector<uint8_t> confined(static_cast<size_t>(n), 0);
   vtkSMPTools::For(0,
     n,
@@ -519,12 +536,10 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
   {
     return progress && !progress(1.0) ? -1 : 0;
   }
-  // The balls of the confined points are searched in the locator's bins (PointBins: no virtual
-  // call per point, less than half the instructions of FindPointsWithinRadius on the camel's
-  // scan-line patch; the same points). The locator is built once, before the threads read it.
-  locator->BuildLocator();
-  PointBins bins;
-  bins.Build(locator, xyz, n);
+  // The balls of the confined points are searched in bins (PointBins: no virtual call per
+  // point, less than half the instructions of FindPointsWithinRadius on the camel's scan-line
+  // patch; the same points), filed once, before the threads read them.
+  const PointBins& bins = fileBins();
   std::atomic<int32_t> changed(0);
   struct Candidate
   {
@@ -668,6 +683,50 @@ int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
     return -1;
   }
   return changed;
+}
+}
+
+int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
+  const double* xyz,
+  int32_t n,
+  int k,
+  std::vector<int32_t>& neighbors,
+  std::vector<double>* stretch,
+  double linearity,
+  double radiusFactor,
+  double minimumShare,
+  const std::function<bool(double)>& progress)
+{
+  // The locator is built only when a row is to be extended, its bins filed with coordinates.
+  PointBins bins;
+  auto fileBins = [&]() -> const PointBins&
+  {
+    locator->BuildLocator();
+    bins.Build(locator, xyz, n);
+    return bins;
+  };
+  return AddOffLineNeighborsIn(
+    fileBins, xyz, n, k, neighbors, stretch, linearity, radiusFactor, minimumShare, progress);
+}
+
+int32_t AddOffLineNeighbors(PointBins& bins,
+  const double* xyz,
+  int32_t n,
+  int k,
+  std::vector<int32_t>& neighbors,
+  std::vector<double>* stretch,
+  double linearity,
+  double radiusFactor,
+  double minimumShare,
+  const std::function<bool(double)>& progress)
+{
+  auto fileBins = [&]() -> const PointBins&
+  {
+    bins.FileCoordinates(xyz);
+    return bins;
+  };
+  return AddOffLineNeighborsIn(
+    fileBins, xyz, n, k, neighbors, stretch, linearity, radiusFactor, minimumShare, progress);
 }
 
 bool OnOneScanLine(const double* xyz, const double* stretch, int32_t a, int32_t b, int32_t c)

@@ -42,6 +42,10 @@ public:
     int32_t n,
     bool withCoordinates = true);
 
+  /// Files the coordinates too (the same `xyz` as Build; GetXYZ() is then in slot order) when
+  /// Build was called without them; nothing when they are filed already.
+  void FileCoordinates(const double* xyz);
+
   /// The index along axis c of coordinate v, clamped to [0, divisions - 1] (NaN: 0).
   int BucketIndex(double v, int c) const
   {
@@ -210,6 +214,20 @@ bool FindNearestNeighbors(const PointBins& bins,
 /// spacing stretched to the spacing across lines: a triangle between two lines then has edges of
 /// comparable lengths (the metric of anisotropic meshing).
 int32_t AddOffLineNeighbors(vtkStaticPointLocator* locator,
+  const double* xyz,
+  int32_t n,
+  int k,
+  std::vector<int32_t>& neighbors,
+  std::vector<double>* stretch = nullptr,
+  double linearity = 0.05,
+  double radiusFactor = 4.0,
+  double minimumShare = 0.0,
+  const std::function<bool(double)>& progress = nullptr);
+
+/// The same on points already filed into `bins` (PointBins::Build on the same `xyz` and `n`, any
+/// grid), without a locator: their coordinates are filed (PointBins::FileCoordinates) only when
+/// some row is to be extended. The result does not depend on the grid.
+int32_t AddOffLineNeighbors(PointBins& bins,
   const double* xyz,
   int32_t n,
   int k,

@@ -2409,7 +2409,10 @@ int vtkLocalOptimumGrowth::RequestData(
   std::vector<double> stretch;
   int k = 0;
   bool neighborsFound = false;
-  vtkSmartPointer<vtkStaticPointLocator> cloudLocator;
+  // The grid the neighbours were searched in, for the scan-line search below: the locator set
+  // (built on the cloud), else the search's own bins.
+  vtkSmartPointer<vtkStaticPointLocator> locator = this->Locator;
+  pcs::PointBins bins;
   auto findNeighbors = [&]() {
     x.resize(3 * static_cast<size_t>(n));
     for (Id i = 0; i < n; ++i)
@@ -2436,7 +2439,6 @@ int vtkLocalOptimumGrowth::RequestData(
       this->UpdateProgress(0.05 + 0.1 * fraction);
       return !this->GetAbortExecute();
     };
-    vtkSmartPointer<vtkStaticPointLocator> locator = this->Locator;
     if (locator)
     {
       locator->SetDataSet(cloud);
@@ -2446,21 +2448,16 @@ int vtkLocalOptimumGrowth::RequestData(
     else
     {
       // A surface sample fills only a thin layer of the bins of its bounding box: about 4 bins
-      // per point keep the radius queries short (see the class documentation). The search files
-      // the points into its own bucket grid; the locator, on the same bins, is only built when
-      // the scan-line search below needs it.
+      // per point keep the radius queries short (see the class documentation). No locator: the
+      // search files the points into its own bucket grid (their coordinates are filed only when
+      // the scan-line search below needs them).
       double bounds[6];
       internalPoints->GetBounds(bounds);
-      locator = vtkSmartPointer<vtkStaticPointLocator>::New();
-      pcs::SetSurfaceSampleDivisions(locator, bounds, n);
-      locator->SetDataSet(cloud);
       int divisions[3];
       pcs::SurfaceSampleDivisions(bounds, n, 4.0, divisions);
-      pcs::PointBins bins;
       bins.Build(bounds, divisions, x.data(), n, /*withCoordinates=*/false);
       neighborsFound = pcs::FindNearestNeighbors(bins, x.data(), n, k, knn, progress);
     }
-    cloudLocator = locator;
   };
   findNeighbors();
   if (outliersFromTable && !this->GetAbortExecute())
@@ -2478,7 +2475,8 @@ int vtkLocalOptimumGrowth::RequestData(
   // reads the plain nearest-first table.
   stretch.clear();
   if (neighborsFound && !this->GetAbortExecute() &&
-    pcs::AddOffLineNeighbors(cloudLocator, x.data(), n, k, knn, &stretch) == 0)
+    (locator ? pcs::AddOffLineNeighbors(locator, x.data(), n, k, knn, &stretch)
+             : pcs::AddOffLineNeighbors(bins, x.data(), n, k, knn, &stretch)) == 0)
   {
     stretch.clear();
   }
@@ -2486,7 +2484,8 @@ int vtkLocalOptimumGrowth::RequestData(
   {
     this->Locator->SetDataSet(nullptr);
   }
-  cloudLocator = nullptr;
+  locator = nullptr;
+  bins = pcs::PointBins();
   xyz.clear();
   xyz.shrink_to_fit();
   if (this->NumberOfOutliers > 0)

@@ -14,8 +14,9 @@
  *    on a uniform bin grid, i.e. the paper's hash table, by the project's shared search
  *    (pcs::FindNearestNeighbors: adaptive radius queries on the grid pcs::PointBins, the bins
  *    of VTK's vtkStaticPointLocator; threaded with vtkSMPTools). Unless a locator is set, no
- *    vtkStaticPointLocator is built for it: the search files the points into its own grid, and a
- *    locator on the same bins is built only when the scan-line search below has rows to extend.
+ *    vtkStaticPointLocator is built: the search files the points into its own grid, and the
+ *    scan-line search below reuses that grid (filing the coordinates only when it has rows to
+ *    extend).
  *    Points are renumbered along a Hilbert curve first (memory locality); exact duplicates are
  *    merged. Added: unless a locator is set, the grid has about 4 bins per point over the
  *    bounding box instead of VTK's automatic few points per bin -- a surface sample occupies
@@ -345,9 +346,9 @@ public:
   ///@{
   /**
    * The point locator used for the K-nearest-neighbour search. Default none: the search files
-   * the points into its own grid of about 4 bins per point (pcs::PointBins), and a
-   * vtkStaticPointLocator on the same bins is built only for the scan-line search (step 1). A
-   * locator set here is built and used, with its own bin settings.
+   * the points into its own grid of about 4 bins per point (pcs::PointBins), which the scan-line
+   * search (step 1) reuses; no vtkStaticPointLocator is built. A locator set here is built and
+   * used by both, with its own bin settings.
    */
   void SetLocator(vtkStaticPointLocator* locator);
   vtkGetObjectMacro(Locator, vtkStaticPointLocator);

@@ -9,7 +9,8 @@
 //   and on a built vtkStaticPointLocator's grid;
 // - pcs::AddOffLineNeighbors builds the locator it is given only when a row is to be extended:
 //   on the lattice alone (no point confined to a curve) it changes nothing and the locator stays
-//   unbuilt; on scan lines (rows confined to their line) it builds it and extends every row.
+//   unbuilt; on scan lines (rows confined to their line) it builds it and extends every row, and
+//   on bins filed without coordinates (two grids) it gives the same rows and stretches.
 #include "pcsNearestNeighbors.h"
 
 #include "pcsTestUtilities.h"
@@ -190,11 +191,30 @@ bool CheckScanLines()
   double bounds[6];
   Bounds(xyz, bounds);
   std::vector<int32_t> table = Search(xyz, k, bounds);
+  const std::vector<int32_t> plain = table;
   vtkSmartPointer<vtkPolyData> cloud = pcstest::MakeCloud(xyz);
   vtkSmartPointer<vtkStaticPointLocator> unbuilt = Locator(xyz, cloud);
-  const int32_t changed = pcs::AddOffLineNeighbors(unbuilt, xyz.data(), n, k, table);
+  std::vector<double> stretch;
+  const int32_t changed = pcs::AddOffLineNeighbors(unbuilt, xyz.data(), n, k, table, &stretch);
   PCS_CHECK(changed == n, changed << " rows changed, not " << n);
   PCS_CHECK(unbuilt->GetBuildTime() > 0, "the locator was not built");
+  // The same extension on bins filed without coordinates, on two other grids (the search's own,
+  // and 7 x 5 x 1 bins): the same rows and stretches.
+  int sample[3];
+  pcs::SurfaceSampleDivisions(bounds, n, 4.0, sample);
+  const int coarse[3] = { 7, 5, 1 };
+  for (const int* divisions : { static_cast<const int*>(sample), coarse })
+  {
+    pcs::PointBins bins;
+    bins.Build(bounds, divisions, xyz.data(), n, /*withCoordinates=*/false);
+    std::vector<int32_t> onBins = plain;
+    std::vector<double> stretchOnBins;
+    const int32_t changedOnBins =
+      pcs::AddOffLineNeighbors(bins, xyz.data(), n, k, onBins, &stretchOnBins);
+    PCS_CHECK(changedOnBins == changed && onBins == table && stretchOnBins == stretch,
+      "the extension on " << divisions[0] << " x " << divisions[1] << " x " << divisions[2]
+                          << " bins differs from the locator's");
+  }
   int32_t offLine = 0;
   for (int32_t i = 0; i < n; ++i)
   {

@@ -544,6 +544,15 @@ public:
     , FailedHead(status.size(), None)
     , FailedState(status.size(), 0)
   {
+    if (stretch)
+    {
+      this->Stretched.resize(status.size());
+      for (size_t i = 0; i < status.size(); ++i)
+      {
+        const double* s = stretch + 3 * i;
+        this->Stretched[i] = s[0] != 0.0 || s[1] != 0.0 || s[2] != 0.0 ? 1 : 0;
+      }
+    }
     double bounds[6];
     locator->GetDataSet()->GetBounds(bounds);
     this->Diagonal = 1.01 *
@@ -608,13 +617,12 @@ private:
   // next line's points come before the far points of the own line.
   double RankDistance2(const double* centre, Id x, Id a, Id b) const
   {
-    const double* sa = this->Stretch ? this->Stretch + 3 * static_cast<size_t>(a) : nullptr;
-    const double* sb = this->Stretch ? this->Stretch + 3 * static_cast<size_t>(b) : nullptr;
-    auto zero = [](const double* v) { return !v || (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0); };
-    if (zero(sa) && zero(sb))
+    if (!this->HasStretch(a) && !this->HasStretch(b))
     {
       return Distance2(this->P(x), centre);
     }
+    const double* sa = this->Stretch + 3 * static_cast<size_t>(a);
+    const double* sb = this->Stretch + 3 * static_cast<size_t>(b);
     const double* p = this->P(x);
     const double w[3] = { p[0] - centre[0], p[1] - centre[1], p[2] - centre[2] };
     return pcs::StretchedLength2(w, sa, sb);
@@ -756,6 +764,8 @@ private:
   const double* Normals;
   const double* Scale; // per point: its local spacing over the mean spacing, at most 1
   const double* Stretch; // per point: its scan-line stretch (3 values), null when none has one
+  std::vector<uint8_t> Stretched; // per point: a non-zero stretch (empty when Stretch is null)
+  bool HasStretch(Id i) const { return this->Stretch && this->Stretched[i]; }
   const NoiseBands& NoiseBand; // per point: the height band of its sampling noise (II.C.2)
   const std::vector<uint8_t>& Status;
   vtkStaticPointLocator* Locator;
@@ -771,6 +781,7 @@ private:
   std::vector<std::pair<Id, double>> StampedEnds;
   std::vector<std::pair<double, Id>> Candidates;
   std::vector<std::pair<double, Id>> Pending; // BestThirdPoint on scan lines: for the next ring
+  std::vector<Id> Ears;                       // BestThirdPoint in III.C: the ears of the edge
   std::vector<Id> Neighbors;
   std::vector<int64_t> VertexTriangles;
   std::vector<std::pair<Id, Id>> HalfEdges;
@@ -925,7 +936,9 @@ private:
 bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& parameters)
 {
   if (this->Status[third] != Usable ||
+    // (pcs::OnOneScanLine's first test, on the flags: at least two of the points have a stretch.)
     (this->Stretch && parameters.RefuseOneLineTriangles &&
+      this->Stretched[e0] + this->Stretched[e1] + this->Stretched[third] >= 2 &&
       pcs::OnOneScanLine(this->XYZ, this->Stretch, e0, e1, third)))
   {
     return false;
@@ -1230,6 +1243,28 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
   // within the bound are sorted.
   const size_t examinedBudget = 50 * static_cast<size_t>(parameters.MaximumCandidates);
   size_t examined = 0;
+  // Ranked in the sampling's metric only where an end of the edge has a stretch.
+  const bool stretchedEdge = this->HasStretch(e0) || this->HasStretch(e1);
+  this->Ears.clear();
+  if (relaxed)
+  {
+    // III.C: the triangles with the adjacent boundary edges at a common vertex (ears),
+    // whatever their distance, except slivers with a long new edge (IsAcceptableEar); each is a
+    // candidate of the ring its distance falls in. (The mesh does not change here: listed once.)
+    this->HalfEdges.clear();
+    GetBoundaryHalfEdges(this->Mesh, e0, this->HalfEdges);
+    GetBoundaryHalfEdges(this->Mesh, e1, this->HalfEdges);
+    for (const auto& halfEdge : this->HalfEdges)
+    {
+      for (Id x : { halfEdge.first, halfEdge.second })
+      {
+        if (x != e0 && x != e1 && x != opposite && this->IsAcceptableEar(e0, e1, x, parameters))
+        {
+          this->Ears.push_back(x);
+        }
+      }
+    }
+  }
   for (int ring = 0; ring < rings; ++ring)
   {
     this->FindPoints(radii[ring], midpoint, this->Near);
@@ -1243,7 +1278,7 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
       if (d2 > inner2 && d2 <= outer2)
       {
         this->Candidates.emplace_back(
-          this->Stretch ? this->RankDistance2(midpoint, x, e0, e1) : d2, x);
+          stretchedEdge ? this->RankDistance2(midpoint, x, e0, e1) : d2, x);
       }
     };
     for (vtkIdType k = 0; k < static_cast<vtkIdType>(this->Near.size()); ++k)
@@ -1256,23 +1291,9 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
       }
       consider(x);
     }
-    if (relaxed)
+    for (Id x : this->Ears) // (empty unless relaxed)
     {
-      // III.C: the triangles with the adjacent boundary edges at a common vertex (ears),
-      // whatever their distance, except slivers with a long new edge (IsAcceptableEar).
-      this->HalfEdges.clear();
-      GetBoundaryHalfEdges(this->Mesh, e0, this->HalfEdges);
-      GetBoundaryHalfEdges(this->Mesh, e1, this->HalfEdges);
-      for (const auto& halfEdge : this->HalfEdges)
-      {
-        for (Id x : { halfEdge.first, halfEdge.second })
-        {
-          if (x != e0 && x != e1 && x != opposite && this->IsAcceptableEar(e0, e1, x, parameters))
-          {
-            consider(x);
-          }
-        }
-      }
+      consider(x);
     }
     this->Candidates.insert(this->Candidates.end(), this->Pending.begin(), this->Pending.end());
     this->Pending.clear();

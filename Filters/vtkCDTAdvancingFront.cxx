@@ -1267,33 +1267,35 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
   }
   for (int ring = 0; ring < rings; ++ring)
   {
-    this->FindPoints(radii[ring], midpoint, this->Near);
     this->Candidates.clear();
     const double outer2 =
       ring + 1 < rings ? radii[ring] * radii[ring] : std::numeric_limits<double>::infinity();
     const double inner2 = ring > 0 ? radii[ring - 1] * radii[ring - 1] : -1.0;
-    auto consider = [&](Id x)
+    auto consider = [&](Id x, double d2)
     {
-      const double d2 = Distance2(this->P(x), midpoint);
       if (d2 > inner2 && d2 <= outer2)
       {
         this->Candidates.emplace_back(
           stretchedEdge ? this->RankDistance2(midpoint, x, e0, e1) : d2, x);
       }
     };
-    for (vtkIdType k = 0; k < static_cast<vtkIdType>(this->Near.size()); ++k)
-    {
-      const Id x = static_cast<Id>(this->Near[k]);
-      if (x == e0 || x == e1 || x == opposite || this->Status[x] != Usable ||
-        this->Mesh.IsInterior(x))
+    // The points of the ring's ball (FindPoints' query, walked here: its squared distances are
+    // Distance2(P(x), midpoint), and the points of the inner rings are left before their status
+    // is read).
+    this->Bins.ForEachPointWithinRadius(std::min(radii[ring], this->Diagonal),
+      midpoint,
+      [&](Id x, double d2)
       {
-        continue;
-      }
-      consider(x);
-    }
+        if (d2 > inner2 && x != e0 && x != e1 && x != opposite && this->Status[x] == Usable &&
+          !this->Mesh.IsInterior(x))
+        {
+          consider(x, d2);
+        }
+        return true;
+      });
     for (Id x : this->Ears) // (empty unless relaxed)
     {
-      consider(x);
+      consider(x, Distance2(this->P(x), midpoint));
     }
     this->Candidates.insert(this->Candidates.end(), this->Pending.begin(), this->Pending.end());
     this->Pending.clear();

@@ -543,6 +543,9 @@ public:
     , AdjacentCount(status.size(), 0)
     , FailedHead(status.size(), None)
     , FailedState(status.size(), 0)
+    , Touched(status.size(), 0)
+    , WatchStart(status.size(), -1)
+    , WatchCount(status.size(), 0)
   {
     if (stretch)
     {
@@ -595,6 +598,7 @@ public:
   {
     ++this->State;
     this->Blocked.Clear();
+    this->ForgetWatches();
     std::fill(this->AdjacentCount.begin(), this->AdjacentCount.end(), 0);
     for (int64_t t = 0; t < this->Mesh.GetNumberOfTriangleIds(); ++t)
     {
@@ -931,10 +935,84 @@ private:
   std::vector<Id> FailedHead;
   std::vector<uint64_t> FailedState;
   uint64_t State = 1;
+
+  // Advance, more locally: nor is a failed front edge examined again while no triangle was added
+  // at the points it watches (Watched; Touched: per point, the State when a triangle was last
+  // added at it): BestThirdPoint would find none again. While triangles are only added, a
+  // candidate refused by a test on its own points (Status, scan lines, II.C.1, II.E, orientation,
+  // II.C.3, and II.C.2 outside III.C) or by the projection tests (which only refuse more as edges
+  // are added: the argument of Blocked) stays refused; a point only leaves the candidates by
+  // becoming interior, which changes nothing while no budget ran out; what else may change is
+  // read at the edge's ends and at the candidate: CanAdd and the pinch rule, and in III.C the
+  // ears and whether the triangle closes a hole (which waives II.C.2 and may take the noise-band
+  // path). So an edge watches its ends (in III.C, or once a candidate was refused otherwise) and
+  // each candidate refused otherwise (IsValid's RefusedForGood false). Nothing is watched (the
+  // global State rule only) when a budget ran out, a candidate took the noise-band path (its
+  // exemption of meshed points is not monotone) or the list is long; the watches are forgotten
+  // when triangles are removed or the parameters change.
+  std::vector<uint64_t> Touched;
+  std::vector<int64_t> WatchStart; // per tail vertex: its failed edge's points in Watched, or -1
+  std::vector<uint16_t> WatchCount;
+  std::vector<Id> Watched;
+  std::vector<Id> Watch; // of the current BestThirdPoint
+  bool WatchValid = false;
+  bool RefusedForGood = false; // IsValid's last refusal holds while triangles are only added
+  const Parameters* WatchParameters = nullptr;
+  static constexpr size_t MaximumWatch = 256;
+  void ForgetWatches()
+  {
+    this->Watched.clear();
+    std::fill(this->WatchStart.begin(), this->WatchStart.end(), -1);
+  }
+  void WatchPoint(Id x)
+  {
+    if (this->WatchValid && this->Watch.size() < MaximumWatch)
+    {
+      this->Watch.push_back(x);
+    }
+    else
+    {
+      this->WatchValid = false;
+    }
+  }
+  // Records the watch of the failed edge a -> b (after FailedState[a] is set).
+  void RecordWatch(Id a)
+  {
+    this->WatchStart[a] = -1;
+    if (!this->WatchValid)
+    {
+      return;
+    }
+    if (this->Watched.size() + this->Watch.size() > 16 * this->Touched.size() + 4096)
+    {
+      this->ForgetWatches();
+    }
+    this->WatchStart[a] = static_cast<int64_t>(this->Watched.size());
+    this->WatchCount[a] = static_cast<uint16_t>(this->Watch.size());
+    this->Watched.insert(this->Watched.end(), this->Watch.begin(), this->Watch.end());
+  }
+  // No triangle added at the watched points of a's failed edge since it failed.
+  bool Unchanged(Id a) const
+  {
+    if (this->WatchStart[a] < 0)
+    {
+      return false;
+    }
+    const Id* watched = this->Watched.data() + this->WatchStart[a];
+    for (int k = 0; k < this->WatchCount[a]; ++k)
+    {
+      if (this->Touched[watched[k]] > this->FailedState[a])
+      {
+        return false;
+      }
+    }
+    return true;
+  }
 };
 
 bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& parameters)
 {
+  this->RefusedForGood = true;
   if (this->Status[third] != Usable ||
     // (pcs::OnOneScanLine's first test, on the flags: at least two of the points have a stretch.)
     (this->Stretch && parameters.RefuseOneLineTriangles &&
@@ -994,6 +1072,7 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
       if (std::fabs(Dot(n[i], normal)) < bound &&
         !(parameters.NoiseBand && this->WithinNoiseBand(v, i)))
       {
+        this->RefusedForGood = !parameters.CloseTriangularHoles; // (closesHole may change)
         return false;
       }
     }
@@ -1001,6 +1080,7 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
   // The mesh (topology), and II.E: not collinear (exact).
   if (!this->CanAdd(e0, e1, third))
   {
+    this->RefusedForGood = false;
     return false;
   }
   pcs::projected::TrianglePlane plane;
@@ -1032,9 +1112,13 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
   // edge (or of a seed edge) get that far.
   if (this->ProjectionTests >= parameters.MaximumCandidates)
   {
+    this->RefusedForGood = false;
     return false;
   }
   ++this->ProjectionTests;
+  // (Refused by the projection tests: for good while edges are only added, unless a hole may
+  // close at this triangle, which then takes the noise-band path below.)
+  this->RefusedForGood = !parameters.CloseTriangularHoles;
   // III.C within the noise band: the last triangle of a hole is not blocked by points and edges
   // within the noise band of its plane (see PassesProjectionTests). That decision depends on the
   // mesh (the hole), so it is not remembered in Blocked. Where the three vertices have no band
@@ -1042,6 +1126,7 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
   if (closesHole && parameters.NoiseBand &&
     std::max({ this->NoiseBand[e0], this->NoiseBand[e1], this->NoiseBand[third] }) > 0.0)
   {
+    this->WatchValid = false;
     return this->PassesProjectionTests(e0, e1, third, plane, parameters, true);
   }
   std::array<Id, 3> key = { e0, e1, third };
@@ -1245,6 +1330,22 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
   size_t examined = 0;
   // Ranked in the sampling's metric only where an end of the edge has a stretch.
   const bool stretchedEdge = this->HasStretch(e0) || this->HasStretch(e1);
+  this->Watch.clear();
+  this->WatchValid = true;
+  bool endsWatched = false;
+  auto watchEnds = [&]()
+  {
+    if (!endsWatched)
+    {
+      this->WatchPoint(e0);
+      this->WatchPoint(e1);
+      endsWatched = true;
+    }
+  };
+  if (relaxed)
+  {
+    watchEnds(); // (the ears, and the holes that may close)
+  }
   this->Ears.clear();
   if (relaxed)
   {
@@ -1299,6 +1400,10 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
     }
     this->Candidates.insert(this->Candidates.end(), this->Pending.begin(), this->Pending.end());
     this->Pending.clear();
+    if (this->Candidates.size() > examinedBudget - examined)
+    {
+      this->WatchValid = false; // (candidates left out by the budget)
+    }
     SortNearest(this->Candidates, examinedBudget - examined);
     this->Candidates.erase(
       std::unique(this->Candidates.begin(), this->Candidates.end()), this->Candidates.end());
@@ -1312,14 +1417,21 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
       }
       if (++examined > examinedBudget)
       {
+        this->WatchValid = false;
         return None;
       }
       if (this->IsValid(e0, e1, candidate->second, opposite, parameters))
       {
         return candidate->second;
       }
+      if (!this->RefusedForGood)
+      {
+        this->WatchPoint(candidate->second);
+        watchEnds(); // (CanAdd reads the mesh at the ends too)
+      }
       if (this->ProjectionTests >= parameters.MaximumCandidates)
       {
+        this->WatchValid = false;
         return None; // the budget is spent: no further candidate can be accepted
       }
     }
@@ -1348,6 +1460,10 @@ int64_t Front::Add(Id a, Id b, Id c, uint8_t origin)
   ++this->State;
   this->Origin.push_back(origin);
   const Id v[3] = { a, b, c };
+  for (Id x : v)
+  {
+    this->Touched[x] = this->State;
+  }
   double lengths[3]; // of the edge v[i] v[i + 1]
   for (int i = 0; i < 3; ++i)
   {
@@ -1396,6 +1512,11 @@ void Front::Progress()
 bool Front::Advance(const Parameters& parameters, bool relaxed, uint8_t origin)
 {
   ++this->State;
+  if (this->WatchParameters != &parameters)
+  {
+    this->ForgetWatches();
+    this->WatchParameters = &parameters;
+  }
   while (!this->Edges.empty() && !this->Aborted)
   {
     const Id a = this->Edges.front().first;
@@ -1406,9 +1527,9 @@ bool Front::Advance(const Parameters& parameters, bool relaxed, uint8_t origin)
       continue; // not a front edge (any more)
     }
     this->Progress();
-    if (this->FailedHead[a] == b && this->FailedState[a] == this->State)
+    if (this->FailedHead[a] == b && (this->FailedState[a] == this->State || this->Unchanged(a)))
     {
-      continue; // tried since the last change, in vain
+      continue; // tried since the last change (near it), in vain
     }
     // The new triangle traverses the edge the other way: (b, a, x).
     const Id opposite = this->Mesh.OppositeVertex(a, b);
@@ -1421,6 +1542,7 @@ bool Front::Advance(const Parameters& parameters, bool relaxed, uint8_t origin)
     {
       this->FailedHead[a] = b;
       this->FailedState[a] = this->State;
+      this->RecordWatch(a);
     }
   }
   return !this->Aborted;

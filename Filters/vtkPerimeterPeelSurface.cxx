@@ -282,27 +282,24 @@ public:
     return normal;
   }
 
-  // Whether the edge of c joining its slots i and j is a fold of the boundary: it has two boundary
-  // triangles (a manifold edge) and their outward normals are more than 90 degrees apart, so one
-  // of them faces into the solid there (a thin flap of flat tetrahedra, see Unfold).
-  bool IsFold(int64_t c, int i, int j) const { return this->EdgeCosine(c, i, j) < 0.0; }
-
-  // The cosine of the angle between the outward normals of the two boundary triangles on the edge
-  // of c joining its slots i and j; 2 when the edge does not have exactly two.
-  double EdgeCosine(int64_t c, int i, int j) const
-  {
-    double cosine[2];
-    this->EdgeCosines(c, i, j, -1, cosine);
-    return cosine[0];
-  }
-
-  // EdgeCosine now (cosine[0]) and, in the same walk around the edge, with the cell `moved` in the
-  // other state (cosine[1]; not computed when `moved` is -1).
-  void EdgeCosines(int64_t c, int i, int j, int64_t moved, double cosine[2]) const
+  // One walk around the edge of c joining its slots i and j for the current states (s = 0) and,
+  // when `states` is 2, with the cells for which `moved(cell)` is true in the other state (s = 1).
+  // cosine[s] (2 when not `normals`): the cosine of the angle between the outward normals of the
+  // two boundary triangles on the edge, 2 when it does not have exactly two (the edge is a fold
+  // when it is negative: one of the triangles faces into the solid there, see Unfolder);
+  // onBoundary[s]: whether the edge is on the boundary (has cells of both states around it).
+  template<typename Moved>
+  void EdgeStates(int64_t c,
+    int i,
+    int j,
+    int states,
+    bool normals,
+    Moved&& moved,
+    double cosine[2],
+    bool onBoundary[2]) const
   {
     std::array<double, 3> normal[2][2];
     int found[2] = { 0, 0 };
-    const int states = moved >= 0 ? 2 : 1;
     this->AroundEdge(c,
       i,
       j,
@@ -311,9 +308,9 @@ public:
         const int64_t next = this->DT.Neighbor(cell, cross);
         for (int s = 0; s < states; ++s)
         {
-          const bool cellInside = this->IsInside(cell) != (s == 1 && cell == moved);
-          const bool nextInside = this->IsInside(next) != (s == 1 && next == moved);
-          if (cellInside != nextInside && found[s]++ < 2)
+          const bool cellInside = this->IsInside(cell) != (s == 1 && moved(cell));
+          const bool nextInside = this->IsInside(next) != (s == 1 && moved(next));
+          if (cellInside != nextInside && found[s]++ < 2 && normals)
           {
             normal[s][found[s] - 1] = cellInside
               ? this->FacetNormal(cell, cross)
@@ -324,16 +321,45 @@ public:
       });
     for (int s = 0; s < states; ++s)
     {
-      const std::array<double, 3>* n = normal[s];
-      if (found[s] != 2)
+      cosine[s] = normals ? NormalCosine(normal[s], found[s]) : 2.0;
+      onBoundary[s] = found[s] > 0;
+    }
+  }
+
+  // The cosine of the angle between the two normals n when `found` (the boundary triangles on an
+  // edge) is 2; 2 otherwise.
+  static double NormalCosine(const std::array<double, 3> n[2], int found)
+  {
+    if (found != 2)
+    {
+      return 2.0;
+    }
+    const double dot = n[0][0] * n[1][0] + n[0][1] * n[1][1] + n[0][2] * n[1][2];
+    const double lengths = std::sqrt((n[0][0] * n[0][0] + n[0][1] * n[0][1] + n[0][2] * n[0][2]) *
+      (n[1][0] * n[1][0] + n[1][1] * n[1][1] + n[1][2] * n[1][2]));
+    return lengths > 0.0 ? dot / lengths : (dot < 0.0 ? -1.0 : 1.0);
+  }
+
+  // The boundary facet next to the exterior facet j of c around the edge of c without slots j
+  // and k: the walk around the edge starts across facet k and goes through inside cells until
+  // the cell behind the facet it would cross is outside. Returns that facet (cell, slot).
+  std::pair<int64_t, int> NextBoundaryFacet(int64_t c, int j, int k) const
+  {
+    int64_t cell = c;
+    int cross = k;
+    int32_t kept = this->DT.Vertex(c, j);
+    for (;;)
+    {
+      const int64_t next = this->DT.Neighbor(cell, cross);
+      if (!this->Inside[next])
       {
-        cosine[s] = 2.0;
-        continue;
+        return { cell, cross };
       }
-      const double dot = n[0][0] * n[1][0] + n[0][1] * n[1][1] + n[0][2] * n[1][2];
-      const double lengths = std::sqrt((n[0][0] * n[0][0] + n[0][1] * n[0][1] + n[0][2] * n[0][2]) *
-        (n[1][0] * n[1][0] + n[1][1] * n[1][1] + n[1][2] * n[1][2]));
-      cosine[s] = lengths > 0.0 ? dot / lengths : (dot < 0.0 ? -1.0 : 1.0);
+      const int32_t entering = this->DT.Vertex(next, this->DT.MirrorIndex(cell, cross));
+      const int32_t* v = this->DT.CellVertices(next);
+      cross = (v[1] == kept) + 2 * (v[2] == kept) + 3 * (v[3] == kept);
+      kept = entering;
+      cell = next;
     }
   }
 
@@ -647,15 +673,26 @@ public:
     const bool mayOpenHandle = startFacet > handleThreshold;
     std::priority_queue<std::pair<double, int64_t>> grow;
     bool ok = this->Add(c, threshold, grow);
+    int64_t change = 0; // EulerChange, when known for the group as it is
+    bool changeKnown = false;
     while (ok)
     {
       // The group stops at the first cell after which the boundary is a manifold again: a group
       // that went on (its links were once checked only when it doubled) could pinch the boundary
       // again and grow, largest facet first, along a torus's tube to the size bound instead of
       // closing up across the hole.
-      if (this->IsManifold() && (!keepTopology || this->EulerChange() >= 0))
+      if (this->IsManifold())
       {
-        break;
+        if (!keepTopology)
+        {
+          break;
+        }
+        change = this->EulerChange();
+        if (change >= 0)
+        {
+          changeKnown = true;
+          break;
+        }
       }
       if (grow.empty() || static_cast<int64_t>(this->Group.size()) >= this->MaximumGroup)
       {
@@ -687,7 +724,10 @@ public:
       // opened by a short group (at most 8 cells) whose start facet is not over handleThreshold
       // (HandleFactor; by default every group start passes: the short groups punch the webs of
       // flat tetrahedra left across concave regions, see the class docs).
-      const int64_t change = this->EulerChange();
+      if (!changeKnown)
+      {
+        change = this->EulerChange();
+      }
       if (keepTopology)
       {
         ok = change == 0 && !this->ShowsLargerFacet(startFacet);
@@ -722,24 +762,22 @@ public:
     return ok;
   }
 
-  // Move the cells (all of one state, finite) to the other state when the boundary stays a
-  // closed 2-manifold of the same topology with every vertex of the cells on it (no point left
-  // unused or in no cell): each such vertex keeps inside and outside cells and a manifold link,
-  // the Euler characteristic of the boundary does not change, and the cells of the old state
-  // around them stay connected (no part split off, no void enclosed). Returns whether they moved;
-  // the failed groups' marks are not touched.
-  bool Toggle(const std::vector<int64_t>& cells)
+  // Move the cells (all of one state, finite) to the other state when every vertex of them keeps
+  // a manifold link and the cells of the old state around them stay connected (no part split
+  // off, no void enclosed). The caller has checked that the boundary's Euler characteristic does
+  // not change and that every vertex of the cells stays on the boundary (Evaluate):
+  // the boundary then stays a closed 2-manifold of the same topology on the same points. Returns
+  // whether they moved; the failed groups' marks are not touched.
+  bool Toggle(const int64_t* cells, size_t size)
   {
     const bool inside = this->Solid.IsInside(cells[0]);
-    this->Group = cells;
-    const int64_t before = this->BoundaryEuler();
-    for (int64_t c : cells)
+    this->Group.assign(cells, cells + size);
+    for (int64_t c : this->Group)
     {
       this->Solid.SetInside(c, !inside);
     }
-    bool ok = this->BoundaryEuler() == before;
     this->VertexCells.clear();
-    for (int64_t c : cells)
+    for (int64_t c : this->Group)
     {
       for (int k = 0; k < 4; ++k)
       {
@@ -747,6 +785,7 @@ public:
       }
     }
     std::sort(this->VertexCells.begin(), this->VertexCells.end());
+    bool ok = true;
     for (size_t i = 0; i < this->VertexCells.size() && ok; ++i)
     {
       const int32_t v = this->VertexCells[i].first;
@@ -754,12 +793,12 @@ public:
       {
         continue;
       }
-      ok = this->Solid.OnBoundary(v) && this->ManifoldAt(v, this->VertexCells[i].second);
+      ok = this->ManifoldAt(v, this->VertexCells[i].second);
     }
     ok = ok && this->StaysConnected(inside);
     if (!ok)
     {
-      for (int64_t c : cells)
+      for (int64_t c : this->Group)
       {
         this->Solid.SetInside(c, inside);
       }
@@ -791,17 +830,122 @@ public:
   // handle opened, 0 when the topology stayed.
   int64_t EulerChange()
   {
-    const int64_t after = this->BoundaryEuler();
-    for (int64_t g : this->Group)
+    // Evaluate gives the change of putting the group back.
+    return -this->Evaluate<false>(this->Group.data(), this->Group.size(), false, nullptr)
+              .EulerChange;
+  }
+
+  // What moving the finite cells (all of one state) to the other state would change, found without
+  // moving them. V - E + F of the boundary changes only among the faces of the cells: their
+  // vertices and facets from the state counts, their edges by one walk around each distinct edge,
+  // which also gives (with Folds) the cosine of the angle between the outward normals of its two
+  // boundary triangles before and after (PeelSolid::EdgeStates): the folds (negative cosines)
+  // and the bending (1 - cosine, summed over the edges with two boundary triangles, in the order
+  // of the edges' end point ids). With stopWhenVertexLeaves, returns as soon as a vertex of the
+  // cells is found to leave the boundary (no inside or no outside cell around it after). With
+  // Folds, after[6 k + e] receives the cosine after the move of edge e of cells[k] (edges (0, 1),
+  // (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)).
+  struct MoveEffect
+  {
+    int64_t EulerChange = 0;
+    bool VertexLeaves = false;
+    int64_t FoldsBefore = 0, FoldsAfter = 0;
+    double BendBefore = 0.0, BendAfter = 0.0;
+
+    void Tally(const double cosine[2])
     {
-      this->Solid.SetInside(g, true);
+      this->FoldsBefore += cosine[0] < 0.0 ? 1 : 0;
+      this->FoldsAfter += cosine[1] < 0.0 ? 1 : 0;
+      this->BendBefore += cosine[0] <= 1.0 ? 1.0 - cosine[0] : 0.0;
+      this->BendAfter += cosine[1] <= 1.0 ? 1.0 - cosine[1] : 0.0;
     }
-    const int64_t before = this->BoundaryEuler();
-    for (int64_t g : this->Group)
+  };
+  template<bool Folds>
+  MoveEffect Evaluate(const int64_t* cells, size_t size, bool stopWhenVertexLeaves, double* after)
+  {
+    MoveEffect effect;
+    if (this->Moving.empty())
     {
-      this->Solid.SetInside(g, false);
+      this->Moving.assign(this->Stamp.size(), 0);
     }
-    return after - before;
+    for (size_t k = 0; k < size; ++k)
+    {
+      this->Moving[cells[k]] = 1;
+    }
+    const bool inside = this->Solid.IsInside(cells[0]);
+    this->Vertices.clear();
+    this->Edges.clear();
+    for (size_t k = 0; k < size; ++k)
+    {
+      const int64_t c = cells[k];
+      for (int j = 0; j < 4; ++j)
+      {
+        this->Vertices.push_back(this->DT.Vertex(c, j));
+        // A facet between two moved cells is never on the boundary; the others change sides.
+        const int64_t n = this->DT.Neighbor(c, j);
+        if (!this->Moving[n])
+        {
+          effect.EulerChange += this->Solid.IsInside(n) == inside ? 1 : -1;
+        }
+      }
+      for (int i = 0, e = 0; i < 3; ++i)
+      {
+        for (int j = i + 1; j < 4; ++j, ++e)
+        {
+          const int32_t v = this->DT.Vertex(c, i), w = this->DT.Vertex(c, j);
+          this->Edges.push_back({ std::min(v, w), std::max(v, w), c, i, j, 6 * k + e });
+        }
+      }
+    }
+    std::sort(this->Vertices.begin(), this->Vertices.end());
+    for (size_t i = 0; i < this->Vertices.size();)
+    {
+      const int32_t v = this->Vertices[i];
+      size_t end = i + 1;
+      while (end < this->Vertices.size() && this->Vertices[end] == v)
+      {
+        ++end;
+      }
+      const int32_t moved = static_cast<int32_t>(end - i);
+      const int32_t insideAfter = this->Solid.Count[v] + (inside ? -moved : moved);
+      const int32_t outsideAfter = this->Solid.OutsideCount[v] + (inside ? moved : -moved);
+      const bool after = insideAfter > 0 && outsideAfter > 0;
+      effect.VertexLeaves = effect.VertexLeaves || !after;
+      effect.EulerChange += (after ? 1 : 0) - (this->Solid.OnBoundary(v) ? 1 : 0);
+      i = end;
+    }
+    if (!(stopWhenVertexLeaves && effect.VertexLeaves))
+    {
+      std::sort(this->Edges.begin(),
+        this->Edges.end(),
+        [](const GroupEdge& x, const GroupEdge& y)
+        { return std::tie(x.V, x.W) < std::tie(y.V, y.W); });
+      auto moving = [this](int64_t cell) { return this->Moving[cell] != 0; };
+      for (size_t k = 0; k < this->Edges.size();)
+      {
+        const GroupEdge& e = this->Edges[k];
+        double cosine[2];
+        bool onBoundary[2];
+        this->Solid.EdgeStates(e.Cell, e.I, e.J, 2, Folds, moving, cosine, onBoundary);
+        effect.EulerChange -= (onBoundary[1] ? 1 : 0) - (onBoundary[0] ? 1 : 0);
+        if (Folds)
+        {
+          effect.Tally(cosine);
+        }
+        for (; k < this->Edges.size() && this->Edges[k].V == e.V && this->Edges[k].W == e.W; ++k)
+        {
+          if (Folds)
+          {
+            after[this->Edges[k].Index] = cosine[1];
+          }
+        }
+      }
+    }
+    for (size_t k = 0; k < size; ++k)
+    {
+      this->Moving[cells[k]] = 0;
+    }
+    return effect;
   }
 
 private:
@@ -878,63 +1022,6 @@ private:
       }
     }
     return components <= 1;
-  }
-
-  // V - E + F of the boundary simplices among the faces of the group's cells (the rest of the
-  // boundary is the same before and after the group goes).
-  int64_t BoundaryEuler()
-  {
-    int64_t euler = 0;
-    this->Edges.clear();
-    this->Vertices.clear();
-    for (int64_t c : this->Group)
-    {
-      for (int j = 0; j < 4; ++j)
-      {
-        const int64_t n = this->DT.Neighbor(c, j);
-        // (A facet between two group cells is never on the boundary: both have one state.)
-        if (this->Solid.IsInside(c) != this->Solid.IsInside(n))
-        {
-          ++euler;
-        }
-        const int32_t v = this->DT.Vertex(c, j);
-        this->Vertices.push_back(v);
-        for (int k = j + 1; k < 4; ++k)
-        {
-          const int32_t w = this->DT.Vertex(c, k);
-          this->Edges.push_back({ std::min(v, w), std::max(v, w), c, j * 4 + k });
-        }
-      }
-    }
-    std::sort(this->Vertices.begin(), this->Vertices.end());
-    this->Vertices.erase(
-      std::unique(this->Vertices.begin(), this->Vertices.end()), this->Vertices.end());
-    for (int32_t v : this->Vertices)
-    {
-      euler += this->Solid.OnBoundary(v) ? 1 : 0;
-    }
-    std::sort(this->Edges.begin(), this->Edges.end(),
-      [](const GroupEdge& a, const GroupEdge& b)
-      { return std::tie(a.V, a.W) < std::tie(b.V, b.W); });
-    for (size_t i = 0; i < this->Edges.size(); ++i)
-    {
-      const GroupEdge& e = this->Edges[i];
-      if (i > 0 && this->Edges[i - 1].V == e.V && this->Edges[i - 1].W == e.W)
-      {
-        continue;
-      }
-      bool inside = false, outside = false;
-      this->Solid.AroundEdge(e.Cell,
-        e.Slots / 4,
-        e.Slots % 4,
-        [&](int64_t cell, int)
-        {
-          (this->Solid.IsInside(cell) ? inside : outside) = true;
-          return inside && outside;
-        });
-      euler -= inside && outside ? 1 : 0;
-    }
-    return euler;
   }
 
   // Whether the boundary is a manifold at every vertex of the group. Lazy, since it is asked after
@@ -1107,7 +1194,8 @@ private:
   {
     int32_t V, W;
     int64_t Cell;
-    int Slots;
+    int I, J;     // slots of V and W in Cell
+    size_t Index; // 6 x the cell's place in the cells evaluated + the edge's
   };
   std::vector<GroupEdge> Edges;
   std::vector<int32_t> Vertices;
@@ -1118,6 +1206,7 @@ private:
   std::vector<uint32_t> Stamp;
   uint32_t Generation = 0;
   std::vector<uint8_t> Failed;
+  std::vector<uint8_t> Moving; // the cells being evaluated (sized to the cells at the first use)
   std::vector<uint8_t> Bad, Dirty;
   std::vector<std::pair<int32_t, int64_t>> DirtyVertices; // vertex, a cell of it
   int64_t BadCount = 0;      // vertices of the group found non-manifold when last checked
@@ -1134,55 +1223,56 @@ private:
 // tetrahedra (nearly cospherical points) kept while a neighbour went, so that a triangle of the
 // flap faces into the solid (dark specks when shaded). Run moves cells next to the folds to the
 // other state (all the inside or all the outside cells around a fold's edge, or one cell on either
-// side of its two triangles) when GroupPeeler::Toggle allows it (same topology, manifold, every
-// point still on the boundary) and the edges of the moved cells then have fewer folds, or as many
-// and less bending (the sum of 1 - cosine of the angle between the two normals, lower by 1e-6 at
+// side of its two triangles) when that keeps the boundary a closed 2-manifold of the same topology
+// with every point on it and the edges of the moved cells then have fewer folds, or as many and
+// less bending (the sum of 1 - cosine of the angle between the two normals, lower by 1e-6 at
 // least). Each move lowers the whole surface's (folds, bending), so the pass ends; it is also
-// bounded by the number of cells.
+// bounded by the number of cells. Each trial is local: one walk around each edge of the moved
+// cells gives their folds and bending before and after, and (for several cells) the change of the
+// Euler characteristic; the links and the connectivity are checked last, only for the moves that
+// pass the rest.
 class Unfolder
 {
 public:
-  Unfolder(PeelSolid& solid, GroupPeeler& groups)
+  Unfolder(PeelSolid& solid, GroupPeeler& groups, std::function<bool(double)> progress)
     : Solid(solid)
     , DT(solid.DT)
     , Groups(groups)
+    , Progress(std::move(progress))
   {
   }
 
-  // Returns the number of moves.
+  // Returns the number of moves, or -1 when `progress` (called with the share of the folds met so
+  // far) returned false.
   int64_t Run()
   {
     this->QueueAllFolds();
-    int64_t moves = 0;
+    int64_t moves = 0, visited = 0;
+    double done = 0.0;
     const int64_t maximumMoves = this->DT.GetNumberOfCells();
     while (!this->Work.empty() && moves < maximumMoves)
     {
+      if (++visited % 4096 == 0)
+      {
+        // The queue grows as moves make new folds: the share never runs backwards.
+        done = std::max(done, visited / static_cast<double>(visited + this->Work.size()));
+        if (!this->Progress(done))
+        {
+          return -1;
+        }
+      }
       const EdgeRef e = this->Work.back();
       this->Work.pop_back();
-      if (!this->Solid.IsFold(e.Cell, e.I, e.J))
+      if (!this->ListMoves(e))
       {
-        continue;
+        continue; // no longer a fold
       }
-      this->ListMoves(e);
-      for (const std::vector<int64_t>& move : this->Moves)
+      for (size_t m = 0; m + 1 < this->MoveStart.size(); ++m)
       {
-        // One cell: the sculpting rules (cheap) first; a fan: the group checks, if it helps.
-        const bool single = move.size() == 1;
-        if (single && !this->Solid.MayToggle(move[0]))
-        {
-          continue;
-        }
-        if (this->Improves(move) && (single || this->Groups.Toggle(move)))
+        const size_t first = this->MoveStart[m];
+        if (this->TryMove(&this->MoveCells[first], this->MoveStart[m + 1] - first))
         {
           ++moves;
-          if (single)
-          {
-            this->Solid.SetInside(move[0], !this->Solid.IsInside(move[0]));
-          }
-          for (int64_t c : move)
-          {
-            this->QueueFolds(c);
-          }
           break;
         }
       }
@@ -1197,16 +1287,19 @@ private:
     int I, J; // slots of the edge's end points in Cell
   };
 
-  // Queue every fold: the exterior facets' edges, sorted, pair up the two triangles on each edge.
+  // Queue every fold, sorted by its end points' ids (a spatial order: the ids follow the
+  // insertion order). Each exterior facet finds the boundary triangle on each of its edges by a
+  // walk through the inside cells around the edge; an edge is taken from the facet that comes
+  // last (cell, then slot), whose cell is the edge's reference (where the walks of ListMoves
+  // start, which orders the moves tried).
   void QueueAllFolds()
   {
-    struct HalfEdge
+    struct Fold
     {
       int32_t V, W;
       EdgeRef Ref;
-      std::array<double, 3> Normal;
     };
-    std::vector<HalfEdge> halves;
+    std::vector<Fold> folds;
     const int64_t cells = this->DT.GetNumberOfCells();
     for (int64_t c = 0; c < cells; ++c)
     {
@@ -1216,44 +1309,60 @@ private:
         {
           continue;
         }
-        const std::array<double, 3> normal = this->Solid.FacetNormal(c, j);
+        std::array<double, 3> normal;
+        bool measured = false;
         for (int a = 0; a < 4; ++a)
         {
           for (int b = a + 1; b < 4; ++b)
           {
-            if (a != j && b != j)
+            if (a == j || b == j)
+            {
+              continue;
+            }
+            const std::pair<int64_t, int> other =
+              this->Solid.NextBoundaryFacet(c, j, 6 - a - b - j);
+            if (other.first > c || (other.first == c && other.second > j))
+            {
+              continue; // taken from the other facet
+            }
+            if (!measured)
+            {
+              normal = this->Solid.FacetNormal(c, j);
+              measured = true;
+            }
+            const std::array<double, 3> n = this->Solid.FacetNormal(other.first, other.second);
+            if (normal[0] * n[0] + normal[1] * n[1] + normal[2] * n[2] < 0.0)
             {
               const int32_t v = this->DT.Vertex(c, a), w = this->DT.Vertex(c, b);
-              halves.push_back({ std::min(v, w), std::max(v, w), { c, a, b }, normal });
+              folds.push_back({ std::min(v, w), std::max(v, w), { c, a, b } });
             }
           }
         }
       }
     }
-    std::sort(halves.begin(),
-      halves.end(),
-      [](const HalfEdge& x, const HalfEdge& y) { return std::tie(x.V, x.W) < std::tie(y.V, y.W); });
-    for (size_t k = 0; k + 1 < halves.size(); ++k)
+    std::sort(folds.begin(),
+      folds.end(),
+      [](const Fold& x, const Fold& y) { return std::tie(x.V, x.W) < std::tie(y.V, y.W); });
+    this->Work.clear();
+    for (const Fold& f : folds)
     {
-      const HalfEdge& x = halves[k];
-      const HalfEdge& y = halves[k + 1];
-      if (x.V == y.V && x.W == y.W &&
-        x.Normal[0] * y.Normal[0] + x.Normal[1] * y.Normal[1] + x.Normal[2] * y.Normal[2] < 0.0)
-      {
-        this->Work.push_back(x.Ref); // (an edge of more than two triangles is checked again)
-      }
+      this->Work.push_back(f.Ref);
     }
   }
 
-  // The moves tried at the fold e, cheapest first: each finite cell on either side of its two
-  // boundary triangles alone, then all the inside cells around its edge and all the outside ones
-  // (when finite), when they are 2 to MaximumFan cells (more were not seen to help).
-  void ListMoves(const EdgeRef& e)
+  // When the edge e is a fold, list the moves tried there and return true: each finite cell on
+  // either side of its two boundary triangles alone, then all the inside cells around its edge
+  // and all the outside ones (when finite), when they are 2 to MaximumFan cells (more were not
+  // seen to help). One walk around the edge.
+  bool ListMoves(const EdgeRef& e)
   {
-    this->Moves.clear();
+    this->MoveCells.clear();
+    this->MoveStart.assign(1, 0);
     this->Fans[0].clear();
     this->Fans[1].clear();
     bool infinite = false;
+    std::array<double, 3> normal[2];
+    int found = 0;
     this->Solid.AroundEdge(e.Cell,
       e.I,
       e.J,
@@ -1265,107 +1374,109 @@ private:
         const int64_t next = this->DT.Neighbor(cell, cross);
         if (inside != this->Solid.IsInside(next))
         {
+          if (found++ < 2)
+          {
+            normal[found - 1] = inside
+              ? this->Solid.FacetNormal(cell, cross)
+              : this->Solid.FacetNormal(next, this->DT.MirrorIndex(cell, cross));
+          }
           for (int64_t c : { cell, next })
           {
             if (!this->DT.IsInfinite(c))
             {
-              this->Moves.push_back({ c });
+              this->MoveCells.push_back(c);
+              this->MoveStart.push_back(this->MoveCells.size());
             }
           }
         }
         return false;
       });
+    if (!(PeelSolid::NormalCosine(normal, found) < 0.0))
+    {
+      return false;
+    }
     for (int side = 0; side < 2; ++side)
     {
       const size_t size = this->Fans[side].size();
       if (size >= 2 && size <= MaximumFan && !(side == 1 && infinite))
       {
-        this->Moves.push_back(this->Fans[side]);
+        this->MoveCells.insert(
+          this->MoveCells.end(), this->Fans[side].begin(), this->Fans[side].end());
+        this->MoveStart.push_back(this->MoveCells.size());
       }
     }
+    return true;
   }
 
-  // Whether moving the cells to the other state leaves fewer folds among their edges, or as many
-  // and less bending (the cells are moved and moved back).
-  bool Improves(const std::vector<int64_t>& cells)
+  // Move the cells to the other state when that is allowed and improves the surface, and queue
+  // the folds among their edges then. One cell: the sculpting rules (cheap) first, then one walk
+  // around each of its edges for both states. Several (a fan): GroupPeeler::Evaluate, then the
+  // links and the connectivity (GroupPeeler::Toggle).
+  bool TryMove(const int64_t* cells, size_t size)
   {
-    double bendBefore = 0.0, bendAfter = 0.0;
-    if (cells.size() == 1)
+    if (size == 1)
     {
-      // One walk around each edge for both states.
-      int64_t before = 0, after = 0;
-      for (int i = 0; i < 3; ++i)
+      const int64_t c = cells[0];
+      if (!this->Solid.MayToggle(c))
       {
-        for (int j = i + 1; j < 4; ++j)
+        return false;
+      }
+      GroupPeeler::MoveEffect effect;
+      double after[6];
+      for (int i = 0, e = 0; i < 3; ++i)
+      {
+        for (int j = i + 1; j < 4; ++j, ++e)
         {
           double cosine[2];
-          this->Solid.EdgeCosines(cells[0], i, j, cells[0], cosine);
-          Tally(cosine[0], before, bendBefore);
-          Tally(cosine[1], after, bendAfter);
+          bool onBoundary[2];
+          this->Solid.EdgeStates(
+            c, i, j, 2, true, [c](int64_t cell) { return cell == c; }, cosine, onBoundary);
+          effect.Tally(cosine);
+          after[e] = cosine[1];
         }
       }
-      return after < before || (after == before && bendAfter < bendBefore - 1e-6);
-    }
-    const int64_t before = this->CountFolds(cells, bendBefore);
-    for (int64_t c : cells)
-    {
-      this->Solid.SetInside(c, !this->Solid.IsInside(c));
-    }
-    const int64_t after = this->CountFolds(cells, bendAfter);
-    for (int64_t c : cells)
-    {
-      this->Solid.SetInside(c, !this->Solid.IsInside(c));
-    }
-    return after < before || (after == before && bendAfter < bendBefore - 1e-6);
-  }
-
-  // The folds among the edges of the cells, and their bending (1 - cosine, summed over the edges
-  // with two boundary triangles).
-  int64_t CountFolds(const std::vector<int64_t>& cells, double& bend)
-  {
-    this->Edges.clear();
-    for (int64_t c : cells)
-    {
-      for (int i = 0; i < 3; ++i)
+      if (!Better(effect))
       {
-        for (int j = i + 1; j < 4; ++j)
-        {
-          const int32_t v = this->DT.Vertex(c, i), w = this->DT.Vertex(c, j);
-          this->Edges.push_back({ std::min(v, w), std::max(v, w), { c, i, j } });
-        }
+        return false;
       }
+      this->Solid.SetInside(c, !this->Solid.IsInside(c));
+      this->QueueFolds(c, after);
+      return true;
     }
-    std::sort(this->Edges.begin(),
-      this->Edges.end(),
-      [](const KeyedEdge& a, const KeyedEdge& b)
-      { return std::tie(a.V, a.W) < std::tie(b.V, b.W); });
-    int64_t folds = 0;
-    for (size_t k = 0; k < this->Edges.size(); ++k)
+    // A fan: the vertices, the Euler characteristic and the folds, then the links and the
+    // connectivity.
+    this->FanAfter.resize(6 * size);
+    const GroupPeeler::MoveEffect effect =
+      this->Groups.Evaluate<true>(cells, size, true, this->FanAfter.data());
+    if (effect.VertexLeaves || effect.EulerChange != 0 || !Better(effect) ||
+      !this->Groups.Toggle(cells, size))
     {
-      const KeyedEdge& e = this->Edges[k];
-      if (k == 0 || this->Edges[k - 1].V != e.V || this->Edges[k - 1].W != e.W)
-      {
-        Tally(this->Solid.EdgeCosine(e.Ref.Cell, e.Ref.I, e.Ref.J), folds, bend);
-      }
+      return false;
     }
-    return folds;
+    for (size_t k = 0; k < size; ++k)
+    {
+      this->QueueFolds(cells[k], &this->FanAfter[6 * k]);
+    }
+    return true;
   }
 
-  // Count an edge of the given cosine (EdgeCosine) in the folds and the bending.
-  static void Tally(double cosine, int64_t& folds, double& bend)
+  // Whether (folds, bending) after a move is lower than before: fewer folds, or as many and less
+  // bending by 1e-6 at least.
+  static bool Better(const GroupPeeler::MoveEffect& e)
   {
-    folds += cosine < 0.0 ? 1 : 0;
-    bend += cosine <= 1.0 ? 1.0 - cosine : 0.0;
+    return e.FoldsAfter < e.FoldsBefore ||
+      (e.FoldsAfter == e.FoldsBefore && e.BendAfter < e.BendBefore - 1e-6);
   }
 
-  // Queue the folds among the edges of c.
-  void QueueFolds(int64_t c)
+  // Queue the folds among the edges of c, whose cosines (PeelSolid::EdgeStates) are `cosine`, for
+  // the edges (0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3) in this order.
+  void QueueFolds(int64_t c, const double* cosine)
   {
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0, e = 0; i < 3; ++i)
     {
-      for (int j = i + 1; j < 4; ++j)
+      for (int j = i + 1; j < 4; ++j, ++e)
       {
-        if (this->Solid.IsFold(c, i, j))
+        if (cosine[e] < 0.0)
         {
           this->Work.push_back({ c, i, j });
         }
@@ -1373,17 +1484,15 @@ private:
     }
   }
 
-  struct KeyedEdge
-  {
-    int32_t V, W;
-    EdgeRef Ref;
-  };
   PeelSolid& Solid;
   const pcs::Delaunay3D& DT;
   GroupPeeler& Groups;
+  std::function<bool(double)> Progress;
   std::vector<EdgeRef> Work;
-  std::vector<KeyedEdge> Edges;
-  std::vector<std::vector<int64_t>> Moves;
+  std::vector<double> FanAfter;
+  // The moves listed at a fold: move m is MoveCells[MoveStart[m], MoveStart[m + 1]).
+  std::vector<int64_t> MoveCells;
+  std::vector<size_t> MoveStart;
   std::vector<int64_t> Fans[2];
   static constexpr size_t MaximumFan = 8;
 };
@@ -1979,7 +2088,17 @@ int vtkPerimeterPeelSurface::RequestData(
   if (groups)
   {
     // Folds: flaps of flat tetrahedra with a triangle facing into the solid (see Unfolder).
-    unfoldMoves = Unfolder(solid, *groups).Run();
+    auto progress = [this](double fraction)
+    {
+      this->UpdateProgress(0.9 + 0.08 * fraction);
+      return !this->GetAbortExecute();
+    };
+    unfoldMoves = Unfolder(solid, *groups, progress).Run();
+    if (unfoldMoves < 0)
+    {
+      unfoldMoves = 0;
+      return finish();
+    }
   }
   std::vector<std::array<int32_t, 3>> triangles = ExteriorTriangles(solid);
 

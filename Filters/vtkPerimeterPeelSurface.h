@@ -152,7 +152,9 @@
  *      torus 16 % -> 9 % (exact torus: 3 -> 0 triangles); the rest needs several cells at once
  *      in ways these moves do not reach (on noisy samples a fold-free surface over the Delaunay
  *      facets through every point may not exist). Cost: 10^5 random sphere points, the peel's
- *      processor time 0.33 -> 0.72 s (70,000 folds); field data NumberOfUnfoldingMoves.
+ *      processor time 0.33 -> 0.72 s (70,000 folds) when introduced; each trial is now evaluated
+ *      without moving anything (one walk around each edge of the moved cells for both states):
+ *      10^6 random sphere points, the peel 5.15 -> 4.08 s; field data NumberOfUnfoldingMoves.
  *   7. Groups that keep the topology (during the peel, once it has converged): group removals
  *      also start at refused tetrahedra whose exterior facet is over twice the threshold (squared
  *      for AREA; a surface triangle of a uniform sample is about the mean), grow as in rule 3 but
@@ -243,14 +245,14 @@
  * @warning Cost (measured 2026-11-24, processor times, load 10-14 on 2 cores; issue 4 asks for
  * 0.5 times the tetrahedralization at 10^6 points): the peel takes 0.53 times the
  * tetrahedralization on 10^6 random sphere points and 0.60 on a torus without the unfolding pass
- * (rule 6), 1.09 on the sphere with it; on 10^5 points 0.90 (sphere) and 0.73 (torus). It
- * works on a renumbered copy of the tetrahedralization (vertices in insertion order, cells sorted
- * by their newest vertex: pcs::Delaunay3D::RenumberByInsertion; 36 bytes per cell more while the
- * cells are copied), so that the cells and points the queue visits all over the surface are
- * mostly near their neighbours in memory, and prefetches the cells of the next turns. What
- * remains is memory latency: the queue's tests and the walks around edges, the unfolding pass,
- * the local spacing and, on the torus, the group removals.
- * Random spheres of 10^5 points (16 seeds) and 10^6 points come out genus 0.
+ * (rule 6), 0.93 on the sphere with it (1.16 before its trials were made local); on 10^5 points
+ * 0.73 (sphere) and 0.84 (torus). It works on a renumbered copy of the tetrahedralization
+ * (vertices in insertion order, cells sorted by their newest vertex:
+ * pcs::Delaunay3D::RenumberByInsertion; 36 bytes per cell more while the cells are copied), so that
+ * the cells and points the queue visits all over the surface are mostly near their neighbours in
+ * memory, and prefetches the cells of the next turns. What remains is memory latency: the queue's
+ * tests and the walks around edges, the unfolding pass, the local spacing and, on the torus, the
+ * group removals. Random spheres of 10^5 points (16 seeds) and 10^6 points come out genus 0.
  *
  * @sa vtkIncrementalDelaunay3D vtkReconstructionQuality
  */

@@ -19,6 +19,8 @@
 //   one mean spacing of the surface, at most 12 % (noisy) / 4 % (no noise) of the triangles facing
 //   into the solid (flaps of flat tetrahedra; 17 % on the noisy sphere before the unfolding pass);
 // - ManifoldOutput off (the paper's peeling): no point left in no tetrahedron;
+// - an abort requested once the peel is done (progress 0.9) stops the unfolding pass: a valid
+//   output with every point and no triangle (20,000 random sphere points, about 7,000 moves);
 // - the field data agree with the mesh (triangles, used points, Used array).
 #include "vtkPerimeterPeelSurface.h"
 #include "vtkReconstructionQuality.h"
@@ -26,7 +28,9 @@
 #include "pcsPeelTestShapes.h"
 #include "pcsTestUtilities.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
 #include "vtkPointData.h"
@@ -434,6 +438,42 @@ bool CheckDenseTorus()
 {
   return CheckClosedSurface("dense random torus (seed 2)", Peel(TorusPoints(100000, 2)), 1);
 }
+// Abort during the unfolding pass (rule 6): requested at the progress 0.9 reported when the peel
+// is done, it must stop the pass (which reports progress and reads the flag) and leave an output
+// with every point and no triangle, as an abort during the peel does.
+bool CheckAbortInUnfolding()
+{
+  const int n = 20000;
+  vtkNew<vtkPerimeterPeelSurface> peel;
+  peel->SetInputData(pcstest::MakeCloud(SpherePoints(n, 5)));
+  struct State
+  {
+    vtkPerimeterPeelSurface* Filter;
+    bool Requested;
+  } state{ peel, false };
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetClientData(&state);
+  callback->SetCallback(
+    [](vtkObject*, unsigned long, void* client, void* call)
+    {
+      auto* s = static_cast<State*>(client);
+      const double progress = *static_cast<double*>(call);
+      if (!s->Requested && progress >= 0.9 && progress < 1.0)
+      {
+        s->Requested = true;
+        s->Filter->SetAbortExecute(1);
+      }
+    });
+  peel->AddObserver(vtkCommand::ProgressEvent, callback);
+  peel->Update();
+  vtkPolyData* out = peel->GetOutput();
+  PCS_CHECK(state.Requested, "abort in unfolding: no progress event at 0.9");
+  PCS_CHECK(out->GetNumberOfPoints() == n,
+    "abort in unfolding: " << out->GetNumberOfPoints() << " points, expected " << n);
+  PCS_CHECK(out->GetNumberOfPolys() == 0,
+    "abort in unfolding: " << out->GetNumberOfPolys() << " triangles: the pass did not stop");
+  return true;
+}
 } // namespace
 
 int TestPerimeterPeelSurface(int, char*[])
@@ -446,5 +486,6 @@ int TestPerimeterPeelSurface(int, char*[])
   ok = CheckDenseSpheres() && ok;
   ok = CheckDenseTorus() && ok;
   ok = CheckNoisy() && ok;
+  ok = CheckAbortInUnfolding() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -291,6 +291,7 @@ private:
   // Neighbourhood of the current operation: candidate vertices (the K-neighbourhoods of the
   // centres) and the front edges at them.
   void CollectVertices(const Id* centers, int count);
+  size_t AddUnmarked(const Id* ids, int count, size_t size);
   void CollectFrontEdges();
   void AddFrontEdges(Id v);
   void Extend(Id v);
@@ -412,6 +413,8 @@ private:
   std::vector<Id> EdgeBlockers;
   std::vector<std::pair<Id, Id>> FrontEdges;
   bool FrontEdgesReady = false; // FrontEdges is collected when first needed
+  // The points of Near strictly on the far side of the edge expanded (Expand's candidates).
+  std::vector<Id> FarSide;
   std::vector<Id> Admissible;
   std::vector<uint8_t> AdmissibleTier; // 0: bends by at most half of constraint 1, else 1
 };
@@ -468,30 +471,47 @@ void Grower::CollectVertices(const Id* centers, int count)
     }
     this->MarkStamp = 1;
   }
-  this->Near.clear();
   this->Centers.assign(centers, centers + count);
-  // Interior points are skipped before their mark is read (most of a front vertex's neighbours
-  // lie behind the front, and the state is a byte per point): they are never marked, nor in Near.
-  auto add = [this](Id v) {
-    if (v >= 0 && !this->Mesh.IsInterior(v) && this->Scratch[v].Mark != this->MarkStamp)
-    {
-      this->Scratch[v].Mark = this->MarkStamp;
-      this->Near.push_back(v);
-      PrefetchPoint(this->X, v);
-    }
-  };
+  // Interior points are never marked, nor in Near.
+  this->Near.resize(static_cast<size_t>(count) * (this->K + 1));
+  size_t size = 0;
   for (int i = 0; i < count; ++i)
   {
-    add(centers[i]);
+    size = this->AddUnmarked(centers + i, 1, size);
   }
   for (int i = 0; i < count; ++i)
   {
-    const Id* nb = this->Neighbors(centers[i]);
-    for (int j = 0; j < this->K; ++j)
-    {
-      add(nb[j]);
-    }
+    size = this->AddUnmarked(this->Neighbors(centers[i]), this->K, size);
   }
+  this->Near.resize(size);
+  for (Id v : this->Near)
+  {
+    PrefetchPoint(this->X, v);
+  }
+}
+
+// Writes the ids of `ids` (-1 for none) that are not interior nor marked at Near[size], ...,
+// marking them, and returns the new size (Near must have room for `count` more). Branch-free:
+// whether an id is kept is unpredictable (about half of a front vertex's neighbours lie behind
+// the front, and the neighbourhoods of an edge's two ends overlap), so each id is written at the
+// end and the size grows by one when it is kept; a mark not set is written back unchanged.
+size_t Grower::AddUnmarked(const Id* ids, int count, size_t size)
+{
+  const uint32_t stamp = this->MarkStamp;
+  Id* near = this->Near.data();
+  for (int j = 0; j < count; ++j)
+  {
+    const Id v = ids[j];
+    const uint32_t valid = static_cast<uint32_t>(v >= 0);
+    const Id at = v & -static_cast<Id>(valid); // v, or 0 for none
+    uint32_t& mark = this->Scratch[at].Mark;
+    const uint32_t keep = valid & static_cast<uint32_t>(!this->Mesh.IsInterior(at)) &
+      static_cast<uint32_t>(mark != stamp);
+    mark ^= (mark ^ stamp) & (0u - keep); // stamp when kept, else unchanged
+    near[size] = v;
+    size += keep;
+  }
+  return size;
 }
 
 // The front edges at the front vertices of Near.
@@ -537,23 +557,21 @@ void Grower::Extend(Id v)
     return;
   }
   this->Centers.push_back(v);
-  const Id* nb = this->Neighbors(v);
-  for (int j = 0; j < this->K; ++j)
+  const size_t first = this->Near.size();
+  this->Near.resize(first + this->K);
+  this->Near.resize(this->AddUnmarked(this->Neighbors(v), this->K, first));
+  for (size_t i = first; i < this->Near.size(); ++i)
   {
-    const Id q = nb[j];
-    if (q < 0 || this->Mesh.IsInterior(q) || this->Scratch[q].Mark == this->MarkStamp)
-    {
-      continue;
-    }
-    this->Scratch[q].Mark = this->MarkStamp;
-    this->Near.push_back(q);
+    const Id q = this->Near[i];
     PrefetchPoint(this->X, q);
     this->Blockers.push_back(q);
     this->EdgeBlockers.push_back(q);
-    if (this->FrontEdgesReady)
-    {
-      this->AddFrontEdges(q);
-    }
+  }
+  // (The front edges of the points added, all marked now: each edge between two of them is
+  // listed once, as the out edge of its start.)
+  for (size_t i = first; this->FrontEdgesReady && i < this->Near.size(); ++i)
+  {
+    this->AddFrontEdges(this->Near[i]);
   }
 }
 
@@ -661,14 +679,22 @@ bool Grower::CrossesFront(Id x, Id y, Id z)
     }
     const double* ps = this->P2(s);
     const double* pe = this->P2(e);
+    const double xmin = std::min(ps[0], pe[0]), xmax = std::max(ps[0], pe[0]);
+    const double ymin = std::min(ps[1], pe[1]), ymax = std::max(ps[1], pe[1]);
     for (const auto& f : this->FrontEdges)
     {
-      if (f.first == s || f.first == e || f.second == s || f.second == e)
+      // A shared end, or boxes apart (SegmentsMeet's first test), combined without
+      // short-circuits: one unpredictable branch instead of several.
+      const double* pf = this->P2(f.first);
+      const double* qf = this->P2(f.second);
+      const bool apart = (f.first == s) | (f.first == e) | (f.second == s) | (f.second == e) |
+        (std::max(pf[0], qf[0]) < xmin) | (xmax < std::min(pf[0], qf[0])) |
+        (std::max(pf[1], qf[1]) < ymin) | (ymax < std::min(pf[1], qf[1]));
+      if (apart)
       {
         continue;
       }
-      if (SegmentsMeet(ps, pe, this->P2(f.first), this->P2(f.second)) &&
-        this->FacesFrame(f.first, f.second))
+      if (SegmentsMeet(ps, pe, pf, qf) && this->FacesFrame(f.first, f.second))
       {
         return true;
       }
@@ -700,19 +726,18 @@ bool Grower::Blocked(Id x, Id y, Id z, const std::vector<Id>& blockers)
   const double level = (this->Height(x) + this->Height(y) + this->Height(z)) / 3.0;
   const double reach = std::sqrt(std::max({ Distance2(this->P3(x), this->P3(y)),
     Distance2(this->P3(y), this->P3(z)), Distance2(this->P3(z), this->P3(x)) }));
+  // The tests of a point are combined without short-circuits (one branch each for the box and
+  // for the triangle: their outcomes are unpredictable).
   for (Id q : blockers)
   {
-    if (q == x || q == y || q == z)
-    {
-      continue;
-    }
     const double* p = this->P2(q);
-    if (p[0] < xmin || p[0] > xmax || p[1] < ymin || p[1] > ymax ||
-      std::fabs(this->Height(q) - level) > reach)
+    const bool away = (q == x) | (q == y) | (q == z) | (p[0] < xmin) | (p[0] > xmax) |
+      (p[1] < ymin) | (p[1] > ymax) | (std::fabs(this->Height(q) - level) > reach);
+    if (away)
     {
       continue;
     }
-    if (P::Orient2D(a, b, p) >= 0 && P::Orient2D(b, c, p) >= 0 && P::Orient2D(c, a, p) >= 0)
+    if ((P::Orient2D(a, b, p) >= 0) & (P::Orient2D(b, c, p) >= 0) & (P::Orient2D(c, a, p) >= 0))
     {
       return true;
     }
@@ -914,24 +939,31 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
   const double* b2 = this->P2(b);
   this->Admissible.clear();
   this->AdmissibleTier.clear();
-  this->Blockers.clear();
-  this->EdgeBlockers.clear();
+  // Blockers: Near less a, b and y; EdgeBlockers: those not strictly on the far side of a->b;
+  // FarSide: those strictly on it, the candidates. Filed without a branch on the side
+  // (unpredictable): each point is written at the end of both lists, one of which grows.
+  this->Blockers.resize(this->Near.size());
+  this->EdgeBlockers.resize(this->Near.size());
+  this->FarSide.resize(this->Near.size());
+  size_t blockers = 0, edgeBlockers = 0, farSide = 0;
   for (Id c : this->Near)
   {
     if (c == a || c == b || c == y)
     {
       continue;
     }
-    this->Blockers.push_back(c);
+    this->Blockers[blockers++] = c;
     const int side = P::Orient2D(a2, b2, this->P2(c));
-    if (side <= 0)
-    {
-      this->EdgeBlockers.push_back(c);
-    }
-    if (side >= 0)
-    {
-      continue;
-    }
+    this->EdgeBlockers[edgeBlockers] = c;
+    this->FarSide[farSide] = c;
+    edgeBlockers += static_cast<size_t>(side <= 0);
+    farSide += static_cast<size_t>(side < 0);
+  }
+  this->Blockers.resize(blockers);
+  this->EdgeBlockers.resize(edgeBlockers);
+  this->FarSide.resize(farSide);
+  for (Id c : this->FarSide)
+  {
     // Constraint 2 (an ear has no lower bound: it closes an angle of the front) and
     // constraint 3: the angles at a and b.
     double ac[3], bc[3];

@@ -231,15 +231,10 @@ inline int Orient2D(const double* a, const double* b, const double* c)
   const double det = detleft - detright;
   // Shewchuk's ccwerrboundA = (3 + 16 eps) eps.
   const double bound = 3.3306690738754716e-16 * (std::fabs(detleft) + std::fabs(detright));
-  if (det > bound)
-  {
-    return 1;
-  }
-  if (-det > bound)
-  {
-    return -1;
-  }
-  return Orient2DExact(a, b, c);
+  // The filtered sign without a branch on it (callers' signs are often unpredictable); the one
+  // branch left, to the exact determinant, is rarely taken.
+  const int sign = static_cast<int>(det > bound) - static_cast<int>(-det > bound);
+  return sign != 0 ? sign : Orient2DExact(a, b, c);
 }
 
 /// Sign of the incircle determinant (2D points; may be 0 for cocircular points).
@@ -261,15 +256,8 @@ inline int InCircle(const double* a, const double* b, const double* c, const dou
     (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
   // Shewchuk's iccerrboundA = (10 + 96 eps) eps.
   const double bound = 1.1102230246251577e-15 * permanent;
-  if (det > bound)
-  {
-    return 1;
-  }
-  if (-det > bound)
-  {
-    return -1;
-  }
-  return InCircleExact(a, b, c, d);
+  const int sign = static_cast<int>(det > bound) - static_cast<int>(-det > bound); // (Orient2D)
+  return sign != 0 ? sign : InCircleExact(a, b, c, d);
 }
 
 /// Insphere sign with symbolic perturbation: never 0 unless two of the points coincide or

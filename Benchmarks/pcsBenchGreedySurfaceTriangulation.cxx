@@ -1,10 +1,11 @@
 // vtkGreedySurfaceTriangulation against CGAL's Advancing Front Surface Reconstruction on the same
 // clouds (issue 7), one run per process (so that the peak memory is the method's own):
-//   pcsBenchGreedySurfaceTriangulation <ours|ours-step2|cgal> <input> [mesh.off]
+//   pcsBenchGreedySurfaceTriangulation <ours|ours-step2|log|cgal> <input> [mesh.off]
 // ours: the filter's defaults; ours-step2: BridgeIslands and FillHoles off (the well-sampled
-// regions after the umbrella test); cgal: CGAL::advancing_front_surface_reconstruction with its
-// defaults. Inputs: see pcsBenchInput.h (sphere:N, torus:N, sample:mesh.off:N, mesh.off,
-// cloud.xyz), optionally prefixed:
+// regions after the umbrella test); log: vtkLocalOptimumGrowth with its defaults (issue 7 asks
+// the greedy filter to be at least as good on clean surfaces); cgal:
+// CGAL::advancing_front_surface_reconstruction with its defaults. Inputs: see pcsBenchInput.h
+// (sphere:N, torus:N, sample:mesh.off:N, mesh.off, cloud.xyz), optionally prefixed:
 //   damaged:<input>   two regions removed and three thinned tenfold, as in the reconstruction
 //                     benchmark (run_reconstruction_benchmark.py, after paper 001 section 4):
 //                     five distinct random points of the cloud are the centres, R = 8 % of the
@@ -26,6 +27,7 @@
 #include "pcsBenchInput.h"
 
 #include "vtkGreedySurfaceTriangulation.h"
+#include "vtkLocalOptimumGrowth.h"
 #include "vtkReconstructionQuality.h"
 
 #include "vtkCellArray.h"
@@ -161,13 +163,27 @@ void Damage(std::vector<double>& xyz, unsigned seed)
   }
   xyz.swap(kept);
 }
+
+// The triangles of a filter's output, as point id triples.
+void AppendTriangles(vtkPolyData* output, std::vector<std::array<long, 3>>& triangles)
+{
+  auto iter = vtk::TakeSmartPointer(output->GetPolys()->NewIterator());
+  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    iter->GetCurrentCell(npts, pts);
+    triangles.push_back(
+      { static_cast<long>(pts[0]), static_cast<long>(pts[1]), static_cast<long>(pts[2]) });
+  }
+}
 } // namespace
 
 int main(int argc, char* argv[])
 {
   if (argc < 3)
   {
-    std::cerr << "usage: pcsBenchGreedySurfaceTriangulation <ours|ours-step2|cgal> "
+    std::cerr << "usage: pcsBenchGreedySurfaceTriangulation <ours|ours-step2|log|cgal> "
                  "[noisy:][damaged:]<sphere:N|torus:N|sample:mesh.off:N|mesh.off|cloud.xyz> "
                  "[mesh.off]"
               << std::endl;
@@ -305,15 +321,17 @@ int main(int argc, char* argv[])
       outPoints->GetPoint(i, p);
       meshXYZ.insert(meshXYZ.end(), p, p + 3);
     }
-    auto iter = vtk::TakeSmartPointer(greedy->GetOutput()->GetPolys()->NewIterator());
-    for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
-    {
-      vtkIdType npts;
-      const vtkIdType* pts;
-      iter->GetCurrentCell(npts, pts);
-      triangles.push_back(
-        { static_cast<long>(pts[0]), static_cast<long>(pts[1]), static_cast<long>(pts[2]) });
-    }
+    AppendTriangles(greedy->GetOutput(), triangles);
+  }
+  else if (method == "log")
+  {
+    vtkSmartPointer<vtkPolyData> cloud = MakeMesh(xyz, {});
+    vtkNew<vtkLocalOptimumGrowth> growth;
+    growth->SetInputData(cloud);
+    const auto start = Clock::now();
+    growth->Update();
+    seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    AppendTriangles(growth->GetOutput(), triangles);
   }
   else
   {

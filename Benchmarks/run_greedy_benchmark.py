@@ -2,7 +2,8 @@
 
 Each input is given to pcsBenchGreedySurfaceTriangulation once per method, each run in its own
 process, on the same cloud (the executable's damage and noise use fixed seeds): "ours" (the
-filter's defaults) and "cgal" (CGAL::advancing_front_surface_reconstruction, defaults). Inputs
+filter's defaults) and "cgal" (CGAL::advancing_front_surface_reconstruction, defaults); "log"
+(vtkLocalOptimumGrowth, defaults) when asked for with --methods. Inputs
 are the vertices of meshes of CGAL's demo data, clean, damaged (two regions removed, three
 thinned tenfold: the reconstruction benchmark's definition) and noisy (Gaussian noise of 1/4 of
 the mean spacing); the reference surface is the undamaged mesh.
@@ -21,6 +22,8 @@ Usage:
   /usr/bin/python3 Benchmarks/run_greedy_benchmark.py --bench-bin build/bin \
       --data <dir with meshes/*.off> [--seeds 7 8 9] [--markdown table.md] \
       meshes/bunny00.off meshes/armadillo.off ...
+  (inputs may also be sample:meshes/x.off:N, sphere:N, torus:N; greedy against
+  vtkLocalOptimumGrowth on clean clouds: --methods ours log --variants clean)
 """
 import argparse
 import datetime
@@ -40,6 +43,18 @@ def run(binary, method, spec, before=None):
                          env=env)
     line = [l for l in out.stdout.splitlines() if l.startswith("{")][-1]
     return json.loads(line)
+
+
+def resolve(rel, data):
+    """The executable's input spec and a label: mesh paths are looked up under --data, also
+    inside sample:<mesh.off>:N; sphere:N and torus:N are passed as they are."""
+    if rel.startswith(("sphere:", "torus:")):
+        return rel, rel
+    if rel.startswith("sample:"):
+        mesh, n = rel[len("sample:"):].rsplit(":", 1)
+        mesh = mesh if os.path.isabs(mesh) else os.path.join(data, mesh)
+        return "sample:%s:%s" % (mesh, n), "%s sample %s" % (os.path.basename(mesh), n)
+    return (rel if os.path.isabs(rel) else os.path.join(data, rel)), os.path.basename(rel)
 
 
 def main():
@@ -62,8 +77,7 @@ def main():
     print(header)
     failures = 0
     for rel in args.inputs:
-        path = rel if os.path.isabs(rel) else os.path.join(args.data, rel)
-        name = os.path.basename(rel)
+        path, name = resolve(rel, args.data)
         for variant in args.variants:
             seeds = [None] if variant == "clean" else args.seeds
             for seed in seeds:

@@ -2816,8 +2816,11 @@ void Reconstruction::OrientOutwards()
 //   (b, a, d) is flipped to c-d when the angles at c and d sum to more than 180 degrees (it is
 //   not locally Delaunay), unless c-d is an edge already or the flip would fold the patch.
 // - Fairing: the new vertices (only they move) minimise the sum over the vertices whose
-//   umbrella involves them of |U(v)|^2, U(v) = mean of the neighbours - v (uniform weights):
-//   the discrete thin-plate energy, solved by conjugate gradients on the normal equations.
+//   umbrella involves them of d(v)^2 |U(v)|^2 / A(v), U(v) = mean of the d(v) neighbours - v
+//   (uniform weights), A(v) a third of the area of v's triangles: the discrete thin-plate
+//   energy, the integral of the squared Laplacian (U(v) d(v) / A(v) estimates it whatever the
+//   edge lengths), solved by conjugate gradients on the normal equations, twice (the second
+//   pass with the areas of the first's shape).
 // The input points of the fill (rim and lost points) stay where they are. The triangles keep
 // their stage. Returns the coordinates of the new points (ids N, N + 1, ...).
 void Reconstruction::RefineAndFairFills(std::vector<int32_t>& triangles,
@@ -3258,6 +3261,37 @@ void Reconstruction::RefineAndFairFills(std::vector<int32_t>& triangles,
     }
   }
   std::vector<double> rowValue(static_cast<size_t>(total), 0.0);
+  // Row weights. The energy is the thin plate's, the integral of the squared Laplacian; the
+  // umbrella U(r) estimates the Laplacian times about the square of r's edge lengths, so the
+  // row of r is weighted by d(r)^2 / A(r) (d(r) neighbours, A(r) a third of the area of its
+  // triangles): sum of A(r) (d(r) U(r) / A(r))^2. Unweighted, the coarse fill (longer edges,
+  // larger umbrellas) was flattened against the finer mesh around it: an 8,000-point unit sphere
+  // with a cap of half-angle 20 degrees removed came back 0.8 to 1.5 mean spacings inside the
+  // sphere (10 random samples), 0.3 to 1.0 weighted.
+  std::vector<double> rowWeight(static_cast<size_t>(total), 0.0);
+  auto weighRows = [&]()
+  {
+    std::vector<double> area(static_cast<size_t>(total), 0.0);
+    for (size_t t = 0; t < triangleCount; ++t)
+    {
+      const int32_t* tri = &triangles[3 * t];
+      if (isRow[tri[0]] || isRow[tri[1]] || isRow[tri[2]])
+      {
+        double n[3];
+        normal(tri[0], tri[1], tri[2], n);
+        const double third = vtkMath::Norm(n) / 6.0;
+        for (int j = 0; j < 3; ++j)
+        {
+          area[tri[j]] += third;
+        }
+      }
+    }
+    for (int32_t r : rows)
+    {
+      const double d = static_cast<double>(start[r + 1] - start[r]);
+      rowWeight[r] = area[r] > 0.0 ? d * d / area[r] : 0.0;
+    }
+  };
   // y = A p (p on the new vertices, 0 elsewhere), per row.
   auto apply = [&](const std::vector<double>& p) {
     for (int32_t r : rows)
@@ -3272,7 +3306,7 @@ void Reconstruction::RefineAndFairFills(std::vector<int32_t>& triangles,
       rowValue[r] = s - (r >= this->N ? p[r - this->N] : 0.0);
     }
   };
-  // g = A^T y on the new vertices.
+  // g = A^T W y on the new vertices (W: the row weights).
   auto applyTranspose = [&](std::vector<double>& g) {
     for (int32_t u = this->N; u < total; ++u)
     {
@@ -3280,74 +3314,84 @@ void Reconstruction::RefineAndFairFills(std::vector<int32_t>& triangles,
       for (int64_t i = start[u]; i < start[u + 1]; ++i)
       {
         const int32_t r = adjacency[i];
-        s += rowValue[r] / static_cast<double>(start[r + 1] - start[r]);
+        s += rowWeight[r] * rowValue[r] / static_cast<double>(start[r + 1] - start[r]);
       }
-      g[u - this->N] = s - rowValue[u];
+      g[u - this->N] = s - rowWeight[u] * rowValue[u];
     }
   };
   std::vector<double> x(newCount), rhs(newCount), residual(newCount), direction(newCount),
     product(newCount);
   const int maxIterations = 2000;
-  for (int k = 0; k < 3; ++k)
+  // Two passes: the second reads its weights on the shape the first gives (where the fill
+  // bulges, its faired triangles are larger than the flat ones).
+  const int passes = 2;
+  double stop[3] = { 0.0, 0.0, 0.0 };
+  for (int pass = 0; pass < passes; ++pass)
   {
-    if (!this->Progress(begin + (end - begin) * (0.5 + k / 6.0)))
+    weighRows();
+    for (int k = 0; k < 3; ++k)
     {
-      return;
-    }
-    // Right-hand side -A^T U0, U0 the umbrellas of the current positions.
-    for (int32_t r : rows)
-    {
-      double s = 0.0;
-      for (int64_t i = start[r]; i < start[r + 1]; ++i)
+      if (!this->Progress(begin + (end - begin) * (0.5 + (pass * 3 + k) / (6.0 * passes))))
       {
-        s += point(adjacency[i])[k];
+        return;
       }
-      rowValue[r] = s / static_cast<double>(start[r + 1] - start[r]) - point(r)[k];
-    }
-    applyTranspose(rhs);
-    double rr = 0.0;
-    for (int32_t i = 0; i < newCount; ++i)
-    {
-      rhs[i] = -rhs[i];
-      x[i] = 0.0;
-      residual[i] = rhs[i];
-      direction[i] = rhs[i];
-      rr += rhs[i] * rhs[i];
-    }
-    const double stop = 1e-16 * rr;
-    for (int iteration = 0; iteration < maxIterations && rr > stop && rr > 0; ++iteration)
-    {
-      apply(direction);
-      applyTranspose(product);
-      double pAp = 0.0;
+      // Right-hand side -A^T W U0, U0 the umbrellas of the current positions.
+      for (int32_t r : rows)
+      {
+        double s = 0.0;
+        for (int64_t i = start[r]; i < start[r + 1]; ++i)
+        {
+          s += point(adjacency[i])[k];
+        }
+        rowValue[r] = s / static_cast<double>(start[r + 1] - start[r]) - point(r)[k];
+      }
+      applyTranspose(rhs);
+      double rr = 0.0;
       for (int32_t i = 0; i < newCount; ++i)
       {
-        pAp += direction[i] * product[i];
+        rhs[i] = -rhs[i];
+        x[i] = 0.0;
+        residual[i] = rhs[i];
+        direction[i] = rhs[i];
+        rr += rhs[i] * rhs[i];
       }
-      if (!(pAp > 0))
+      // The second pass starts from the first's solution: its tolerance is the first's (relative
+      // to the flat fill's residual), not relative to its own, already small, residual.
+      stop[k] = pass == 0 ? 1e-16 * rr : stop[k];
+      for (int iteration = 0; iteration < maxIterations && rr > stop[k] && rr > 0; ++iteration)
       {
-        break;
+        apply(direction);
+        applyTranspose(product);
+        double pAp = 0.0;
+        for (int32_t i = 0; i < newCount; ++i)
+        {
+          pAp += direction[i] * product[i];
+        }
+        if (!(pAp > 0))
+        {
+          break;
+        }
+        const double step = rr / pAp;
+        double next = 0.0;
+        for (int32_t i = 0; i < newCount; ++i)
+        {
+          x[i] += step * direction[i];
+          residual[i] -= step * product[i];
+          next += residual[i] * residual[i];
+        }
+        const double beta = next / rr;
+        rr = next;
+        for (int32_t i = 0; i < newCount; ++i)
+        {
+          direction[i] = residual[i] + beta * direction[i];
+        }
       }
-      const double step = rr / pAp;
-      double next = 0.0;
       for (int32_t i = 0; i < newCount; ++i)
       {
-        x[i] += step * direction[i];
-        residual[i] -= step * product[i];
-        next += residual[i] * residual[i];
-      }
-      const double beta = next / rr;
-      rr = next;
-      for (int32_t i = 0; i < newCount; ++i)
-      {
-        direction[i] = residual[i] + beta * direction[i];
-      }
-    }
-    for (int32_t i = 0; i < newCount; ++i)
-    {
-      if (std::isfinite(x[i]))
-      {
-        added[3 * static_cast<size_t>(i) + k] += x[i];
+        if (std::isfinite(x[i]))
+        {
+          added[3 * static_cast<size_t>(i) + k] += x[i];
+        }
       }
     }
   }

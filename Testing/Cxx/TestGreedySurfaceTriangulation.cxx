@@ -506,6 +506,44 @@ bool TestDamagedSphere()
   return true;
 }
 
+// A sphere with one cap removed (half-angle 20 degrees, about 17 mean spacings across, no point
+// left in it): the faired fill follows the sphere within half a mean spacing (the flat fill
+// lies up to the cap's sagitta, 1 - cos(20 deg) = 0.06, about 3 mean spacings, inside it). With
+// the umbrellas unweighted by the local area, the coarser fill was flattened against the finer
+// mesh around it: about 1 mean spacing inside the sphere.
+bool TestRemovedCap()
+{
+  for (unsigned seed : { 5u, 6u })
+  {
+    const std::vector<double> sphere = RandomSphere(8000, seed);
+    double axis[3] = { 0.3, 0.5, 0.8 };
+    vtkMath::Normalize(axis);
+    const double cosCap = std::cos(vtkMath::RadiansFromDegrees(20.0));
+    std::vector<double> xyz;
+    for (size_t i = 0; i < sphere.size(); i += 3)
+    {
+      if (vtkMath::Dot(&sphere[i], axis) <= cosCap)
+      {
+        xyz.insert(xyz.end(), &sphere[i], &sphere[i] + 3);
+      }
+    }
+    vtkNew<vtkGreedySurfaceTriangulation> greedy;
+    greedy->SetInputData(pcstest::MakeCloud(xyz));
+    greedy->Update();
+    vtkPolyData* mesh = greedy->GetOutput();
+    const Quality q = Measure(mesh);
+    PCS_CHECK(CheckClosed(q, 0, "removed cap"), "");
+    PCS_CHECK(greedy->GetNumberOfAddedPoints() > 0, "removed cap: points added on the cap");
+    const double distance = DistanceToUnitSphere(mesh, greedy->GetMeanSpacing());
+    std::cout << "removed cap, seed " << seed << ": " << greedy->GetNumberOfAddedPoints()
+              << " points added; farthest vertex or centroid " << distance
+              << " mean spacings from the sphere" << std::endl;
+    PCS_CHECK(distance <= 0.8,
+      "removed cap: a vertex or centroid " << distance << " mean spacings from the sphere");
+  }
+  return true;
+}
+
 bool TestBridgedIslands()
 {
   // Two halves of the unit square (z = 0) separated by an empty strip of width 0.06, about 6
@@ -811,6 +849,7 @@ int TestGreedySurfaceTriangulation(int, char*[])
   ok = TestMonotoneProgress() && ok;
   ok = TestTorus() && ok;
   ok = TestDamagedSphere() && ok;
+  ok = TestRemovedCap() && ok;
   ok = TestBridgedIslands() && ok;
   ok = TestOpenEnds() && ok;
   ok = TestWasher() && ok;

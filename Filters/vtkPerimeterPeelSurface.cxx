@@ -663,7 +663,8 @@ public:
   // A group that opens a handle is accepted only when c's largest exterior facet exceeds
   // handleThreshold or the group holds more than 8 cells. With keepTopology (rule 7 of the class
   // docs) the group goes on past a manifold state that opened a handle, and is accepted only when
-  // the topology is the same and it shows the outside no facet larger than c's largest.
+  // the topology is the same or a handle closed (the solid staying connected) and it shows the
+  // outside no facet larger than c's largest.
   bool Try(int64_t c, double threshold, double handleThreshold, bool keepTopology = false)
   {
     this->Group.clear();
@@ -730,7 +731,11 @@ public:
       }
       if (keepTopology)
       {
-        ok = change == 0 && !this->ShowsLargerFacet(startFacet);
+        // Rule 7: the topology kept, or a handle closed with the solid still in one piece (a
+        // bridge: e.g. a strip left between two punches through a web across a slot), never a
+        // handle opened; and no facet shown larger than the start facet.
+        ok = !this->ShowsLargerFacet(startFacet) &&
+          (change == 0 || (change > 0 && this->StaysConnected(true)));
       }
       else if (change < 0)
       {

@@ -213,14 +213,15 @@
  *
  * @warning
  * Measured against CGAL's advancing front on the same clouds (Benchmarks/run_cdt_benchmark.py
- * and CPU times, 2026-11-23, loaded 2-core machine; the README gives the tables). CPU time: with
- * the meshes' vertex normals 1.36-1.56 times faster than CGAL on the 10^5-point samples and the
- * vertex sets of bunny00, armadillo and refined_elephant, but 1.05 and 1.4 times slower on the
- * small irregular vertex sets of the camel and the elephant (the II.D projection tests of the
- * triangles made are most of the time; 1.7 and 1.5 times slower before the ray bound was made
- * local); with estimated normals 1.05-1.15 times faster on the former's 10^5-point samples, 1.25
- * and 1.8 times slower on the latter (1.4 and 2.4 before the orientation of the estimated normals
- * followed a spanning tree; results/cdt.md). Quality: 0 non-manifold edges and vertices and
+ * and CPU times, 2026-11-23/24, loaded 2-core machine; the README gives the tables). CPU time
+ * (2026-11-24, results/cdt.md): with the meshes' vertex normals 1.15-1.56 times faster than CGAL
+ * on the 10^5-point samples of bunny00, armadillo, camel, elephant, refined_elephant and the
+ * vertex sets of these (but the elephant's), fandisk_large, knot1 and diplodocus, 1.04 times
+ * slower on the small irregular vertex set of the elephant (2,775 points; the II.D projection
+ * tests of the triangles made are about half of the work); with estimated normals 1.14-1.39
+ * times faster on the same clouds but the camel's vertex set, 1.1 and 1.3 times slower on the
+ * vertex sets of the camel and the elephant (a front that refuses more candidates, and the
+ * normal estimation). Quality: 0 non-manifold edges and vertices and
  * coverage >= 99 % on every clean cloud; the Hausdorff distance exceeds 2 mean spacings on the
  * 10^5-point samples of the armadillo (2.04, a hole with edges of 7 spacings on a fold) and the
  * camel (2.36: a sharp tip of the mesh is 2.36 spacings from the nearest sample point, CGAL 2.38)

@@ -349,10 +349,13 @@ bool FindNearestNeighbors(const PointBins& bins,
       f[c] = bins.BucketCoordinate(p[c], c);
     }
     bool all = false;
+    // found[0, size) are the candidates; found is a buffer that only grows (resized ahead of each
+    // row of buckets), so that a candidate is written without a branch on whether it is kept.
+    size_t size = 0;
     for (int attempt = 0;; ++attempt)
     {
       all = attempt > 200;
-      found.clear();
+      size = 0;
       int lo[3], hi[3];
       bins.BucketRange(p, radius, lo, hi);
       const double r2 = radius * radius;
@@ -376,18 +379,37 @@ bool FindNearestNeighbors(const PointBins& bins,
             xhi = bins.BucketIndex(p[0] + margin, 0);
           }
           const int64_t row = divisions[0] * (by + static_cast<int64_t>(divisions[1]) * bz);
-          for (int32_t e = bucketStart[row + xlo]; e < bucketStart[row + xhi + 1]; ++e)
+          const int32_t first = bucketStart[row + xlo], last = bucketStart[row + xhi + 1];
+          if (found.size() < size + static_cast<size_t>(last - first))
+          {
+            found.resize(2 * (size + static_cast<size_t>(last - first)));
+          }
+          for (int32_t e = first; e < last; ++e)
           {
             const double d2 = Distance2(p, &entryXYZ[3 * static_cast<size_t>(e)]);
-            if (d2 <= r2 || all)
+            const int32_t copies = entryStart[e + 1] - entryStart[e];
+            if (copies == 1 && !all)
             {
-              inside += d2 <= r2 ? entryStart[e + 1] - entryStart[e] : 0;
+              // A single point (the usual entry): written, kept when inside and not p itself.
+              const int32_t id = members[entryStart[e]];
+              const bool in = d2 <= r2;
+              found[size] = { d2, id };
+              size += static_cast<size_t>(in & (id != i));
+              inside += static_cast<int64_t>(in);
+            }
+            else if (d2 <= r2 || all)
+            {
+              inside += d2 <= r2 ? copies : 0;
               int taken = 0;
               for (int32_t m = entryStart[e]; m < entryStart[e + 1] && taken < kk; ++m)
               {
                 if (members[m] != i)
                 {
-                  found.emplace_back(d2, members[m]);
+                  if (found.size() <= size)
+                  {
+                    found.resize(2 * size + 1);
+                  }
+                  found[size++] = { d2, members[m] };
                   ++taken;
                 }
               }
@@ -401,13 +423,13 @@ bool FindNearestNeighbors(const PointBins& bins,
       }
       radius *= inside > 1 ? std::min(2.0, 1.1 * std::sqrt((kk + 1.0) / inside)) : 2.0;
     }
-    const size_t keep = std::min<size_t>(kk, found.size());
-    if (!all && found.size() <= 32)
+    const size_t keep = std::min<size_t>(kk, size);
+    if (!all && size <= 32)
     {
       // The usual case (the carried radius holds about 1.2 k points): a short list is sorted
       // whole by insertion, cheaper than the partial sort. Same order: the entries (squared
       // distance, id) are distinct and, inside the ball, not NaN.
-      for (size_t j = 1; j < found.size(); ++j)
+      for (size_t j = 1; j < size; ++j)
       {
         const std::pair<double, int32_t> entry = found[j];
         size_t to = j;
@@ -420,9 +442,9 @@ bool FindNearestNeighbors(const PointBins& bins,
     }
     else
     {
-      if (keep < found.size())
+      if (keep < size)
       {
-        std::nth_element(found.begin(), found.begin() + keep, found.end());
+        std::nth_element(found.begin(), found.begin() + keep, found.begin() + size);
       }
       std::sort(found.begin(), found.begin() + keep);
     }

@@ -483,7 +483,10 @@ bool EstimateNormals(vtkStaticPointLocator* locator,
   const std::function<bool(double)>& progress,
   std::vector<double>* stretch,
   double scanLineShare,
-  double scanLineRadiusFactor)
+  double scanLineRadiusFactor,
+  double rowLinearity,
+  double rowRadiusFactor,
+  double rowShare)
 {
   normals.assign(3 * static_cast<size_t>(std::max(n, 0)), 0.0);
   variation.assign(static_cast<size_t>(std::max(n, 0)), 1.0);
@@ -505,7 +508,17 @@ bool EstimateNormals(vtkStaticPointLocator* locator,
   {
     stretch->clear();
   }
-  EstimatePlaneNormals(xyz, n, neighbors, others, normals, variation);
+  // The planes' neighbourhoods: the table, or a copy in which the points whose nearest lie along
+  // one curve have neighbours off it too (the table itself stays the caller's).
+  std::vector<int32_t> rowTable;
+  if (rowLinearity > 0.0)
+  {
+    rowTable = neighbors;
+    AddOffLineNeighbors(
+      locator, xyz, n, others, rowTable, nullptr, rowLinearity, rowRadiusFactor, rowShare);
+  }
+  EstimatePlaneNormals(
+    xyz, n, rowLinearity > 0.0 ? rowTable : neighbors, others, normals, variation);
   if (progress && !progress(0.9))
   {
     return false;

@@ -99,6 +99,15 @@ bool OrientNormals(const double* xyz,
 /// values). On lines 6 or more times denser along
 /// than across, the nearest points of a point lie on its own line and their plane, any plane
 /// through the line, is not the surface's; with the points of the lines beside it, it is.
+///
+/// With `rowLinearity` > 0, the planes (not the table, nor the orientation graph) are then
+/// fitted to a copy of the table in which the points whose max(2, k / 2) nearest spread along one
+/// curve get the off-line neighbours of AddOffLineNeighbors (`rowLinearity` its linearity,
+/// `rowRadiusFactor` its radiusFactor, `rowShare` its minimumShare): the rows of dense points with
+/// sparse gaps of irregular samplings (decimated meshes keep dense rows along details), which the
+/// scan-line rule leaves alone when they are short or bend too much for its linearity. A row
+/// that bends with the surface (a ring around a body or a leg) lies in a plane through the
+/// surface normal, so the plane of its points alone can be off by up to 90 degrees.
 bool EstimateNormals(vtkStaticPointLocator* locator,
   const double* xyz,
   int32_t n,
@@ -111,7 +120,10 @@ bool EstimateNormals(vtkStaticPointLocator* locator,
   const std::function<bool(double)>& progress = nullptr,
   std::vector<double>* stretch = nullptr,
   double scanLineShare = 0.5,
-  double scanLineRadiusFactor = 4.0);
+  double scanLineRadiusFactor = 4.0,
+  double rowLinearity = 0.0,
+  double rowRadiusFactor = 2.0,
+  double rowShare = 0.5);
 }
 
 #endif

@@ -96,6 +96,17 @@ constexpr double ScanLineShare = 0.9;
 // neighbour distance (pcs::AddOffLineNeighbors' radiusFactor): with the default 10 points, lines
 // up to about 36 spacings apart (4, its default, reaches 18: not the 20x scans).
 constexpr double ScanLineRadiusFactor = 8.0;
+// Rows of dense points with sparse gaps (pcs::EstimateNormals' rowLinearity, rowRadiusFactor
+// and rowShare): a point whose 4 nearest (of the 9 of the normal estimation) spread along one
+// curve, less than about 0.47 times as far across it as along it (linearity 0.15; the scan-line
+// rule's 0.05, about 0.24, misses the rows of decimated meshes that bend with the surface), and
+// so do at least half of its 9 nearest (a row, not a chance alignment of a random or noisy
+// sample), has its plane fitted with its nearest points off that curve on each side (searched
+// within twice the distance to its 9th nearest). Camel vertices: Hausdorff distance 2.80 ->
+// 1.55 mean spacings (Benchmarks/results/cdt.md, "Rows of dense points").
+constexpr double RowLinearity = 0.15;
+constexpr double RowRadiusFactor = 2.0;
+constexpr double RowShare = 0.5;
 
 // The squared distance between points a and b of `xyz` in the scan-line sampling's metric
 // (pcs::StretchedLength2; `stretch` 3 values per point).
@@ -2114,7 +2125,10 @@ int vtkCDTAdvancingFront::RequestData(
       },
       tableStretch,
       ScanLineShare,
-      ScanLineRadiusFactor);
+      ScanLineRadiusFactor,
+      RowLinearity,
+      RowRadiusFactor,
+      RowShare);
   };
   // Exact duplicates would fill a neighbourhood with copies of one point (a zero covariance):
   // with duplicates, the normals are estimated on the distinct points and copied to the others.

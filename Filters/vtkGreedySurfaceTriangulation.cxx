@@ -2819,8 +2819,8 @@ void Reconstruction::OrientOutwards()
 //   umbrella involves them of d(v)^2 |U(v)|^2 / A(v), U(v) = mean of the d(v) neighbours - v
 //   (uniform weights), A(v) a third of the area of v's triangles: the discrete thin-plate
 //   energy, the integral of the squared Laplacian (U(v) d(v) / A(v) estimates it whatever the
-//   edge lengths), solved by conjugate gradients on the normal equations, twice (the second
-//   pass with the areas of the first's shape).
+//   edge lengths), solved by conjugate gradients on the normal equations preconditioned by
+//   their diagonal, twice (the second pass with the areas of the first's shape).
 // The input points of the fill (rim and lost points) stay where they are. The triangles keep
 // their stage. Returns the coordinates of the new points (ids N, N + 1, ...).
 void Reconstruction::RefineAndFairFills(std::vector<int32_t>& triangles,
@@ -3320,7 +3320,7 @@ void Reconstruction::RefineAndFairFills(std::vector<int32_t>& triangles,
     }
   };
   std::vector<double> x(newCount), rhs(newCount), residual(newCount), direction(newCount),
-    product(newCount);
+    product(newCount), diagonal(newCount);
   const int maxIterations = 2000;
   // Two passes: the second reads its weights on the shape the first gives (where the fill
   // bulges, its faired triangles are larger than the flat ones).
@@ -3329,6 +3329,18 @@ void Reconstruction::RefineAndFairFills(std::vector<int32_t>& triangles,
   for (int pass = 0; pass < passes; ++pass)
   {
     weighRows();
+    // The diagonal of A^T W A: row u (entry -1) and the rows of u's neighbours (1 / d).
+    for (int32_t u = this->N; u < total; ++u)
+    {
+      double d = rowWeight[u];
+      for (int64_t i = start[u]; i < start[u + 1]; ++i)
+      {
+        const int32_t r = adjacency[i];
+        const double count = static_cast<double>(start[r + 1] - start[r]);
+        d += rowWeight[r] / (count * count);
+      }
+      diagonal[u - this->N] = d > 0.0 ? d : 1.0;
+    }
     for (int k = 0; k < 3; ++k)
     {
       if (!this->Progress(begin + (end - begin) * (0.5 + (pass * 3 + k) / (6.0 * passes))))
@@ -3346,19 +3358,22 @@ void Reconstruction::RefineAndFairFills(std::vector<int32_t>& triangles,
         rowValue[r] = s / static_cast<double>(start[r + 1] - start[r]) - point(r)[k];
       }
       applyTranspose(rhs);
-      double rr = 0.0;
+      // Conjugate gradients preconditioned by the diagonal of A^T W A (the row weights vary with
+      // the inverse square of the local edge length).
+      double rr = 0.0, rz = 0.0;
       for (int32_t i = 0; i < newCount; ++i)
       {
         rhs[i] = -rhs[i];
         x[i] = 0.0;
         residual[i] = rhs[i];
-        direction[i] = rhs[i];
+        direction[i] = rhs[i] / diagonal[i];
         rr += rhs[i] * rhs[i];
+        rz += rhs[i] * direction[i];
       }
       // The second pass starts from the first's solution: its tolerance is the first's (relative
       // to the flat fill's residual), not relative to its own, already small, residual.
       stop[k] = pass == 0 ? 1e-16 * rr : stop[k];
-      for (int iteration = 0; iteration < maxIterations && rr > stop[k] && rr > 0; ++iteration)
+      for (int iteration = 0; iteration < maxIterations && rr > stop[k] && rz > 0; ++iteration)
       {
         apply(direction);
         applyTranspose(product);
@@ -3371,19 +3386,21 @@ void Reconstruction::RefineAndFairFills(std::vector<int32_t>& triangles,
         {
           break;
         }
-        const double step = rr / pAp;
-        double next = 0.0;
+        const double step = rz / pAp;
+        double nextRz = 0.0;
+        rr = 0.0;
         for (int32_t i = 0; i < newCount; ++i)
         {
           x[i] += step * direction[i];
           residual[i] -= step * product[i];
-          next += residual[i] * residual[i];
+          rr += residual[i] * residual[i];
+          nextRz += residual[i] * residual[i] / diagonal[i];
         }
-        const double beta = next / rr;
-        rr = next;
+        const double beta = nextRz / rz;
+        rz = nextRz;
         for (int32_t i = 0; i < newCount; ++i)
         {
-          direction[i] = residual[i] + beta * direction[i];
+          direction[i] = residual[i] / diagonal[i] + beta * direction[i];
         }
       }
       for (int32_t i = 0; i < newCount; ++i)

@@ -2600,7 +2600,8 @@ int vtkCDTAdvancingFront::RequestData(
     {
       connectivity->SetValue(3 * t + i, inputId[v[i]]);
       used->SetValue(inputId[v[i]], 1);
-      hole = hole || mesh.GetEdgeValence(v[i], v[(i + 1) % 3]) == 1;
+      // (Its edge v[i] -> v[i + 1] has one triangle when the twin half-edge is unused.)
+      hole = hole || mesh.IsBoundaryHalfEdge(v[i], v[(i + 1) % 3]);
     }
     holeFilled->SetValue(t, front.Origin[slot] == 2 ? 1 : 0);
     holeTriangle->SetValue(t, hole ? 1 : 0);

@@ -400,15 +400,18 @@ bool FindNearestNeighbors(const PointBins& bins,
             else if (d2 <= r2 || all)
             {
               inside += d2 <= r2 ? copies : 0;
+              // Room for up to kk of the pile and one candidate per entry left in the row: the
+              // single points after it are written without a check.
+              const size_t need = size + static_cast<size_t>(kk) + static_cast<size_t>(last - e);
+              if (found.size() < need)
+              {
+                found.resize(2 * need);
+              }
               int taken = 0;
               for (int32_t m = entryStart[e]; m < entryStart[e + 1] && taken < kk; ++m)
               {
                 if (members[m] != i)
                 {
-                  if (found.size() <= size)
-                  {
-                    found.resize(2 * size + 1);
-                  }
                   found[size++] = { d2, members[m] };
                   ++taken;
                 }

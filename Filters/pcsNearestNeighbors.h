@@ -260,6 +260,14 @@ inline double StretchedLength2(const double w[3], const double* sa, const double
 /// zero.
 bool OnOneScanLine(const double* xyz, const double* stretch, int32_t a, int32_t b, int32_t c);
 
+/// OnOneScanLine without its first test (at least two of a, b, c have a non-zero stretch; the
+/// edge tests imply it), for a caller that made that test already, e.g. on flags of its own.
+bool EdgesAlongOneScanLine(const double* xyz,
+  const double* stretch,
+  int32_t a,
+  int32_t b,
+  int32_t c);
+
 /// Bin grid of `locator` (divisions set, Automatic off) for a sample of a surface: `n` points in
 /// the box `bounds`, about `binsPerPoint` bins per point over the box's volume (its area when
 /// flat, its length when straight). VTK's automatic grid aims at a few points per bin of the box,

@@ -492,21 +492,45 @@ bool EstimateNormals(vtkStaticPointLocator* locator,
   variation.assign(static_cast<size_t>(std::max(n, 0)), 1.0);
   k = 0;
   const int others = std::max(0, std::min<int>(sampleSize, n) - 1);
-  if (!FindNearestNeighbors(locator,
-        xyz,
-        n,
-        others,
-        neighbors,
-        [&](double fraction) { return !progress || progress(0.8 * fraction); }))
+  // One grid for the search and both off-line passes (their coordinates filed only when a row is
+  // extended).
+  PointBins bins;
+  if (n >= 2 && others >= 1)
+  {
+    bins.Build(locator, xyz, n, /*withCoordinates=*/false);
+  }
+  // Progress: the search 0-80 %, the scan lines 80-85 %, the rows 85-90 %, the orientation the
+  // rest.
+  auto progressIn = [&progress](double from, double to)
+  {
+    return [&progress, from, to](double fraction)
+    { return !progress || progress(from + (to - from) * fraction); };
+  };
+  if (!FindNearestNeighbors(bins, xyz, n, others, neighbors, progressIn(0.0, 0.8)))
   {
     return false;
   }
   k = others;
-  if (stretch &&
-    AddOffLineNeighbors(
-      locator, xyz, n, others, neighbors, stretch, 0.05, scanLineRadiusFactor, scanLineShare) <= 0)
+  if (stretch)
   {
-    stretch->clear();
+    const int32_t changed = AddOffLineNeighbors(bins,
+      xyz,
+      n,
+      others,
+      neighbors,
+      stretch,
+      0.05,
+      scanLineRadiusFactor,
+      scanLineShare,
+      progressIn(0.8, 0.85));
+    if (changed < 0)
+    {
+      return false;
+    }
+    if (changed == 0)
+    {
+      stretch->clear();
+    }
   }
   // The planes' neighbourhoods: the table, or a copy in which the points whose nearest lie along
   // one curve have neighbours off it too (the table itself stays the caller's).
@@ -514,8 +538,19 @@ bool EstimateNormals(vtkStaticPointLocator* locator,
   if (rowLinearity > 0.0)
   {
     rowTable = neighbors;
-    AddOffLineNeighbors(
-      locator, xyz, n, others, rowTable, nullptr, rowLinearity, rowRadiusFactor, rowShare);
+    if (AddOffLineNeighbors(bins,
+          xyz,
+          n,
+          others,
+          rowTable,
+          nullptr,
+          rowLinearity,
+          rowRadiusFactor,
+          rowShare,
+          progressIn(0.85, 0.9)) < 0)
+    {
+      return false;
+    }
   }
   EstimatePlaneNormals(
     xyz, n, rowLinearity > 0.0 ? rowTable : neighbors, others, normals, variation);

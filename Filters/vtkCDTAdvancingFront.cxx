@@ -1026,10 +1026,11 @@ bool Front::IsValid(Id e0, Id e1, Id third, Id opposite, const Parameters& param
 {
   this->RefusedForGood = true;
   if (this->Status[third] != Usable ||
-    // (pcs::OnOneScanLine's first test, on the flags: at least two of the points have a stretch.)
+    // (pcs::OnOneScanLine: its first test on the flags, at least two of the points have a
+    // stretch, then its edge tests.)
     (this->Stretch && parameters.RefuseOneLineTriangles &&
       this->Stretched[e0] + this->Stretched[e1] + this->Stretched[third] >= 2 &&
-      pcs::OnOneScanLine(this->XYZ, this->Stretch, e0, e1, third)))
+      pcs::EdgesAlongOneScanLine(this->XYZ, this->Stretch, e0, e1, third)))
   {
     return false;
   }

@@ -193,7 +193,7 @@ for seed in (1, 2):
     q = quality(stadium.GetOutput())
     print("stadium seed %d:" % seed, q)
     check(q["Genus"] == 1 and q["NumberOfBoundaryEdges"] == 0 and q["Coverage"] >= 0.99 and
-          q["NumberOfNonManifoldVertices"] == 0,
+          q["NumberOfNonManifoldEdges"] == 0 and q["NumberOfNonManifoldVertices"] == 0,
           "stadium seed %d: closed, manifold, genus 1, >= 99 %% of the points (%s)" % (seed, q))
 
 if len(sys.argv) > 1:

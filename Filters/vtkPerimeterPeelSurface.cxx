@@ -678,6 +678,11 @@ public:
     bool changeKnown = false;
     while (ok)
     {
+      if (keepTopology && this->FailsAtTop(grow, startFacet, threshold))
+      {
+        ok = false;
+        break;
+      }
       // The group stops at the first cell after which the boundary is a manifold again: a group
       // that went on (its links were once checked only when it doubled) could pinch the boundary
       // again and grow, largest facet first, along a torus's tube to the size bound instead of
@@ -1056,6 +1061,30 @@ private:
       }
     }
     return this->BadCount == 0;
+  }
+
+  // Under rule 7, whether the group must fail whatever its links (checked first: they are the
+  // cost of a try): the largest facet it shows (the top of `grow`, once the entries of cells
+  // already in the group are dropped) is larger than the start facet, and the cell behind it is
+  // a failed group's cell (the group fails on entering it, or stops at a manifold state showing
+  // that facet) or one it never enters (a facet under the threshold shown or a point left in no
+  // cell: while the group grows, a cell's exterior facets only grow and its vertices' cell counts
+  // only drop), so the facet stays shown. In the last case the group stops before growing on, and
+  // fewer cells are marked failed than if it had grown to its end.
+  bool FailsAtTop(std::priority_queue<std::pair<double, int64_t>>& grow,
+    double startFacet,
+    double threshold)
+  {
+    while (!grow.empty() && !this->Solid.IsInside(grow.top().second))
+    {
+      grow.pop();
+    }
+    if (grow.empty() || !(grow.top().first > startFacet))
+    {
+      return false;
+    }
+    const int64_t n = grow.top().second;
+    return this->Failed[n] || this->ShowsSmallFacet(n, threshold) || this->Solid.Orphans(n);
   }
 
   // Whether c shows the outside a facet whose measure is at most the threshold.

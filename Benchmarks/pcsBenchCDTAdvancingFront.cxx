@@ -23,6 +23,7 @@
 // line, "x y z nx ny nz" (the normals of ours-normals; an input for this benchmark and others).
 // CGAL is used here only: the library never links it.
 #include "pcsBenchInput.h"
+#include "pcsBenchTriangles.h"
 
 #include "vtkCDTAdvancingFront.h"
 #include "vtkReconstructionQuality.h"
@@ -232,15 +233,7 @@ int main(int argc, char* argv[])
     front->Update();
     seconds = std::chrono::duration<double>(Clock::now() - start).count();
     cpuSeconds = cpuNow() - cpuStart;
-    auto iter = vtk::TakeSmartPointer(front->GetOutput()->GetPolys()->NewIterator());
-    for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
-    {
-      vtkIdType npts;
-      const vtkIdType* pts;
-      iter->GetCurrentCell(npts, pts);
-      triangles.push_back(
-        { static_cast<long>(pts[0]), static_cast<long>(pts[1]), static_cast<long>(pts[2]) });
-    }
+    pcsbench::AppendTriangles(front->GetOutput(), triangles);
   }
   else
   {

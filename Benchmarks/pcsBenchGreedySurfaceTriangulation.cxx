@@ -25,6 +25,7 @@
 // With a third argument the mesh is written as OFF over all input points. CGAL is used here
 // only: the library never links it.
 #include "pcsBenchInput.h"
+#include "pcsBenchTriangles.h"
 
 #include "vtkGreedySurfaceTriangulation.h"
 #include "vtkLocalOptimumGrowth.h"
@@ -164,19 +165,6 @@ void Damage(std::vector<double>& xyz, unsigned seed)
   xyz.swap(kept);
 }
 
-// The triangles of a filter's output, as point id triples.
-void AppendTriangles(vtkPolyData* output, std::vector<std::array<long, 3>>& triangles)
-{
-  auto iter = vtk::TakeSmartPointer(output->GetPolys()->NewIterator());
-  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
-  {
-    vtkIdType npts;
-    const vtkIdType* pts;
-    iter->GetCurrentCell(npts, pts);
-    triangles.push_back(
-      { static_cast<long>(pts[0]), static_cast<long>(pts[1]), static_cast<long>(pts[2]) });
-  }
-}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -321,7 +309,7 @@ int main(int argc, char* argv[])
       outPoints->GetPoint(i, p);
       meshXYZ.insert(meshXYZ.end(), p, p + 3);
     }
-    AppendTriangles(greedy->GetOutput(), triangles);
+    pcsbench::AppendTriangles(greedy->GetOutput(), triangles);
   }
   else if (method == "log")
   {
@@ -331,7 +319,7 @@ int main(int argc, char* argv[])
     const auto start = Clock::now();
     growth->Update();
     seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    AppendTriangles(growth->GetOutput(), triangles);
+    pcsbench::AppendTriangles(growth->GetOutput(), triangles);
   }
   else
   {

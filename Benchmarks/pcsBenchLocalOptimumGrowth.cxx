@@ -13,6 +13,9 @@
 // and for ours the unused points, boundary edges and seeds. With a third argument the mesh is
 // written as OFF over all input points (vertex i is input point i). CGAL is used here only: the
 // library never links it.
+#include "pcsBenchInput.h"
+#include "pcsBenchTriangles.h"
+
 #include "vtkLocalOptimumGrowth.h"
 
 #include "vtkCellArray.h"
@@ -37,182 +40,6 @@
 #include <string>
 #include <vector>
 
-namespace
-{
-// Vertices (and, when asked, triangles) of an OFF file.
-bool ReadOff(
-  const std::string& path, std::vector<double>& xyz, std::vector<std::array<long, 3>>* tris)
-{
-  std::ifstream in(path);
-  std::string line;
-  if (!in || !std::getline(in, line) || line.compare(0, 3, "OFF") != 0)
-  {
-    return false;
-  }
-  long nv = -1, nf = 0, ne = 0;
-  while (nv < 0 && std::getline(in, line))
-  {
-    if (!line.empty() && line[0] != '#' && !(std::istringstream(line) >> nv >> nf >> ne))
-    {
-      nv = -1;
-    }
-  }
-  for (long i = 0; i < nv && std::getline(in, line);)
-  {
-    double p[3];
-    if (std::istringstream(line) >> p[0] >> p[1] >> p[2])
-    {
-      xyz.insert(xyz.end(), p, p + 3);
-      ++i;
-    }
-  }
-  for (long f = 0; tris && f < nf && std::getline(in, line);)
-  {
-    std::istringstream s(line);
-    long k;
-    std::vector<long> ids;
-    if (!(s >> k))
-    {
-      continue;
-    }
-    for (long j = 0, id; j < k && s >> id; ++j)
-    {
-      ids.push_back(id);
-    }
-    for (size_t j = 2; j < ids.size(); ++j) // fan of a polygon
-    {
-      tris->push_back({ ids[0], ids[j - 1], ids[j] });
-    }
-    ++f;
-  }
-  return nv > 0;
-}
-
-std::vector<double> LoadInput(const std::string& spec)
-{
-  std::vector<double> xyz;
-  std::mt19937_64 rng(20130720);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  if (spec.rfind("sphere:", 0) == 0)
-  {
-    const long n = std::stol(spec.substr(7));
-    std::normal_distribution<double> g(0.0, 1.0);
-    while (static_cast<long>(xyz.size()) < 3 * n)
-    {
-      const double p[3] = { g(rng), g(rng), g(rng) };
-      const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-      if (r > 0)
-      {
-        xyz.insert(xyz.end(), { p[0] / r, p[1] / r, p[2] / r });
-      }
-    }
-  }
-  else if (spec.rfind("torus:", 0) == 0)
-  {
-    const long n = std::stol(spec.substr(6));
-    const double big = 1.0, small = 0.35;
-    while (static_cast<long>(xyz.size()) < 3 * n)
-    {
-      const double a = 2 * M_PI * u(rng), b = 2 * M_PI * u(rng);
-      if (u(rng) * (big + small) <= big + small * std::cos(b))
-      {
-        xyz.insert(xyz.end(),
-          { (big + small * std::cos(b)) * std::cos(a), (big + small * std::cos(b)) * std::sin(a),
-            small * std::sin(b) });
-      }
-    }
-  }
-  else if (spec.rfind("sample:", 0) == 0)
-  {
-    const size_t colon = spec.rfind(':');
-    const std::string path = spec.substr(7, colon - 7);
-    const long n = std::stol(spec.substr(colon + 1));
-    std::vector<double> v;
-    std::vector<std::array<long, 3>> t;
-    if (!ReadOff(path, v, &t) || t.empty())
-    {
-      std::cerr << "cannot read the mesh " << path << std::endl;
-      std::exit(2);
-    }
-    std::vector<double> cumulative(t.size());
-    double total = 0.0;
-    for (size_t i = 0; i < t.size(); ++i)
-    {
-      const double* a = &v[3 * t[i][0]];
-      const double* b = &v[3 * t[i][1]];
-      const double* c = &v[3 * t[i][2]];
-      const double e1[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-      const double e2[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-      const double cr[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-        e1[0] * e2[1] - e1[1] * e2[0] };
-      total += 0.5 * std::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
-      cumulative[i] = total;
-    }
-    for (long k = 0; k < n; ++k)
-    {
-      const size_t i =
-        std::lower_bound(cumulative.begin(), cumulative.end(), u(rng) * total) - cumulative.begin();
-      double r1 = u(rng), r2 = u(rng);
-      if (r1 + r2 > 1.0)
-      {
-        r1 = 1.0 - r1;
-        r2 = 1.0 - r2;
-      }
-      const double* a = &v[3 * t[std::min(i, t.size() - 1)][0]];
-      const double* b = &v[3 * t[std::min(i, t.size() - 1)][1]];
-      const double* c = &v[3 * t[std::min(i, t.size() - 1)][2]];
-      for (int j = 0; j < 3; ++j)
-      {
-        xyz.push_back(a[j] + r1 * (b[j] - a[j]) + r2 * (c[j] - a[j]));
-      }
-    }
-  }
-  else if (spec.size() > 4 && spec.compare(spec.size() - 4, 4, ".off") == 0)
-  {
-    if (!ReadOff(spec, xyz, nullptr))
-    {
-      std::cerr << "cannot read " << spec << std::endl;
-      std::exit(2);
-    }
-  }
-  else
-  {
-    std::ifstream in(spec);
-    std::string line;
-    while (std::getline(in, line))
-    {
-      double p[3];
-      if (std::istringstream(line) >> p[0] >> p[1] >> p[2])
-      {
-        xyz.insert(xyz.end(), p, p + 3);
-      }
-    }
-  }
-  if (xyz.empty())
-  {
-    std::cerr << "no points in " << spec << std::endl;
-    std::exit(2);
-  }
-  return xyz;
-}
-
-// VmHWM (peak) or VmRSS (current) of this process, in megabytes.
-double StatusMegabytes(const char* field)
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  const std::string prefix = std::string(field) + ":";
-  while (std::getline(status, line))
-  {
-    if (line.compare(0, prefix.size(), prefix) == 0)
-    {
-      return std::stod(line.substr(prefix.size())) / 1024.0;
-    }
-  }
-  return 0.0;
-}
-} // namespace
-
 int main(int argc, char* argv[])
 {
   if (argc < 3)
@@ -223,7 +50,8 @@ int main(int argc, char* argv[])
     return 2;
   }
   const std::string method = argv[1], input = argv[2];
-  const std::vector<double> xyz = LoadInput(input);
+  // The cloud alone (its normals and reference surface are not used here).
+  const std::vector<double> xyz = std::move(pcsbench::LoadInput(input).XYZ);
   const long n = static_cast<long>(xyz.size() / 3);
   std::vector<std::array<long, 3>> triangles;
   std::string extra;
@@ -239,7 +67,7 @@ int main(int argc, char* argv[])
       points.emplace_back(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
     }
     std::vector<std::array<std::size_t, 3>> facets;
-    baseline = StatusMegabytes("VmRSS");
+    baseline = pcsbench::StatusMegabytes("VmRSS");
     const auto start = Clock::now();
     const std::clock_t cpuStart = std::clock();
     CGAL::advancing_front_surface_reconstruction(
@@ -265,21 +93,13 @@ int main(int argc, char* argv[])
     cloud->SetPoints(points);
     vtkNew<vtkLocalOptimumGrowth> growth;
     growth->SetInputData(cloud);
-    baseline = StatusMegabytes("VmRSS");
+    baseline = pcsbench::StatusMegabytes("VmRSS");
     const auto start = Clock::now();
     const std::clock_t cpuStart = std::clock();
     growth->Update();
     cpuSeconds = static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
     seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    auto iter = vtk::TakeSmartPointer(growth->GetOutput()->GetPolys()->NewIterator());
-    for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
-    {
-      vtkIdType npts;
-      const vtkIdType* pts;
-      iter->GetCurrentCell(npts, pts);
-      triangles.push_back(
-        { static_cast<long>(pts[0]), static_cast<long>(pts[1]), static_cast<long>(pts[2]) });
-    }
+    pcsbench::AppendTriangles(growth->GetOutput(), triangles);
     std::ostringstream s;
     s << ", \"unused\": " << growth->GetNumberOfUnusedPoints()
       << ", \"boundary_edges\": " << growth->GetNumberOfBoundaryEdges()
@@ -309,6 +129,6 @@ int main(int argc, char* argv[])
               "\"cpu_seconds\": %.4f, \"triangles\": %zu, \"peak_mb\": %.1f, "
               "\"baseline_mb\": %.1f%s}\n",
     method.c_str(), input.c_str(), n, seconds, cpuSeconds, triangles.size(),
-    StatusMegabytes("VmHWM"), baseline, extra.c_str());
+    pcsbench::StatusMegabytes("VmHWM"), baseline, extra.c_str());
   return 0;
 }

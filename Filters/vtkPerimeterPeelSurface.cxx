@@ -411,17 +411,21 @@ public:
       {
         continue;
       }
+      // Bit m: the neighbour across facet m comes before c (each tested once, not per edge).
+      int earlier = 0;
+      for (int m = 0; m < 4; ++m)
+      {
+        earlier |= before(this->DT.Neighbor(c, m), c) << m;
+      }
       for (int i = 0; i < 3; ++i)
       {
         const int32_t v = this->DT.Vertex(c, i);
         const double* a = this->XYZ + 3 * static_cast<int64_t>(v);
         for (int j = i + 1; j < 4; ++j)
         {
-          // The neighbours around edge (i, j): across the two facets that contain it.
-          const int others = 15 & ~(1 << i) & ~(1 << j);
-          const int first = others & 1 ? 0 : (others & 2 ? 1 : 2);
-          const int second = others & 8 ? 3 : (others & 4 ? 2 : 1);
-          if (before(this->DT.Neighbor(c, first), c) || before(this->DT.Neighbor(c, second), c))
+          // The neighbours around edge (i, j): across the two facets that contain it, the
+          // facets opposite the other two vertices.
+          if (earlier & ~(1 << i) & ~(1 << j))
           {
             continue;
           }

@@ -471,7 +471,7 @@ bool OrientNormals(const double* pts,
   return true;
 }
 
-bool EstimateNormals(vtkStaticPointLocator* locator,
+bool EstimateNormals(PointBins& bins,
   const double* xyz,
   int32_t n,
   int sampleSize,
@@ -492,13 +492,6 @@ bool EstimateNormals(vtkStaticPointLocator* locator,
   variation.assign(static_cast<size_t>(std::max(n, 0)), 1.0);
   k = 0;
   const int others = std::max(0, std::min<int>(sampleSize, n) - 1);
-  // One grid for the search and both off-line passes (their coordinates filed only when a row is
-  // extended).
-  PointBins bins;
-  if (n >= 2 && others >= 1)
-  {
-    bins.Build(locator, xyz, n, /*withCoordinates=*/false);
-  }
   // Progress: the search 0-80 %, the scan lines 80-85 %, the rows 85-90 %, the orientation the
   // rest.
   auto progressIn = [&progress](double from, double to)

@@ -8,10 +8,9 @@
 #include <functional>
 #include <vector>
 
-class vtkStaticPointLocator;
-
 namespace pcs
 {
+class PointBins;
 /// Eigenvalues (decreasing, in `values`) of the symmetric 3x3 matrix `a` and the unit
 /// eigenvector of the smallest (`vector`). Closed form: the eigenvalues from the characteristic
 /// cubic (trigonometric solution, on the matrix scaled to entries of at most 1), the eigenvector
@@ -83,7 +82,7 @@ bool OrientNormals(const double* xyz,
   std::vector<double>& normals,
   const std::function<bool(double)>& progress = nullptr);
 
-/// The whole estimation for the `n` points of `xyz` (`locator` built on exactly these points, in
+/// The whole estimation for the `n` points of `xyz` (`bins` filed from exactly these points, in
 /// this order): the table of the `sampleSize` - 1 nearest other points of each point
 /// (FindNearestNeighbors; the neighbourhood is the `sampleSize` nearest points including the
 /// point, as vtkPCANormalEstimation's SampleSize), the planes (EstimatePlaneNormals) and, with
@@ -108,7 +107,11 @@ bool OrientNormals(const double* xyz,
 /// scan-line rule leaves alone when they are short or bend too much for its linearity. A row
 /// that bends with the surface (a ring around a body or a leg) lies in a plane through the
 /// surface normal, so the plane of its points alone can be off by up to 90 degrees.
-bool EstimateNormals(vtkStaticPointLocator* locator,
+///
+/// `bins`: PointBins::Build on the same `xyz` and `n`, with or without coordinates (the off-line
+/// passes file them when they need them); one grid for the search, both off-line passes and the
+/// caller's own radius queries.
+bool EstimateNormals(PointBins& bins,
   const double* xyz,
   int32_t n,
   int sampleSize,

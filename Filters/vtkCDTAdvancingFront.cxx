@@ -2099,7 +2099,7 @@ int vtkCDTAdvancingFront::RequestData(
   bool scanLinesChecked = false;
   auto estimateNormalsOn = [&](const double* pts,
                              Id count,
-                             vtkStaticPointLocator* loc,
+                             pcs::PointBins& grid,
                              std::vector<double>& estimatedNormals,
                              std::vector<int32_t>& table,
                              int& tableOthers,
@@ -2110,7 +2110,7 @@ int vtkCDTAdvancingFront::RequestData(
     // its plane and its edges in the orientation graph.
     std::vector<double> variation;
     pcs::EstimateNormals(
-      loc,
+      grid,
       pts,
       count,
       this->NormalSampleSize,
@@ -2147,7 +2147,8 @@ int vtkCDTAdvancingFront::RequestData(
     }
     if (static_cast<Id>(distinct.size()) == local)
     {
-      estimateNormalsOn(xyz.data(), local, locator, estimatedNormals, knn, knnOthers, &stretch);
+      // The front's grid (the same locator's bins): one grid for both.
+      estimateNormalsOn(xyz.data(), local, bins, estimatedNormals, knn, knnOthers, &stretch);
       scanLinesChecked = knnOthers > 0;
       return;
     }
@@ -2166,13 +2167,16 @@ int vtkCDTAdvancingFront::RequestData(
     distinctCloud->SetPoints(distinctPoints);
     vtkNew<vtkStaticPointLocator> distinctLocator;
     BuildSurfaceLocator(distinctLocator, distinctCloud, distinctCount);
+    pcs::PointBins distinctBins;
+    distinctBins.Build(
+      distinctLocator, distinctXYZ.data(), distinctCount, /*withCoordinates=*/false);
     std::vector<double> distinctNormals;
     std::vector<int32_t> distinctTable; // not the table of all the points
     int distinctOthers = 0;
     std::vector<double> distinctStretch; // planes across scan lines; the stretch is found later
     estimateNormalsOn(distinctXYZ.data(),
       distinctCount,
-      distinctLocator,
+      distinctBins,
       distinctNormals,
       distinctTable,
       distinctOthers,

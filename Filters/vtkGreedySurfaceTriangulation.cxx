@@ -62,6 +62,12 @@ constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 // loop spans (twice a hemisphere bowl's), by a least-dihedral fill folding at most this much.
 constexpr double CapAreaRatio = 4.0;
 constexpr double MaximumCapDihedral = 150.0; // degrees
+// A natural border (IsNaturalBorder): a rim within this fraction of its diameter (rms) of its
+// plane, met by the surface at more than 60 degrees on average (mean |cos| below this).
+constexpr double NaturalBorderFlatness = 0.05;
+constexpr double NaturalBorderSteepness = 0.5;
+// Points of a ragged rim (lost points, noise) lie up to a few spacings beyond its plane.
+constexpr double NaturalBorderClearance = 3.0;
 // FillMeetsMesh searches the mesh vertices within a fill triangle's radius plus this many mean
 // spacings; the triangles with a longer edge are kept in a list and all tested.
 constexpr double LongEdgeSpacings = 4.0;
@@ -271,6 +277,7 @@ public:
   bool FillOpenLoop(const pcs::holes::HoleFiller& filler, const std::vector<int32_t>& loop,
     const double centre[3], double radius, double maximumDihedral, bool& byDihedral);
   void CapOpenEnds();
+  bool IsNaturalBorder(const std::vector<int32_t>& loop, const double centre[3], double radius);
   void Step7Swaps();
   void OrientOutwards();
   void RefineAndFairFills(std::vector<int32_t>& triangles, std::vector<uint8_t>& stages,
@@ -1909,7 +1916,7 @@ void Reconstruction::Step6FillHoles(double begin, double end)
     {
       radius = std::max(radius, Distance(centre, this->P(v)));
     }
-    if (2 * radius > diameterLimit * this->Spacing)
+    if (2 * radius > diameterLimit * this->Spacing || this->IsNaturalBorder(loop, centre, radius))
     {
       ++this->HolesLeftOpen;
       continue;
@@ -2662,7 +2669,8 @@ void Reconstruction::CapOpenEnds()
       vtkMath::Add(spanned, c, spanned);
     }
     if (2 * radius > diameterLimit ||
-      !(area[piece[loop[0]]] >= CapAreaRatio * 0.5 * vtkMath::Norm(spanned)))
+      !(area[piece[loop[0]]] >= CapAreaRatio * 0.5 * vtkMath::Norm(spanned)) ||
+      this->IsNaturalBorder(loop, centre, radius))
     {
       continue;
     }
@@ -2674,6 +2682,92 @@ void Reconstruction::CapOpenEnds()
       this->LoopsFilledByDihedral += byDihedral ? 1 : 0;
     }
   }
+}
+
+//------------------------------------------------------------------------------------------------
+// A loop is the natural border of an open scan (a cut: the neck of a head, the ends of a tube, the
+// mouth of a vase), not a hole to fill, when it is wider than MaximumBridgeLength spacings (a
+// narrower gap is a sampling gap, as for the small loops), its rim is planar (rms distance to its
+// least-squares plane at most NaturalBorderFlatness times its diameter), the surface meets that
+// plane steeply (the mean |cos| of the angle between the plane's normal and the tangent planes of
+// the rim points is below NaturalBorderSteepness: more than 60 degrees) and no input point lies
+// within half the rim's radius of its centre (samples inside the rim: a flat end whose points
+// step 2 lost) nor beyond the plane, more than NaturalBorderClearance spacings from it, within the
+// ball of the rim's radius tangent to the plane at the rim's centre on the side away from the
+// surface. A removed region of a curved surface leaves a rim the surface crosses at a shallow
+// angle (a sphere's cap of half-angle a: cos a; a cap of up to 60 degrees is still filled); a part
+// cut off from a body by a removed band (an ear, a capsule's half) faces the body across the gap.
+bool Reconstruction::IsNaturalBorder(const std::vector<int32_t>& loop,
+  const double centre[3],
+  double radius)
+{
+  pcs::holes::Plane plane;
+  if (loop.size() < 3 || 2.0 * radius <= this->Self->GetMaximumBridgeLength() * this->Spacing ||
+    !plane.Fit(this->X.data(), loop.data(), loop.size()))
+  {
+    return false;
+  }
+  double squares = 0.0;
+  for (int32_t v : loop)
+  {
+    const double d = plane.Distance(this->P(v));
+    squares += d * d;
+  }
+  if (std::sqrt(squares / loop.size()) > NaturalBorderFlatness * 2.0 * radius)
+  {
+    return false;
+  }
+  // The surface's tangent planes at the rim: each rim point's plane through its K nearest
+  // points (as pcs::EstimatePlaneNormals), not the mesh triangles on the loop, which can lie in
+  // the rim's plane (a fan of step 1 across the end ring of a scan-line cylinder).
+  double cosines = 0.0, side = 0.0;
+  for (int32_t v : loop)
+  {
+    const int32_t* row = &this->Neighbors[static_cast<size_t>(v) * this->K];
+    double covariance[3][3], values[3], normal[3];
+    if (pcs::OffsetCovariance(this->X.data(), this->P(v), row, this->K, true, covariance) < 3)
+    {
+      return false;
+    }
+    pcs::SmallestEigenvector(covariance, values, normal);
+    cosines += std::abs(vtkMath::Dot(normal, plane.N));
+    for (int j = 0; j < this->K && row[j] >= 0; ++j)
+    {
+      side += plane.Distance(this->P(row[j]));
+    }
+  }
+  if (!(cosines < NaturalBorderSteepness * loop.size()) || side == 0.0)
+  {
+    return false;
+  }
+  const double away = side > 0.0 ? -1.0 : 1.0;
+  double ball[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    ball[k] = centre[k] + away * radius * plane.N[k];
+  }
+  // Samples inside the rim (a flat end whose points step 2 lost) make it a hole to fill.
+  vtkNew<vtkIdList> near;
+  this->Locator->FindPointsWithinRadius(0.5 * radius, centre, near);
+  for (vtkIdType j = 0; j < near->GetNumberOfIds(); ++j)
+  {
+    const int32_t q = static_cast<int32_t>(near->GetId(j));
+    if (this->Status[q] != vtkGreedySurfaceTriangulation::NOT_TRIANGULATED)
+    {
+      return false;
+    }
+  }
+  this->Locator->FindPointsWithinRadius(radius, ball, near);
+  for (vtkIdType j = 0; j < near->GetNumberOfIds(); ++j)
+  {
+    const int32_t q = static_cast<int32_t>(near->GetId(j));
+    if (this->Status[q] != vtkGreedySurfaceTriangulation::NOT_TRIANGULATED &&
+      away * plane.Distance(this->P(q)) > NaturalBorderClearance * this->Spacing)
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------------------------

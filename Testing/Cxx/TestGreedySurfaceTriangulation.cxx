@@ -545,6 +545,47 @@ bool TestRemovedCap()
   return true;
 }
 
+// A tube of radius 1 and length 2 open at both ends, sampled in 41 rings of 125 points 0.05
+// apart (a scan's natural border, not a hole): its ends stay open, two boundary loops, one
+// manifold piece, every point used, no point added (no faired cap). Exact rings (step 6 capped
+// both ends before the natural border rule) and rings turned by half a step with noise of 0.1
+// spacings (CapOpenEnds capped them).
+bool TestOpenTube()
+{
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> noise(0.0, 0.005);
+  for (bool jittered : { false, true })
+  {
+    std::vector<double> xyz;
+    for (int ring = 0; ring <= 40; ++ring)
+    {
+      const double turn = jittered ? 0.5 * (ring % 2) : 0.0;
+      for (int k = 0; k < 125; ++k)
+      {
+        const double angle = 2.0 * vtkMath::Pi() * (k + turn) / 125.0;
+        const double p[3] = { std::cos(angle), std::sin(angle), -1.0 + 0.05 * ring };
+        for (double c : p)
+        {
+          xyz.push_back(c + (jittered ? noise(rng) : 0.0));
+        }
+      }
+    }
+    const std::string what = jittered ? "open tube, jittered rings" : "open tube, exact rings";
+    vtkNew<vtkGreedySurfaceTriangulation> greedy;
+    greedy->SetInputData(pcstest::MakeCloud(xyz));
+    greedy->Update();
+    const Quality q = Measure(greedy->GetOutput());
+    PCS_CHECK(q.Loops == 2, what << ": " << q.Loops << " boundary loops, expected 2");
+    PCS_CHECK(q.NonManifoldEdges == 0 && q.NonManifoldVertices == 0 && q.Components == 1,
+      what << ": non-manifold " << q.NonManifoldEdges << " edges, " << q.Components
+           << " components");
+    PCS_CHECK(greedy->GetNumberOfUnusedPoints() == 0 && greedy->GetNumberOfAddedPoints() == 0,
+      what << ": " << greedy->GetNumberOfUnusedPoints() << " unused, "
+           << greedy->GetNumberOfAddedPoints() << " added points");
+  }
+  return true;
+}
+
 bool TestBridgedIslands()
 {
   // Two halves of the unit square (z = 0) separated by an empty strip of width 0.06, about 6
@@ -851,6 +892,7 @@ int TestGreedySurfaceTriangulation(int, char*[])
   ok = TestTorus() && ok;
   ok = TestDamagedSphere() && ok;
   ok = TestRemovedCap() && ok;
+  ok = TestOpenTube() && ok;
   ok = TestBridgedIslands() && ok;
   ok = TestOpenEnds() && ok;
   ok = TestWasher() && ok;

@@ -2695,8 +2695,9 @@ void Reconstruction::CapOpenEnds()
 // step 2 lost) nor beyond the plane, more than NaturalBorderClearance spacings from it, within the
 // ball of the rim's radius tangent to the plane at the rim's centre on the side away from the
 // surface. A removed region of a curved surface leaves a rim the surface crosses at a shallow
-// angle (a sphere's cap of half-angle a: cos a; a cap of up to 60 degrees is still filled); a part
-// cut off from a body by a removed band (an ear, a capsule's half) faces the body across the gap.
+// angle (a sphere's cap of half-angle a: cos a; caps up to about 55 degrees are filled, one of 60
+// degrees is left open); a part cut off from a body by a removed band (an ear, a capsule's half)
+// faces the body across the gap.
 bool Reconstruction::IsNaturalBorder(const std::vector<int32_t>& loop,
   const double centre[3],
   double radius)

@@ -54,8 +54,7 @@ public:
     const int64_t cells = dt.GetNumberOfCells();
     this->Inside.assign(cells, 0);
     this->Bottleneck.assign(cells, std::numeric_limits<float>::infinity());
-    this->Count.assign(numberOfPoints, 0);
-    this->OutsideCount.assign(numberOfPoints, 0);
+    this->Star.assign(numberOfPoints, StarCounts());
     for (int64_t c = 0; c < cells; ++c)
     {
       const bool finite = !dt.IsInfinite(c);
@@ -65,7 +64,7 @@ public:
         const int32_t v = dt.Vertex(c, k);
         if (v >= 0)
         {
-          ++(finite ? this->Count : this->OutsideCount)[v];
+          ++(finite ? this->Star[v].Inside : this->Star[v].Outside);
         }
       }
     }
@@ -131,7 +130,10 @@ public:
   }
 
   // Whether vertex v is on the boundary of the solid (has inside and outside cells around it).
-  bool OnBoundary(int32_t v) const { return this->Count[v] > 0 && this->OutsideCount[v] > 0; }
+  bool OnBoundary(int32_t v) const
+  {
+    return this->Star[v].Inside > 0 && this->Star[v].Outside > 0;
+  }
 
   // Visit the cells around the edge of c joining its slots i and j (c first), walking across the
   // facets that contain the edge, until `visit(cell, cross)` returns true (then returns true);
@@ -369,7 +371,7 @@ public:
   {
     // For each point, the lengths of its `neighbors` shortest Delaunay edges (the nearest
     // neighbour graph is a subgraph of the Delaunay graph), kept sorted with the other end.
-    const int64_t points = static_cast<int64_t>(this->Count.size());
+    const int64_t points = static_cast<int64_t>(this->Star.size());
     const int k = neighbors;
     std::vector<double> length(
       static_cast<size_t>(points) * k, std::numeric_limits<double>::infinity());
@@ -569,7 +571,7 @@ public:
   {
     for (int k = 0; k < 4; ++k)
     {
-      if (this->Count[this->DT.Vertex(c, k)] <= 1)
+      if (this->Star[this->DT.Vertex(c, k)].Inside <= 1)
       {
         return true;
       }
@@ -613,8 +615,8 @@ public:
     for (int k = 0; k < 4; ++k)
     {
       const int32_t v = this->DT.Vertex(c, k);
-      this->Count[v] += inside ? 1 : -1;
-      this->OutsideCount[v] += inside ? -1 : 1;
+      this->Star[v].Inside += inside ? 1 : -1;
+      this->Star[v].Outside += inside ? -1 : 1;
     }
   }
 
@@ -627,8 +629,14 @@ public:
   // for the infinite cells (the hull) and the inside ones. Single precision: it feeds a factor-1.5
   // test (rule 2 of the class docs).
   std::vector<float> Bottleneck;
-  std::vector<int32_t> Count;        // inside cells around each vertex
-  std::vector<int32_t> OutsideCount; // outside cells (removed or infinite) around each vertex
+  // The cells around each vertex, inside and outside (removed or infinite), side by side: the
+  // tests read both or one right before updating both.
+  struct StarCounts
+  {
+    int32_t Inside = 0;
+    int32_t Outside = 0;
+  };
+  std::vector<StarCounts> Star;
   std::vector<double> Spacing;       // local spacing of each point (relative measures only)
 };
 
@@ -654,8 +662,8 @@ public:
   {
     this->Stamp.assign(this->DT.GetNumberOfCells(), 0);
     this->Failed.assign(this->DT.GetNumberOfCells(), 0);
-    this->Bad.assign(solid.Count.size(), 0);
-    this->Dirty.assign(solid.Count.size(), 0);
+    this->Bad.assign(solid.Star.size(), 0);
+    this->Dirty.assign(solid.Star.size(), 0);
   }
 
   // Forget the failed groups (a new threshold).
@@ -921,8 +929,8 @@ public:
         ++end;
       }
       const int32_t moved = static_cast<int32_t>(end - i);
-      const int32_t insideAfter = this->Solid.Count[v] + (inside ? -moved : moved);
-      const int32_t outsideAfter = this->Solid.OutsideCount[v] + (inside ? moved : -moved);
+      const int32_t insideAfter = this->Solid.Star[v].Inside + (inside ? -moved : moved);
+      const int32_t outsideAfter = this->Solid.Star[v].Outside + (inside ? moved : -moved);
       const bool after = insideAfter > 0 && outsideAfter > 0;
       effect.VertexLeaves = effect.VertexLeaves || !after;
       effect.EulerChange += (after ? 1 : 0) - (this->Solid.OnBoundary(v) ? 1 : 0);
@@ -1113,7 +1121,7 @@ private:
     for (int k = 0; k < 4; ++k)
     {
       const int32_t v = this->DT.Vertex(c, k);
-      if (this->Solid.Count[v] == 0)
+      if (this->Solid.Star[v].Inside == 0)
       {
         return false;
       }
@@ -1144,8 +1152,8 @@ private:
   // (v, w) the state changes at most twice (at most two boundary triangles on the edge).
   bool ManifoldAt(int32_t v, int64_t start)
   {
-    const int32_t insideCells = this->Solid.Count[v];
-    const int32_t outsideCells = this->Solid.OutsideCount[v];
+    const int32_t insideCells = this->Solid.Star[v].Inside;
+    const int32_t outsideCells = this->Solid.Star[v].Outside;
     if (insideCells == 0 || outsideCells == 0)
     {
       return true; // v inside the solid (or in no cell: checked by the caller)
@@ -1326,10 +1334,11 @@ private:
   };
 
   // Queue every fold, sorted by its end points' ids (a spatial order: the ids follow the
-  // insertion order). Each exterior facet finds the boundary triangle on each of its edges by a
-  // walk through the inside cells around the edge; an edge is taken from the facet that comes
-  // last (cell, then slot), whose cell is the edge's reference (where the walks of ListMoves
-  // start, which orders the moves tried).
+  // insertion order). Each boundary edge is walked once, from the exterior facet in which it runs
+  // from its smaller end point id to the larger (the boundary is oriented: its other facet has it
+  // the other way): a walk through the inside cells around the edge finds that other facet. The
+  // edge's reference (where the walks of ListMoves start, which orders the moves tried) is the
+  // cell of the facet that comes last (cell, then slot), the edge's slots in it increasing.
   void QueueAllFolds()
   {
     struct Fold
@@ -1347,34 +1356,53 @@ private:
         {
           continue;
         }
+        // The slots of the facet's triangle in the order of PeelSolid::FacetTriangle.
+        int slot[3];
+        for (int k = 0, m = 0; k < 4; ++k)
+        {
+          if (k != j)
+          {
+            slot[m++] = k;
+          }
+        }
+        if (j % 2 == 0)
+        {
+          std::swap(slot[1], slot[2]);
+        }
         std::array<double, 3> normal;
         bool measured = false;
-        for (int a = 0; a < 4; ++a)
+        for (int e = 0; e < 3; ++e)
         {
-          for (int b = a + 1; b < 4; ++b)
+          const int a = slot[e], b = slot[(e + 1) % 3];
+          const int32_t v = this->DT.Vertex(c, a), w = this->DT.Vertex(c, b);
+          if (v > w)
           {
-            if (a == j || b == j)
-            {
-              continue;
-            }
-            const std::pair<int64_t, int> other =
-              this->Solid.NextBoundaryFacet(c, j, 6 - a - b - j);
-            if (other.first > c || (other.first == c && other.second > j))
-            {
-              continue; // taken from the other facet
-            }
-            if (!measured)
-            {
-              normal = this->Solid.FacetNormal(c, j);
-              measured = true;
-            }
-            const std::array<double, 3> n = this->Solid.FacetNormal(other.first, other.second);
-            if (normal[0] * n[0] + normal[1] * n[1] + normal[2] * n[2] < 0.0)
-            {
-              const int32_t v = this->DT.Vertex(c, a), w = this->DT.Vertex(c, b);
-              folds.push_back({ std::min(v, w), std::max(v, w), { c, a, b } });
-            }
+            continue; // walked from the other facet
           }
+          const std::pair<int64_t, int> other = this->Solid.NextBoundaryFacet(c, j, 6 - a - b - j);
+          if (!measured)
+          {
+            normal = this->Solid.FacetNormal(c, j);
+            measured = true;
+          }
+          const std::array<double, 3> n = this->Solid.FacetNormal(other.first, other.second);
+          if (!(normal[0] * n[0] + normal[1] * n[1] + normal[2] * n[2] < 0.0))
+          {
+            continue;
+          }
+          EdgeRef ref{ c, std::min(a, b), std::max(a, b) };
+          if (other.first > c || (other.first == c && other.second > j))
+          {
+            int sv = 0, sw = 0;
+            for (int k = 0; k < 4; ++k)
+            {
+              const int32_t u = this->DT.Vertex(other.first, k);
+              sv = u == v ? k : sv;
+              sw = u == w ? k : sw;
+            }
+            ref = { other.first, std::min(sv, sw), std::max(sv, sw) };
+          }
+          folds.push_back({ v, w, ref });
         }
       }
     }

@@ -296,6 +296,15 @@ private:
   bool IsHole(const std::vector<int32_t>& vertices) const;
   void ComputeComponents();
   std::vector<int32_t> VertexPieces() const;
+  void ClearPinches(std::vector<int32_t>& pending);
+  void SheetNormal(int32_t v, int64_t t0, int64_t t1, double normal[3]) const;
+  void RemoveHandleStrips();
+  bool ConnectedAroundEdge(int32_t u,
+    int32_t v,
+    int64_t t0,
+    int64_t t1,
+    std::vector<uint32_t>& seen,
+    uint32_t& stamp) const;
 };
 
 //------------------------------------------------------------------------------------------------
@@ -1067,32 +1076,8 @@ void Reconstruction::Step2Umbrella(double begin, double end)
       pending.push_back(v);
     }
   }
-  std::vector<int64_t> around;
-  while (!pending.empty())
-  {
-    const int32_t v = pending.back();
-    pending.pop_back();
-    if (this->Mesh.GetNumberOfFans(v) <= 1)
-    {
-      continue;
-    }
-    rejected[v] = 1;
-    around.resize(std::max(this->Mesh.GetVertexDegree(v), 1));
-    const int count = this->Mesh.GetVertexTriangles(v, around.data(), static_cast<int>(around.size()));
-    for (int i = 0; i < count; ++i)
-    {
-      const int32_t* tri = this->Mesh.GetTriangle(around[i]);
-      const int32_t others[3] = { tri[0], tri[1], tri[2] };
-      this->Mesh.RemoveTriangle(around[i]);
-      for (int32_t x : others)
-      {
-        if (x != v && this->Mesh.GetNumberOfFans(x) > 1)
-        {
-          pending.push_back(x);
-        }
-      }
-    }
-  }
+  this->ClearPinches(pending);
+  this->RemoveHandleStrips();
   this->Stage.assign(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 1);
 
   this->Status.assign(this->N, vtkGreedySurfaceTriangulation::LOST);
@@ -1157,6 +1142,213 @@ void Reconstruction::Step2Umbrella(double begin, double end)
       }
     }
     this->ComputeComponents();
+  }
+}
+
+// The vertices of `pending` with several fans lose their triangles, and so do the vertices
+// left with several fans by that, until none.
+void Reconstruction::ClearPinches(std::vector<int32_t>& pending)
+{
+  std::vector<int64_t> around;
+  while (!pending.empty())
+  {
+    const int32_t v = pending.back();
+    pending.pop_back();
+    if (this->Mesh.GetNumberOfFans(v) <= 1)
+    {
+      continue;
+    }
+    around.resize(std::max(this->Mesh.GetVertexDegree(v), 1));
+    const int count =
+      this->Mesh.GetVertexTriangles(v, around.data(), static_cast<int>(around.size()));
+    for (int i = 0; i < count; ++i)
+    {
+      const int32_t* tri = this->Mesh.GetTriangle(around[i]);
+      const int32_t others[3] = { tri[0], tri[1], tri[2] };
+      this->Mesh.RemoveTriangle(around[i]);
+      for (int32_t x : others)
+      {
+        if (x != v && this->Mesh.GetNumberOfFans(x) > 1)
+        {
+          pending.push_back(x);
+        }
+      }
+    }
+  }
+}
+
+// The unit normal of the triangles at v other than t0 and t1, summed weighted by their areas
+// (zero when there are none).
+void Reconstruction::SheetNormal(int32_t v, int64_t t0, int64_t t1, double normal[3]) const
+{
+  normal[0] = normal[1] = normal[2] = 0.0;
+  constexpr int Capacity = 64;
+  int64_t around[Capacity];
+  const int count = this->Mesh.GetVertexTriangles(v, around, Capacity);
+  for (int i = 0; i < std::min(count, Capacity); ++i)
+  {
+    if (around[i] == t0 || around[i] == t1)
+    {
+      continue;
+    }
+    const int32_t* tri = this->Mesh.GetTriangle(around[i]);
+    double a[3], b[3], n[3];
+    vtkMath::Subtract(this->P(tri[1]), this->P(tri[0]), a);
+    vtkMath::Subtract(this->P(tri[2]), this->P(tri[0]), b);
+    vtkMath::Cross(a, b, n);
+    vtkMath::Add(normal, n, normal);
+  }
+  vtkMath::Normalize(normal);
+}
+
+// Whether the triangles t0 and t1 on the two sides of the edge uv stay connected through their
+// edges when uv is cut. Breadth-first from both sides in turn, so that a cut that separates a
+// small piece costs the size of that piece. `seen` (per triangle id) holds marks above `stamp`
+// for the two sides, and `stamp` is advanced past them.
+bool Reconstruction::ConnectedAroundEdge(int32_t u,
+  int32_t v,
+  int64_t t0,
+  int64_t t1,
+  std::vector<uint32_t>& seen,
+  uint32_t& stamp) const
+{
+  if (seen.size() < static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()))
+  {
+    seen.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 0);
+  }
+  if (stamp > std::numeric_limits<uint32_t>::max() - 3)
+  {
+    std::fill(seen.begin(), seen.end(), 0);
+    stamp = 0;
+  }
+  const uint32_t side[2] = { stamp + 1, stamp + 2 };
+  stamp += 2;
+  std::vector<int64_t> queue[2] = { { t0 }, { t1 } };
+  size_t head[2] = { 0, 0 };
+  seen[t0] = side[0];
+  seen[t1] = side[1];
+  for (int s = 0; head[0] < queue[0].size() && head[1] < queue[1].size(); s = 1 - s)
+  {
+    const int32_t* tri = this->Mesh.GetTriangle(queue[s][head[s]++]);
+    for (int e = 0; e < 3; ++e)
+    {
+      const int32_t x = tri[e], y = tri[(e + 1) % 3];
+      const int64_t next = this->Mesh.FindTriangle(y, x);
+      if (next < 0 || (x == u && y == v) || (x == v && y == u) || seen[next] == side[s])
+      {
+        continue;
+      }
+      if (seen[next] == side[1 - s])
+      {
+        return true;
+      }
+      seen[next] = side[s];
+      queue[s].push_back(next);
+    }
+  }
+  return false;
+}
+
+// Issue 7 (clean surfaces): step 1 may join the open borders of two sheets that face each other
+// across a narrow gap (about 2 spacings: on CGAL's elephant, the two ends of a bent part) by
+// a strip of triangles whose end points all lie on the borders; every fan turns onto the strip by
+// less than the umbrella test's bound, so step 2 keeps it, and it makes a handle: the true
+// surface joins the two sheets elsewhere. Such a strip is found by its chord: an edge of two
+// triangles whose end points u and v are boundary points of one boundary loop, such that
+// - the two triangles stay connected through their edges when the chord is cut: the cut splits
+//   the loop without splitting the piece, so the piece's genus drops by one (on a piece of genus
+//   0 every such chord separates it: nothing is removed there), and
+// - the chord leaves the surface at both ends: it makes more than 30 degrees with the tangent
+//   planes of u and of v, each the plane of the point's triangles other than the two at the chord
+//   (their area-weighted normal); an edge of a sampled surface lies in its tangent planes up to
+//   the curvature over a spacing.
+// The two triangles at such a chord are removed (and the triangles of the vertices left with two
+// fans, ClearPinches), one chord at a time, the conditions checked again on the current mesh.
+// Their points become lost points for the later steps. A true handle is cut this way only when
+// step 2 left a hole across it and a chord there leaves the surface at both ends: the inner rim
+// of a plate with a through-hole, about 2 spacings thick, crossed by a single strip.
+void Reconstruction::RemoveHandleStrips()
+{
+  // Candidates: the chords u -> v (u < v) between boundary points that leave the surface at both
+  // ends.
+  const double steep = std::sin(vtkMath::RadiansFromDegrees(30.0));
+  std::vector<std::array<int32_t, 2>> candidates;
+  for (int32_t u = 0; u < this->N; ++u)
+  {
+    if (this->Mesh.GetVertexState(u) != pcs::SurfaceMesh::VertexState::Boundary)
+    {
+      continue;
+    }
+    constexpr int Capacity = 64;
+    int64_t around[Capacity];
+    const int count = std::min(this->Mesh.GetVertexTriangles(u, around, Capacity), Capacity);
+    for (int i = 0; i < count; ++i)
+    {
+      const int32_t* tri = this->Mesh.GetTriangle(around[i]);
+      const int j = tri[0] == u ? 0 : (tri[1] == u ? 1 : 2);
+      const int32_t v = tri[(j + 1) % 3];
+      if (v < u || this->Mesh.GetVertexState(v) != pcs::SurfaceMesh::VertexState::Boundary ||
+        this->Mesh.IsBoundaryHalfEdge(u, v))
+      {
+        continue;
+      }
+      const int64_t t1 = this->Mesh.FindTriangle(v, u);
+      double chord[3], nu[3], nv[3];
+      vtkMath::Subtract(this->P(v), this->P(u), chord);
+      vtkMath::Normalize(chord);
+      this->SheetNormal(u, around[i], t1, nu);
+      this->SheetNormal(v, around[i], t1, nv);
+      if (std::abs(vtkMath::Dot(nu, chord)) > steep && std::abs(vtkMath::Dot(nv, chord)) > steep)
+      {
+        candidates.push_back({ u, v });
+      }
+    }
+  }
+  std::vector<uint32_t> seen;
+  uint32_t stamp = 0;
+  std::vector<int32_t> pending;
+  for (const auto& candidate : candidates)
+  {
+    const int32_t u = candidate[0], v = candidate[1];
+    const int64_t t0 = this->Mesh.FindTriangle(u, v), t1 = this->Mesh.FindTriangle(v, u);
+    if (t0 < 0 || t1 < 0 || this->Mesh.GetNumberOfFans(u) != 1 ||
+      this->Mesh.GetNumberOfFans(v) != 1 ||
+      this->Mesh.GetVertexState(u) != pcs::SurfaceMesh::VertexState::Boundary ||
+      this->Mesh.GetVertexState(v) != pcs::SurfaceMesh::VertexState::Boundary)
+    {
+      continue; // changed by an earlier removal
+    }
+    // u and v on one loop?
+    int32_t a = u, b = -1;
+    this->Mesh.GetBoundaryOutVertices(u, &b, 1);
+    while (b != u && b != v && b >= 0)
+    {
+      const int32_t next = this->Mesh.NextBoundaryVertex(a, b);
+      a = b;
+      b = next;
+    }
+    if (b != v)
+    {
+      continue;
+    }
+    if (!this->ConnectedAroundEdge(u, v, t0, t1, seen, stamp))
+    {
+      continue;
+    }
+    for (int64_t t : { t0, t1 })
+    {
+      const int32_t* tri = this->Mesh.GetTriangle(t);
+      const int32_t corners[3] = { tri[0], tri[1], tri[2] };
+      this->Mesh.RemoveTriangle(t);
+      for (int32_t x : corners)
+      {
+        if (this->Mesh.GetNumberOfFans(x) > 1)
+        {
+          pending.push_back(x);
+        }
+      }
+    }
+    this->ClearPinches(pending);
   }
 }
 

@@ -68,7 +68,19 @@
  *   remaining point passes. Connected regions of fewer than MinimumIslandTriangles triangles
  *   (but the largest) are dissolved: their points become lost points. The remaining triangles
  *   are oriented consistently (pcs::SurfaceMesh, the topology shared with the other growing
- *   filters) and their boundary loops extracted. The boundary vector of a boundary point points
+ *   filters) and their boundary loops extracted.
+ *   Strips that make a handle (ours, issue 7): step 1 may join the open borders of two sheets that
+ *   face each other across a narrow gap (on CGAL's elephant, about 2 spacings) by a strip of
+ *   triangles that passes the umbrella test: a fourth handle on a genus-3 surface. Before the loops
+ *   are extracted, an edge of two triangles whose end points are boundary points of one loop is a
+ *   handle's chord when its two triangles stay connected through their edges once it is cut (the
+ *   piece's genus drops: on a genus-0 piece no such edge exists) and it makes more than 30 degrees
+ *   with the tangent planes of both end points (each the area-weighted normal of the point's other
+ *   triangles; an edge of a sampled surface lies in them up to the curvature over a spacing): its
+ *   two triangles are removed and the later steps treat their points. A true handle is cut this way
+ *   only where step 2 left a hole across it and an edge there leaves the surface at both ends (the
+ *   inner rim of a plate about 2 spacings thick with a through-hole, crossed by a single strip).
+ *   The boundary vector of a boundary point points
  *   from the boundary into the triangulated region: the sum of the unit inward perpendiculars of
  *   the boundary edges (each in the plane of its triangle) of the loop points within
  *   BoundaryVectorRadius along the loop (the paper's b, measured along the loop rather than in

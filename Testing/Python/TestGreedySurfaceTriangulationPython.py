@@ -9,8 +9,11 @@ closed genus-0 mesh of 2V - 4 = 1996 triangles that uses every point; the same s
 the points of a cap of 30 degrees comes back closed (the hole triangulated, Stage 6 triangles)
 and, with BridgeIslands and FillHoles off, open with the cap as a hole; the parameters have the
 documented defaults and clamp to their documented ranges; the proxy's defaults equal the
-class's; noisy random spheres and tori come back closed with their genus; the vertices of CGAL's
-camel (a closed genus-0 mesh, when libcgal-demo is installed) give a closed genus-0 mesh.
+class's; noisy random spheres and tori come back closed with their genus; a closed tube bent so
+that its capped ends face each other 1 to 1.5 spacings apart comes back closed, genus 0, every
+point used; the vertices of CGAL's camel (a closed genus-0 mesh, when libcgal-demo is installed)
+give a closed genus-0 mesh, and those of its elephant (genus 3) a closed genus-3 mesh that uses
+every point.
 """
 import math
 import sys
@@ -230,22 +233,69 @@ for seed in (0, 1):
           "banded tail %d: every point used, closed, manifold, grown triangles %d (%s)"
           % (seed, grown, q))
 
+# A closed tube bent into a C (centre circle of radius 1, tube radius 0.3, about 3,200 random
+# points) whose two hemispherical end caps face each other across a gap of g mean spacings
+# (spacing taken as 0.5 sqrt(area / n)): a closed genus-0 surface. Step 1 may join the open
+# borders of the two caps by a strip of triangles, which makes a handle (genus 1 before the strip
+# rule on these three draws). Every point must be used, the mesh closed, genus 0.
+def bent_capsule(seed, gap):
+    rng = numpy.random.default_rng(seed)
+    big, small, n = 1.0, 0.3, 4000
+    spacing = 0.5 * math.sqrt((4.0 * math.pi ** 2 * small * big + 4.0 * math.pi * small ** 2) / n)
+    delta = (gap * spacing + 2.0 * small) / (2.0 * big)  # half the angle the gap and caps take
+    tube_area = 2.0 * math.pi * small * big * (2.0 * math.pi - 2.0 * delta)
+    on_tube = int(n * tube_area / (tube_area + 4.0 * math.pi * small ** 2))
+    a = rng.uniform(delta, 2.0 * math.pi - delta, on_tube)
+    b = rng.uniform(0.0, 2.0 * math.pi, on_tube)
+    keep = rng.uniform(0.0, big + small, on_tube) <= big + small * numpy.cos(b)  # area weights
+    a, b = a[keep], b[keep]
+    parts = [numpy.c_[(big + small * numpy.cos(b)) * numpy.cos(a),
+                      (big + small * numpy.cos(b)) * numpy.sin(a), small * numpy.sin(b)]]
+    for angle, side in ((delta, -1.0), (2.0 * math.pi - delta, 1.0)):
+        q = rng.normal(size=((n - on_tube) // 2, 3))
+        q /= numpy.linalg.norm(q, axis=1)[:, None]
+        out = side * numpy.array([-math.sin(angle), math.cos(angle), 0.0])  # along the tube, out
+        inward = q @ out < 0
+        q[inward] -= 2.0 * numpy.outer(q[inward] @ out, out)
+        parts.append(numpy.array([big * math.cos(angle), big * math.sin(angle), 0.0]) + small * q)
+    return numpy.vstack(parts)
+
+
+for seed, gap in ((2, 1.5), (7, 1.0), (22, 1.5)):
+    capsule = vtkGreedySurfaceTriangulation()
+    capsule.SetInputData(cloud_from_array(bent_capsule(seed, gap)))
+    capsule.Update()
+    out = capsule.GetOutput()
+    q = quality(out)
+    check(out.GetFieldData().GetArray("NumberOfUnusedPoints").GetValue(0) == 0
+          and q["NumberOfBoundaryEdges"] == 0 and q["Genus"] == 0
+          and q["NumberOfNonManifoldEdges"] == 0 and q["NumberOfConnectedComponents"] == 1,
+          "bent capsule %d, gap %.1f: every point used, closed, genus 0 (%s)" % (seed, gap, q))
+
 # The vertices of CGAL's camel (demo data, when installed): a closed genus-0 mesh (checked below
 # from its own counts) whose thin legs are sampled in rings, several spacings apart along the
 # leg. The gaps left there are long and narrow (a loop 20 spacings across, 4.8 wide); loops no
 # wider than MaximumBridgeLength are closed whatever their length, so the mesh must be closed,
 # genus 0.
 CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"
-try:
-    import tarfile
-    with tarfile.open(CGAL_DATA) as archive:
-        words = archive.extractfile("data/meshes/camel.off").read().decode().split()
-except (OSError, KeyError):
-    words = None
-    print("CGAL's camel.off is not available (apt-get install libcgal-demo): camel skipped")
-if words:
+
+
+def cgal_mesh(name):
+    """(V, F, vertex array) of data/meshes/<name>.off of CGAL's demo data, None without it."""
+    try:
+        import tarfile
+        with tarfile.open(CGAL_DATA) as archive:
+            words = archive.extractfile("data/meshes/%s.off" % name).read().decode().split()
+    except (OSError, KeyError):
+        print("CGAL's %s.off is not available (apt-get install libcgal-demo): skipped" % name)
+        return None
     nv, nf = int(words[1]), int(words[2])
-    xyz = numpy.array(words[4:4 + 3 * nv], dtype=float).reshape(-1, 3)
+    return nv, nf, numpy.array(words[4:4 + 3 * nv], dtype=float).reshape(-1, 3)
+
+
+camel_data = cgal_mesh("camel")
+if camel_data:
+    nv, nf, xyz = camel_data
     check(nv - nf // 2 == 2 and nf == 2 * nv - 4, "camel.off: closed genus 0 (V %d F %d)" % (nv, nf))
     cloud = cloud_from_array(xyz)
     camel = vtkGreedySurfaceTriangulation()
@@ -255,6 +305,25 @@ if words:
     check(q["NumberOfBoundaryEdges"] == 0 and q["Genus"] == 0
           and q["NumberOfNonManifoldEdges"] == 0 and q["OrientationConsistency"] == 1.0,
           "camel: closed genus 0 (%s)" % q)
+
+# The vertices of CGAL's elephant (when installed): a closed mesh of genus 3 (from its own
+# counts). Two sheets of it face each other about 2 spacings apart, where step 1 joined their open
+# borders by a strip of two triangles that passes the umbrella test: a fourth handle before the
+# strip rule of step 2. Every point must be used, the mesh closed, genus 3.
+elephant_data = cgal_mesh("elephant")
+if elephant_data:
+    nv, nf, xyz = elephant_data
+    genus = (nf - 2 * nv + 4) // 4
+    check(nf == 2 * nv - 4 + 4 * genus and genus == 3, "elephant.off: closed, genus 3")
+    elephant = vtkGreedySurfaceTriangulation()
+    elephant.SetInputData(cloud_from_array(xyz))
+    elephant.Update()
+    out = elephant.GetOutput()
+    q = quality(out)
+    check(out.GetFieldData().GetArray("NumberOfUnusedPoints").GetValue(0) == 0
+          and q["NumberOfBoundaryEdges"] == 0 and q["Genus"] == genus
+          and q["NumberOfNonManifoldEdges"] == 0 and q["OrientationConsistency"] == 1.0,
+          "elephant: every point used, closed, genus %d (%s)" % (genus, q))
 
 if len(sys.argv) > 1:
     from paraview import servermanager

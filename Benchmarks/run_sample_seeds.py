@@ -1,0 +1,133 @@
+#!/usr/bin/env python3
+"""How much of a Hausdorff distance is the sample's: every method on several random samples.
+
+The issues bound the Hausdorff distance of the clean real surfaces in mean spacings (<= 2 for
+vtkLocalOptimumGrowth and vtkCDTAdvancingFront, <= 4 for vtkPerimeterPeelSurface). The other
+benchmarks sample each mesh once, with one fixed seed. This script draws several uniform random
+samples of the same mesh (area weighted, numpy's default_rng(seed)) and gives each to every
+filter of the project (defaults) and to CGAL's advancing front (pcsBenchCGALAFSR, when given),
+then measures each mesh against the mesh it was sampled from with vtkReconstructionQuality.
+
+Printed per mesh, seed and method: triangles, unused points, boundary edges, the Hausdorff
+distance and its two one-sided maxima (accuracy: mesh to reference; completeness: reference to
+mesh) over the mean spacing. Per mesh and seed also the sample's own void: the largest distance
+from a reference sample (the reference's vertices and triangle centroids) to the nearest input
+point, over the same mean spacing. A mesh through the input points cannot follow the reference
+inside such a void where the reference curves there (a thin tip no sample reached). A summary
+line per method counts the samples within the bound.
+
+Usage:
+  PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 Benchmarks/run_sample_seeds.py \
+      --data /usr/share/cgal-demo/data [--cgal <bench-bin>/pcsBenchCGALAFSR] \
+      [--meshes camel armadillo] [--seeds 1 2 3 4 5] [--points 100000] [--filters log cdt]
+"""
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonDataModel import vtkStaticPointLocator
+
+import pointcloudsurface as pcs
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run_mesh_vertex_sweep import FILTERS, polydata, read_off  # noqa: E402
+
+# The Hausdorff bound of each method's issue, in mean spacings (CGAL: the LOG/CDT bound).
+BOUNDS = {"log": 2.0, "cdt": 2.0, "greedy": 2.0, "peel": 4.0, "cgal": 2.0}
+
+
+def sample_mesh(points, triangles, count, seed):
+    """count points uniformly distributed over the triangles' area."""
+    a, b, c = (points[triangles[:, k]] for k in range(3))
+    area = 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1)
+    rng = np.random.default_rng(seed)
+    chosen = rng.choice(len(triangles), count, p=area / area.sum())
+    u, v = rng.random(count), rng.random(count)
+    outside = u + v > 1
+    u[outside], v[outside] = 1 - u[outside], 1 - v[outside]
+    a, b, c = a[chosen], b[chosen], c[chosen]
+    return a + u[:, None] * (b - a) + v[:, None] * (c - a)
+
+
+def largest_void(points, triangles, cloud):
+    """Largest distance from the reference's vertices and centroids to the nearest cloud point."""
+    locator = vtkStaticPointLocator()
+    data = polydata(cloud)
+    locator.SetDataSet(data)
+    locator.BuildLocator()
+    centroids = points[triangles].mean(axis=1)
+    largest = 0.0
+    for query in np.vstack([points, centroids]):
+        nearest = cloud[locator.FindClosestPoint(query)]
+        largest = max(largest, float(np.linalg.norm(query - nearest)))
+    return largest
+
+
+def cgal_mesh(binary, cloud):
+    with tempfile.TemporaryDirectory() as folder:
+        xyz, off = os.path.join(folder, "cloud.xyz"), os.path.join(folder, "mesh.off")
+        np.savetxt(xyz, cloud)
+        subprocess.run([binary, xyz, off], check=True, capture_output=True)
+        return polydata(cloud, read_off(off)[1])
+
+
+def measure(mesh, reference):
+    quality = pcs.vtkReconstructionQuality()
+    quality.SetInputData(mesh)
+    quality.SetReferenceData(reference)
+    quality.Update()
+    fields = quality.GetOutput().GetFieldData()
+    return {k: fields.GetArray(k).GetValue(0) for k in (
+        "NumberOfBoundaryEdges", "HausdorffOverSpacing", "AccuracyMaxOverSpacing",
+        "CompletenessMaxOverSpacing", "MeanSpacing")}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--data", required=True, help="the CGAL demo data folder (has meshes/)")
+    parser.add_argument("--meshes", nargs="+", default=["camel", "elephant", "armadillo",
+                                                        "bunny00"])
+    parser.add_argument("--seeds", type=int, nargs="+", default=[1, 2, 3, 4, 5])
+    parser.add_argument("--points", type=int, default=100000)
+    parser.add_argument("--filters", nargs="+", default=["log", "cdt"], choices=list(FILTERS))
+    parser.add_argument("--cgal", help="pcsBenchCGALAFSR executable (CGAL's advancing front)")
+    args = parser.parse_args()
+    methods = args.filters + (["cgal"] if args.cgal else [])
+    within = {m: 0 for m in methods}
+    print("| mesh | seed | method | triangles | unused | boundary edges | Hausdorff | "
+          "accuracy max | completeness max | largest void |")
+    print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|")
+    for name in args.meshes:
+        points, triangles = read_off(os.path.join(args.data, "meshes", name + ".off"))
+        reference = polydata(points, triangles)
+        for seed in args.seeds:
+            cloud = sample_mesh(points, triangles, args.points, seed)
+            void = largest_void(points, triangles, cloud)
+            for method in methods:
+                if method == "cgal":
+                    mesh = cgal_mesh(args.cgal, cloud)
+                else:
+                    algorithm = FILTERS[method]()
+                    algorithm.SetInputData(polydata(cloud))
+                    algorithm.Update()
+                    mesh = algorithm.GetOutput()
+                cells = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray())
+                unused = len(cloud) - (len(np.unique(cells)) if len(cells) else 0)
+                q = measure(mesh, reference)
+                within[method] += q["HausdorffOverSpacing"] <= BOUNDS[method]
+                print("| %s | %d | %s | %d | %d | %d | %.2f | %.2f | %.2f | %.2f |" % (
+                    name, seed, method, len(cells) // 3, unused, q["NumberOfBoundaryEdges"],
+                    q["HausdorffOverSpacing"], q["AccuracyMaxOverSpacing"],
+                    q["CompletenessMaxOverSpacing"], void / q["MeanSpacing"]), flush=True)
+    runs = len(args.meshes) * len(args.seeds)
+    for method in methods:
+        print("%s: Hausdorff <= %g mean spacings on %d of %d samples" % (
+            method, BOUNDS[method], within[method], runs))
+
+
+if __name__ == "__main__":
+    main()

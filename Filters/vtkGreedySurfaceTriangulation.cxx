@@ -256,7 +256,7 @@ public:
   void Step1GreedyEdges(double begin, double end);
   void Step2Umbrella(double begin, double end);
   void GrowRegions(double begin, double end);
-  void RemoveSmallOpenGrownParts();
+  bool RemoveSmallOpenGrownParts();
   void RemoveGrownFlaps();
   void TakeBack(int64_t t);
   void Step3Status();
@@ -1439,12 +1439,13 @@ void Reconstruction::TakeBack(int64_t t)
 // After the small loops and the caps: a piece with grown triangles (stage 2) that is still open
 // and has fewer than MinimumIslandTriangles triangles is taken back, as step 2 dissolves its
 // small islands (a seed that grew into a strip the later steps could not join or close); its
-// points are lost again and reported unused.
-void Reconstruction::RemoveSmallOpenGrownParts()
+// points are lost again. True when a piece was taken back.
+bool Reconstruction::RemoveSmallOpenGrownParts()
 {
+  bool takenBack = false;
   if (this->Grown == 0)
   {
-    return;
+    return takenBack;
   }
   const int64_t ids = std::min<int64_t>(this->Mesh.GetNumberOfTriangleIds(), this->Stage.size());
   const int64_t minimum = this->Self->GetMinimumIslandTriangles();
@@ -1484,6 +1485,7 @@ void Reconstruction::RemoveSmallOpenGrownParts()
       vertices.insert(vertices.end(), tri, tri + 3);
       this->TakeBack(t);
     }
+    takenBack = true;
     // A lost point inserted into the piece (stage 8) is lost again: no longer counted inserted.
     for (int32_t v : vertices)
     {
@@ -1494,6 +1496,7 @@ void Reconstruction::RemoveSmallOpenGrownParts()
       }
     }
   }
+  return takenBack;
 }
 
 //------------------------------------------------------------------------------------------------
@@ -4108,7 +4111,12 @@ int vtkGreedySurfaceTriangulation::RequestData(
     x.RemoveGrownFlaps();
     x.CloseSmallLoops();
     x.CapOpenEnds();
-    x.RemoveSmallOpenGrownParts();
+    if (x.RemoveSmallOpenGrownParts())
+    {
+      // The points of the pieces taken back, and the lost points still free, get one more pass
+      // of the insertion, into the mesh as the small loops and the caps left it.
+      x.InsertLostPoints(end, end);
+    }
     x.Step7Swaps();
     return true;
   };

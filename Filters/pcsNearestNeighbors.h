@@ -3,8 +3,12 @@
 #ifndef pcsNearestNeighbors_h
 #define pcsNearestNeighbors_h
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
+#include <utility>
 #include <vector>
 
 class vtkStaticPointLocator;
@@ -89,37 +93,127 @@ public:
   template<typename Visit>
   bool ForEachPointWithinRadius(double radius, const double* x, Visit&& visit) const
   {
+    const double r2 = radius * radius;
+    return this->ForEachBucketRow(radius,
+      x,
+      [&](int32_t begin, int32_t end)
+      {
+        for (int32_t m = begin; m < end; ++m)
+        {
+          const double d2 = this->Distance2To(m, x);
+          if (d2 <= r2 && !visit(this->Ids[m], d2))
+          {
+            return false;
+          }
+        }
+        return true;
+      });
+  }
+
+  /// The points of ForEachPointWithinRadius (the same order, the same d2) gathered into `found`,
+  /// a buffer that only grows: the first count entries, count returned. Each point of the
+  /// buckets walked is written before the test on its distance decides whether the next one
+  /// overwrites it: no branch on that test, which half of the points pass and fail at random.
+  size_t GatherWithinRadius(double radius,
+    const double* x,
+    std::vector<std::pair<int32_t, double>>& found) const
+  {
+    size_t count = 0;
+    this->GatherWithinRadius(radius,
+      x,
+      found,
+      std::numeric_limits<size_t>::max(),
+      [&count](size_t gathered)
+      {
+        count = gathered;
+        return true;
+      });
+    return count;
+  }
+
+  /// The same in pieces: take(count) is called with the points gathered since its last call in
+  /// found[0, count) as soon as `piece` of them are gathered (within a bucket too), and once at
+  /// the end (count may be 0), until take returns false (the walk then stops and false is
+  /// returned). For a caller that may stop early, so that a dense cluster is not walked whole.
+  template<typename Take>
+  bool GatherWithinRadius(double radius,
+    const double* x,
+    std::vector<std::pair<int32_t, double>>& found,
+    size_t piece,
+    Take&& take) const
+  {
+    const double r2 = radius * radius;
+    size_t count = 0;
+    const bool walked = this->ForEachBucketRow(radius,
+      x,
+      [&](int32_t begin, int32_t end)
+      {
+        if (found.size() < count + static_cast<size_t>(end - begin))
+        {
+          found.resize(2 * (count + static_cast<size_t>(end - begin)));
+        }
+        for (int32_t m = begin; m < end;)
+        {
+          // (count < piece here: at most piece - count points before the next check.)
+          const int32_t stop =
+            static_cast<int32_t>(std::min<size_t>(static_cast<size_t>(end - m), piece - count) + m);
+          for (; m < stop; ++m)
+          {
+            const double d2 = this->Distance2To(m, x);
+            found[count] = { this->Ids[m], d2 };
+            count += d2 <= r2 ? 1 : 0;
+          }
+          if (count >= piece)
+          {
+            const size_t gathered = count;
+            count = 0;
+            if (!take(gathered))
+            {
+              return false;
+            }
+          }
+        }
+        return true;
+      });
+    return walked && take(count);
+  }
+
+private:
+  // Calls row(begin, end) with the slots [begin, end) of each row of buckets (fixed y and z) that
+  // the box of the ball (x, radius) overlaps, in bucket order, until row returns false.
+  template<typename Row>
+  bool ForEachBucketRow(double radius, const double* x, Row&& row) const
+  {
     if (this->Offsets.size() < 2)
     {
       return true;
     }
     int low[3], high[3];
     this->BucketRange(x, radius, low, high);
-    const double r2 = radius * radius;
     const int64_t nx = this->Divisions[0];
     const int64_t nxy = nx * this->Divisions[1];
     for (int k = low[2]; k <= high[2]; ++k)
     {
       for (int j = low[1]; j <= high[1]; ++j)
       {
-        const int64_t row = j * nx + k * nxy;
-        const int32_t end = this->Offsets[row + high[0] + 1];
-        for (int32_t m = this->Offsets[row + low[0]]; m < end; ++m)
+        const int64_t first = j * nx + k * nxy;
+        if (!row(this->Offsets[first + low[0]], this->Offsets[first + high[0] + 1]))
         {
-          const double* p = &this->XYZ[3 * static_cast<size_t>(m)];
-          const double d[3] = { p[0] - x[0], p[1] - x[1], p[2] - x[2] };
-          const double d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-          if (d2 <= r2 && !visit(this->Ids[m], d2))
-          {
-            return false;
-          }
+          return false;
         }
       }
     }
     return true;
   }
 
-private:
+  // The squared distance from x to the point of slot m.
+  double Distance2To(int32_t m, const double* x) const
+  {
+    const double* p = &this->XYZ[3 * static_cast<size_t>(m)];
+    const double d[3] = { p[0] - x[0], p[1] - x[1], p[2] - x[2] };
+    return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  }
+
   void Fill(const double* xyz, int32_t n, bool withCoordinates);
 
   int Divisions[3] = { 1, 1, 1 };

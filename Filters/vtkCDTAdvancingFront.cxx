@@ -791,10 +791,15 @@ private:
 
   // Scratch.
   std::vector<Id> Near;
-  // The points stamped by the II.D walk of the triangle tested, with their squared distances to
-  // its centroid.
+  // PassesProjectionTests' buffers (they only grow; each test uses a prefix): the points stamped
+  // as edge end points with their squared distances to the centroid of the triangle tested, the
+  // ball of that triangle, its II.D.1 candidates and the edges left for II.D.2's projections.
   std::vector<std::pair<Id, double>> StampedEnds;
+  std::vector<std::pair<Id, double>> Ball;
+  std::vector<Id> PointCandidates;
+  std::vector<std::pair<Id, Id>> EdgeCandidates;
   std::vector<std::pair<double, Id>> Candidates;
+  std::vector<std::pair<double, Id>> RingCandidates; // BestThirdPoint: a buffer (only grows)
   std::vector<std::pair<double, Id>> Pending; // BestThirdPoint on scan lines: for the next ring
   std::vector<Id> Ears;                       // BestThirdPoint in III.C: the ears of the edge
   std::vector<Id> Neighbors;
@@ -1210,95 +1215,95 @@ bool Front::PassesProjectionTests(Id e0,
     this->CurrentStamp = 1;
   }
 
-  // One walk over the ball: each point is tested by II.D.1 (Fig. 3), and stamped as an end point
-  // of the edges II.D.2 tests after the walk when it may be the nearer end of an edge passing
-  // within the segment reach s (within sqrt(s^2 + L^2 / 4) of g for its longest edge L; every
-  // edge that may cross has at least one stamped end point, and is tested from its stamped end
-  // point of smaller id).
-  this->StampedEnds.clear();
-  auto testPoint = [&](Id p, double distance2)
+  // The ball, gathered in pieces of 16 points (a dense cluster is not walked whole when
+  // one of its first points blocks), each filtered in passes that write their survivors without
+  // a branch on each test (the tests on neighbouring points and edges pass or fail at random:
+  // the branches were mispredicted about a third of the time). The answer, blocked by some point
+  // or some edge, does not depend on the order of the tests.
+  // Each point of the ball is stamped as an end point of the edges II.D.2 tests below when it may
+  // be the nearer end of an edge passing within the segment reach s (within sqrt(s^2 + L^2 / 4) of
+  // g for its longest edge L; every edge that may cross has at least one stamped end point, and
+  // is tested from its stamped end point of smaller id). It is a II.D.1 candidate (Fig. 3) when
+  // it is within the point reach, not a vertex of the triangle, usable, and its normal is on the
+  // triangle's side of the vertex normals (Fig. 3b: not the other side of a thin sheet).
+  const unsigned stamp = this->CurrentStamp;
+  size_t stampedEnds = 0;
+  auto testPiece = [&](size_t inPiece)
   {
-    if (distance2 <= segmentReach2 + 0.25 * this->MaxIncident[p] * this->MaxIncident[p] &&
-      !this->Mesh.IsFree(p))
+    if (this->StampedEnds.size() < stampedEnds + inPiece)
     {
-      this->Stamp[p] = this->CurrentStamp;
-      this->StampedEnds.emplace_back(p, distance2);
+      this->StampedEnds.resize(2 * (stampedEnds + inPiece));
     }
-    if (distance2 > pointReach2 || p == e0 || p == e1 || p == third || this->Status[p] != Usable)
+    if (this->PointCandidates.size() < inPiece)
     {
-      return true;
+      this->PointCandidates.resize(2 * inPiece);
     }
-    const double* np = this->N(p);
-    if (Dot(np, n0) <= 0.0 || Dot(np, n1) <= 0.0 || Dot(np, n2) <= 0.0)
+    size_t pointCandidates = 0;
+    for (size_t i = 0; i < inPiece; ++i)
     {
-      return true; // Fig. 3b: the other side of a thin sheet
+      const Id p = this->Ball[i].first;
+      const double distance2 = this->Ball[i].second;
+      const double incident = this->MaxIncident[p];
+      const bool end =
+        (distance2 <= segmentReach2 + 0.25 * incident * incident) & !this->Mesh.IsFree(p);
+      const unsigned old = this->Stamp[p]; // (end ? stamp : old, without a branch)
+      this->Stamp[p] = old ^ ((old ^ stamp) & (0u - static_cast<unsigned>(end)));
+      this->StampedEnds[stampedEnds] = { p, distance2 };
+      stampedEnds += end ? 1 : 0;
+      const double* np = this->N(p);
+      const bool candidate = (distance2 <= pointReach2) & (p != e0) & (p != e1) & (p != third) &
+        (this->Status[p] == Usable) & !(Dot(np, n0) <= 0.0) & !(Dot(np, n1) <= 0.0) &
+        !(Dot(np, n2) <= 0.0);
+      this->PointCandidates[pointCandidates] = p;
+      pointCandidates += candidate ? 1 : 0;
     }
-    // It blocks when its normal line crosses the open triangle (exact) at a ray parameter of at
-    // most MaximumRay. The parameter is tested first, and when the line is not nearly parallel
-    // to the plane (|np . N| >= 0.1: t and its point are then accurate to a few ulps), a crossing
-    // point farther than the vertices from the centroid (with 1 % of margin) cannot be in the
-    // triangle: the exact test is skipped. Same decisions, fewer exact tests.
-    double t;
-    if (!pcs::projected::RayParameter(this->P(p), np, this->P(e0), normal, t) ||
-      !(std::fabs(t) <= maximumRay) || (!this->Mesh.IsFree(p) && withinNoiseBand(p, t)))
+    // II.D.1: a candidate blocks when its normal line crosses the open triangle (exact) at a ray
+    // parameter of at most MaximumRay. The parameter is tested first, and when the line is not
+    // nearly parallel to the plane (|np . N| >= 0.1: t and its point are then accurate to a few
+    // ulps), a crossing point farther than the vertices from the centroid (with 1 % of margin)
+    // cannot be in the triangle: the exact test is skipped. Same decisions, fewer exact tests.
+    for (size_t i = 0; i < pointCandidates; ++i)
     {
-      return true;
-    }
-    if (std::fabs(Dot(np, normal)) >= 0.1 * length)
-    {
-      const double* x = this->P(p);
-      const double hit[3] = { x[0] + t * np[0], x[1] + t * np[1], x[2] + t * np[2] };
-      if (Distance2(hit, centroid) > triangleReach2)
+      const Id p = this->PointCandidates[i];
+      const double *x = this->P(p), *np = this->N(p);
+      double t = 0.0; // (left at 0 when there is no parameter)
+      bool reached = pcs::projected::RayParameter(x, np, this->P(e0), normal, t);
+      reached = reached & (std::fabs(t) <= maximumRay);
+      if (ignoreNoiseBand && reached && !this->Mesh.IsFree(p) && withinNoiseBand(p, t))
       {
-        return true;
+        reached = false;
+      }
+      const bool steep = std::fabs(Dot(np, normal)) >= 0.1 * length;
+      const double hit[3] = { x[0] + t * np[0], x[1] + t * np[1], x[2] + t * np[2] };
+      const bool outside = steep & (Distance2(hit, centroid) > triangleReach2);
+      if (reached && !outside &&
+        pcs::projected::LineCrossesTriangle(x, np, this->P(e0), this->P(e1), this->P(third)))
+      {
+        return false;
       }
     }
-    return !pcs::projected::LineCrossesTriangle(
-      this->P(p), np, this->P(e0), this->P(e1), this->P(third));
+    return true;
   };
-  if (!this->Bins.ForEachPointWithinRadius(
-        std::min(edgeReach, this->Diagonal), centroid, testPoint))
+  if (!this->Bins.GatherWithinRadius(
+        std::min(edgeReach, this->Diagonal), centroid, this->Ball, 16, testPiece))
   {
     return false;
   }
 
-  // II.D.2: projected neighbouring edges (Fig. 4), each edge once.
-  for (const auto& stamped : this->StampedEnds)
+  // II.D.2: projected neighbouring edges (Fig. 4), each edge once: the edges that pass the tests
+  // on their end points (not tested from the other end, not an edge of the triangle, within the
+  // segment reach, Fig. 4b) are gathered without a branch on each test, then projected, those of
+  // each end point in turn (an end point's edges are only listed when no edge listed before
+  // crosses: a vertex of a dense cluster has hundreds, which GetEdgeEnds lists from the mesh).
+  size_t edges = 0;
+  auto testEdges = [&]()
   {
-    const Id u = stamped.first;
-    const double uDistance2 = stamped.second; // (within s: every edge of u passes)
-    const Id* ends = &this->Adjacent[AdjacentCapacity * static_cast<size_t>(u)];
-    int numberOfEnds = this->AdjacentCount[u];
-    if (numberOfEnds == Overflow)
+    for (size_t i = 0; i < edges; ++i)
     {
-      GetEdgeEnds(this->Mesh, u, this->VertexTriangles, this->Neighbors);
-      ends = this->Neighbors.data();
-      numberOfEnds = static_cast<int>(this->Neighbors.size());
-    }
-    const bool uIsVertex = u == e0 || u == e1 || u == third;
-    for (int j = 0; j < numberOfEnds; ++j)
-    {
-      const Id w = ends[j];
-      if (this->Stamp[w] == this->CurrentStamp && w < u)
-      {
-        continue; // tested from w
-      }
-      const bool wIsVertex = w == e0 || w == e1 || w == third;
-      if (uIsVertex && wIsVertex)
-      {
-        continue; // an edge of the triangle itself
-      }
-      if (uDistance2 > segmentReach2 &&
-        SegmentDistance2(this->P(u), this->P(w), centroid) > segmentReach2)
-      {
-        continue; // too far to cross
-      }
-      const double *nu = this->N(u), *nw = this->N(w);
-      const double edgeNormal[3] = { nu[0] + nw[0], nu[1] + nw[1], nu[2] + nw[2] };
-      if (Dot(edgeNormal, sum) <= 0.0)
-      {
-        continue; // Fig. 4b
-      }
+      const Id u = this->EdgeCandidates[i].first;
+      const Id w = this->EdgeCandidates[i].second;
+      const bool uIsVertex = (u == e0) | (u == e1) | (u == third);
+      const bool wIsVertex = (w == e0) | (w == e1) | (w == third);
       // Projected end points (each computed once per triangle tested, most points end several
       // edges); a vertex of the triangle projects onto itself.
       const double* pu = this->Project(u, uIsVertex, normal, this->P(e0), maximumRay);
@@ -1312,6 +1317,47 @@ bool Front::PassesProjectionTests(Id e0,
       {
         return false;
       }
+    }
+    edges = 0;
+    return true;
+  };
+  for (size_t s = 0; s < stampedEnds; ++s)
+  {
+    const Id u = this->StampedEnds[s].first;
+    const double uDistance2 = this->StampedEnds[s].second; // (within s: every edge of u passes)
+    const Id* ends = &this->Adjacent[AdjacentCapacity * static_cast<size_t>(u)];
+    int numberOfEnds = this->AdjacentCount[u];
+    if (numberOfEnds == Overflow)
+    {
+      GetEdgeEnds(this->Mesh, u, this->VertexTriangles, this->Neighbors);
+      ends = this->Neighbors.data();
+      numberOfEnds = static_cast<int>(this->Neighbors.size());
+    }
+    if (this->EdgeCandidates.size() < edges + static_cast<size_t>(numberOfEnds))
+    {
+      this->EdgeCandidates.resize(2 * (edges + static_cast<size_t>(numberOfEnds)));
+    }
+    const bool uIsVertex = u == e0 || u == e1 || u == third;
+    const bool uBeyond = uDistance2 > segmentReach2;
+    const double* nu = this->N(u);
+    for (int j = 0; j < numberOfEnds; ++j)
+    {
+      const Id w = ends[j];
+      const bool wIsVertex = (w == e0) | (w == e1) | (w == third);
+      const double* nw = this->N(w);
+      const double edgeNormal[3] = { nu[0] + nw[0], nu[1] + nw[1], nu[2] + nw[2] };
+      bool keep = !((this->Stamp[w] == stamp) & (w < u)) & !(uIsVertex & wIsVertex) &
+        !(Dot(edgeNormal, sum) <= 0.0);
+      if (uBeyond) // (the same for all the edges of u)
+      {
+        keep = keep & !(SegmentDistance2(this->P(u), this->P(w), centroid) > segmentReach2);
+      }
+      this->EdgeCandidates[edges] = { u, w };
+      edges += keep ? 1 : 0;
+    }
+    if (!testEdges())
+    {
+      return false;
     }
   }
   return true;
@@ -1393,20 +1439,27 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
           stretchedEdge ? this->RankDistance2(midpoint, x, e0, e1) : d2, x);
       }
     };
-    // The points of the ring's ball (FindPoints' query, walked here: its squared distances are
-    // Distance2(P(x), midpoint), and the points of the inner rings are left before their status
-    // is read).
-    this->Bins.ForEachPointWithinRadius(std::min(radii[ring], this->Diagonal),
-      midpoint,
-      [&](Id x, double d2)
-      {
-        if (d2 > inner2 && x != e0 && x != e1 && x != opposite && this->Status[x] == Usable &&
-          !this->Mesh.IsInterior(x))
-        {
-          consider(x, d2);
-        }
-        return true;
-      });
+    // The points of the ring's ball (FindPoints' query, gathered here: its squared distances are
+    // Distance2(P(x), midpoint)), those of the inner rings left out; the candidates are written
+    // without a branch on each test (see PassesProjectionTests).
+    const size_t inBall =
+      this->Bins.GatherWithinRadius(std::min(radii[ring], this->Diagonal), midpoint, this->Ball);
+    if (this->RingCandidates.size() < inBall)
+    {
+      this->RingCandidates.resize(2 * inBall);
+    }
+    size_t kept = 0;
+    for (size_t i = 0; i < inBall; ++i)
+    {
+      const Id x = this->Ball[i].first;
+      const double d2 = this->Ball[i].second;
+      const bool candidate = (d2 > inner2) & (d2 <= outer2) & (x != e0) & (x != e1) &
+        (x != opposite) & (this->Status[x] == Usable) & !this->Mesh.IsInterior(x);
+      this->RingCandidates[kept] = { stretchedEdge ? this->RankDistance2(midpoint, x, e0, e1) : d2,
+        x };
+      kept += candidate ? 1 : 0;
+    }
+    this->Candidates.assign(this->RingCandidates.begin(), this->RingCandidates.begin() + kept);
     for (Id x : this->Ears) // (empty unless relaxed)
     {
       consider(x, Distance2(this->P(x), midpoint));

@@ -60,25 +60,6 @@ bool LineCrossesTriangle(
   return predicates::Orient3D(p, q, c, a) == ab;
 }
 
-bool RayParameter(
-  const double* p, const double* n, const double* origin, const double* planeNormal, double& t)
-{
-  const double along = n[0] * planeNormal[0] + n[1] * planeNormal[1] + n[2] * planeNormal[2];
-  if (along == 0.0)
-  {
-    return false;
-  }
-  const double offset = (origin[0] - p[0]) * planeNormal[0] + (origin[1] - p[1]) * planeNormal[1] +
-    (origin[2] - p[2]) * planeNormal[2];
-  const double value = offset / along;
-  if (!std::isfinite(value))
-  {
-    return false;
-  }
-  t = value;
-  return true;
-}
-
 int EdgePlaneSide(const double* a, const double* b, const double* normal, const double* x)
 {
   const double m[3] = { a[0] + normal[0], a[1] + normal[1], a[2] + normal[2] };

@@ -12,6 +12,8 @@
 #ifndef pcsProjectedTests_h
 #define pcsProjectedTests_h
 
+#include <cmath>
+
 namespace pcs
 {
 namespace projected
@@ -38,8 +40,28 @@ bool LineCrossesTriangle(
 /// Parameter t of the point p + t n of the plane through `origin` with normal `planeNormal`
 /// (floating point). Returns false (t untouched) when n is parallel to the plane (n . N = 0) or
 /// the result is not finite.
-bool RayParameter(
-  const double* p, const double* n, const double* origin, const double* planeNormal, double& t);
+/// (Inline: the projection tests call it for most points near each candidate triangle.)
+inline bool RayParameter(const double* p,
+  const double* n,
+  const double* origin,
+  const double* planeNormal,
+  double& t)
+{
+  const double along = n[0] * planeNormal[0] + n[1] * planeNormal[1] + n[2] * planeNormal[2];
+  if (along == 0.0)
+  {
+    return false;
+  }
+  const double offset = (origin[0] - p[0]) * planeNormal[0] + (origin[1] - p[1]) * planeNormal[1] +
+    (origin[2] - p[2]) * planeNormal[2];
+  const double value = offset / along;
+  if (!std::isfinite(value))
+  {
+    return false;
+  }
+  t = value;
+  return true;
+}
 
 /// Paper 003, section II.C.3: side of x with respect to the edge plane of the edge ab, the plane
 /// through a and b perpendicular to the plane of a triangle with normal `normal` (the plane

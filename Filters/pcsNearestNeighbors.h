@@ -3,7 +3,6 @@
 #ifndef pcsNearestNeighbors_h
 #define pcsNearestNeighbors_h
 
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -152,22 +151,15 @@ public:
         {
           found.resize(2 * (count + static_cast<size_t>(end - begin)));
         }
-        for (int32_t m = begin; m < end;)
+        for (int32_t m = begin; m < end; ++m)
         {
-          // (count < piece here: at most piece - count points before the next check.)
-          const int32_t stop =
-            static_cast<int32_t>(std::min<size_t>(static_cast<size_t>(end - m), piece - count) + m);
-          for (; m < stop; ++m)
+          const double d2 = this->Distance2To(m, x);
+          found[count] = { this->Ids[m], d2 };
+          count += d2 <= r2 ? 1 : 0;
+          if (count == piece) // (rarely true: a well predicted branch)
           {
-            const double d2 = this->Distance2To(m, x);
-            found[count] = { this->Ids[m], d2 };
-            count += d2 <= r2 ? 1 : 0;
-          }
-          if (count >= piece)
-          {
-            const size_t gathered = count;
             count = 0;
-            if (!take(gathered))
+            if (!take(piece))
             {
               return false;
             }

@@ -827,7 +827,12 @@ private:
       return;
     }
     Id* list = &this->Adjacent[AdjacentCapacity * static_cast<size_t>(a)];
-    if (std::find(list, list + count, b) != list + count)
+    bool listed = false; // (all the slots compared: no branch on where b is)
+    for (int k = 0; k < AdjacentCapacity; ++k)
+    {
+      listed = listed | ((k < count) & (list[k] == b));
+    }
+    if (listed)
     {
       return;
     }

@@ -226,14 +226,13 @@
  * @warning
  * Measured against CGAL's advancing front on the same clouds (Benchmarks/run_cdt_benchmark.py
  * and CPU times, 2026-11-23/24, loaded 2-core machine; the README gives the tables). CPU time
- * (2026-11-24, results/cdt.md): with the meshes' vertex normals 1.15-1.56 times faster than CGAL
- * on the 10^5-point samples of bunny00, armadillo, camel, elephant, refined_elephant and the
- * vertex sets of these (but the elephant's), fandisk_large, knot1 and diplodocus, 1.04 times
- * slower on the small irregular vertex set of the elephant (2,775 points; the II.D projection
- * tests of the triangles made are about half of the work); with estimated normals 1.14-1.39
- * times faster on the same clouds but the camel's vertex set, 1.1 and 1.3 times slower on the
- * vertex sets of the camel and the elephant (a front that refuses more candidates, and the
- * normal estimation). Quality: 0 non-manifold edges and vertices and
+ * (2026-11-24 at 32584bd, load about 5, results/cdt.md): with the meshes' vertex normals as fast
+ * as CGAL on the small irregular vertex set of the elephant (2,775 points) and 1.33-1.89 times
+ * faster on the vertex sets of bunny00, armadillo, camel, refined_elephant, fandisk_large, knot1
+ * and diplodocus and the 10^5-point samples of the camel and the elephant; with estimated normals
+ * 1.33-1.65 times faster on the same clouds but the vertex sets of the camel and the elephant,
+ * 1.04 and 1.25 times slower there (a front that refuses more candidates, and the normal
+ * estimation; the II.D projection tests of the triangles made are about half of the work). Quality: 0 non-manifold edges and vertices and
  * coverage >= 99 % on every clean cloud; the Hausdorff distance exceeds 2 mean spacings on the
  * 10^5-point samples of the armadillo (2.04, a hole with edges of 7 spacings on a fold) and the
  * camel (2.36: a sharp tip of the mesh is 2.36 spacings from the nearest sample point, CGAL 2.38)

@@ -298,6 +298,7 @@ private:
   std::vector<int32_t> VertexPieces() const;
   void ClearPinches(std::vector<int32_t>& pending);
   void SheetNormal(int32_t v, int64_t t0, int64_t t1, double normal[3]) const;
+  bool LeavesSheetsAtBothEnds(int32_t u, int32_t v, int64_t t0, int64_t t1) const;
   void RemoveHandleStrips();
   bool ConnectedAroundEdge(int32_t u,
     int32_t v,
@@ -1201,6 +1202,19 @@ void Reconstruction::SheetNormal(int32_t v, int64_t t0, int64_t t1, double norma
   vtkMath::Normalize(normal);
 }
 
+// Whether the edge uv of the triangles t0 and t1 makes more than 30 degrees with the tangent
+// planes of u and of v (SheetNormal: their triangles other than t0 and t1).
+bool Reconstruction::LeavesSheetsAtBothEnds(int32_t u, int32_t v, int64_t t0, int64_t t1) const
+{
+  static const double steep = std::sin(vtkMath::RadiansFromDegrees(30.0));
+  double chord[3], nu[3], nv[3];
+  vtkMath::Subtract(this->P(v), this->P(u), chord);
+  vtkMath::Normalize(chord);
+  this->SheetNormal(u, t0, t1, nu);
+  this->SheetNormal(v, t0, t1, nv);
+  return std::abs(vtkMath::Dot(nu, chord)) > steep && std::abs(vtkMath::Dot(nv, chord)) > steep;
+}
+
 // Whether the triangles t0 and t1 on the two sides of the edge uv stay connected through their
 // edges when uv is cut. Breadth-first from both sides in turn, so that a cut that separates a
 // small piece costs the size of that piece. `seen` (per triangle id) holds marks above `stamp`
@@ -1271,7 +1285,6 @@ void Reconstruction::RemoveHandleStrips()
 {
   // Candidates: the chords u -> v (u < v) between boundary points that leave the surface at both
   // ends.
-  const double steep = std::sin(vtkMath::RadiansFromDegrees(30.0));
   std::vector<std::array<int32_t, 2>> candidates;
   for (int32_t u = 0; u < this->N; ++u)
   {
@@ -1292,13 +1305,7 @@ void Reconstruction::RemoveHandleStrips()
       {
         continue;
       }
-      const int64_t t1 = this->Mesh.FindTriangle(v, u);
-      double chord[3], nu[3], nv[3];
-      vtkMath::Subtract(this->P(v), this->P(u), chord);
-      vtkMath::Normalize(chord);
-      this->SheetNormal(u, around[i], t1, nu);
-      this->SheetNormal(v, around[i], t1, nv);
-      if (std::abs(vtkMath::Dot(nu, chord)) > steep && std::abs(vtkMath::Dot(nv, chord)) > steep)
+      if (this->LeavesSheetsAtBothEnds(u, v, around[i], this->Mesh.FindTriangle(v, u)))
       {
         candidates.push_back({ u, v });
       }
@@ -1331,7 +1338,8 @@ void Reconstruction::RemoveHandleStrips()
     {
       continue;
     }
-    if (!this->ConnectedAroundEdge(u, v, t0, t1, seen, stamp))
+    if (!this->LeavesSheetsAtBothEnds(u, v, t0, t1) ||
+      !this->ConnectedAroundEdge(u, v, t0, t1, seen, stamp))
     {
       continue;
     }

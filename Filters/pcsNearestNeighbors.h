@@ -134,6 +134,7 @@ public:
   /// found[0, count) as soon as `piece` of them are gathered (within a bucket too), and once at
   /// the end (count may be 0), until take returns false (the walk then stops and false is
   /// returned). For a caller that may stop early, so that a dense cluster is not walked whole.
+  /// piece must be at least 1 (with 0, take(0) would be called for every point that fails).
   template<typename Take>
   bool GatherWithinRadius(double radius,
     const double* x,

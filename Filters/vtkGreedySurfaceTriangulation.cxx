@@ -45,6 +45,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <numeric>
 #include <sstream>
@@ -213,6 +214,13 @@ public:
   std::vector<char> LoopIsHole;
   std::vector<std::vector<int32_t>> FinalLoops; // node sequences after step 4
   std::vector<char> FinalIsHole;
+  struct Band
+  {
+    std::vector<int32_t> First, Second; // two original loops, from the ends of their gap
+    std::vector<int32_t> Triangles;     // the strip (ZipBand)
+    std::vector<std::array<int32_t, 2>> Gaps;
+  };
+  std::vector<Band> Bands; // narrow bands between two loops (Step4Bridges, FillBands)
 
   // Counts.
   vtkIdType LostPoints = 0, Islands = 0, Holes = 0, Bridges = 0, Chords = 0, HolesFilled = 0,
@@ -299,6 +307,9 @@ private:
   void ClearPinches(std::vector<int32_t>& pending);
   void SheetNormal(int32_t v, int64_t t0, int64_t t1, double normal[3]) const;
   bool LeavesSheetsAtBothEnds(int32_t u, int32_t v, int64_t t0, int64_t t1) const;
+  void FillBands();
+  bool ZipBand(Band& band) const;
+  bool RunsAlongside(const std::vector<int32_t>& a, const std::vector<int32_t>& b) const;
   void RemoveHandleStrips();
   bool ConnectedAroundEdge(int32_t u,
     int32_t v,
@@ -1215,6 +1226,48 @@ bool Reconstruction::LeavesSheetsAtBothEnds(int32_t u, int32_t v, int64_t t0, in
   return std::abs(vtkMath::Dot(nu, chord)) > steep && std::abs(vtkMath::Dot(nv, chord)) > steep;
 }
 
+// Step 4 (issue 7): whether the loop `a` runs alongside the loop `b` across a narrow band of
+// missing surface: for at least half of the points v of `a`, the nearest point q of `b` is within
+// MaximumBridgeLength spacings and the gap v -> q runs along the surface, within 30 degrees of v's
+// tangent plane (the area-weighted normal of v's triangles), as the gap between the two rims of a
+// band around a thin part does; across the space between two facing sheets (two holes facing each
+// other) it leaves the surface. Half, not all: step 2 leaves the rims ragged, a few spacings
+// farther apart in places than the band is wide. Quadratic in the loop sizes.
+bool Reconstruction::RunsAlongside(const std::vector<int32_t>& a,
+  const std::vector<int32_t>& b) const
+{
+  const double limit = this->Self->GetMaximumBridgeLength() * this->Spacing;
+  const double flat = std::sin(vtkMath::RadiansFromDegrees(30.0));
+  size_t along = 0;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    const double* p = this->P(a[i]);
+    int32_t nearest = -1;
+    double best = limit * limit;
+    for (int32_t q : b)
+    {
+      const double d = vtkMath::Distance2BetweenPoints(p, this->P(q));
+      if (d <= best)
+      {
+        best = d;
+        nearest = q;
+      }
+    }
+    if (nearest >= 0)
+    {
+      double gap[3], normal[3];
+      vtkMath::Subtract(this->P(nearest), p, gap);
+      this->SheetNormal(a[i], -1, -1, normal);
+      along += vtkMath::Normalize(gap) > 0 && std::abs(vtkMath::Dot(gap, normal)) <= flat ? 1 : 0;
+    }
+    if (2 * (along + a.size() - 1 - i) < a.size())
+    {
+      return false; // half out of reach
+    }
+  }
+  return 2 * along >= a.size();
+}
+
 // Whether the triangles t0 and t1 on the two sides of the edge uv stay connected through their
 // edges when uv is cut. Breadth-first from both sides in turn, so that a cut that separates a
 // small piece costs the size of that piece. `seen` (per triangle id) holds marks above `stamp`
@@ -1787,6 +1840,9 @@ void Reconstruction::Step4Bridges()
   const double limit = this->Self->GetMaximumBridgeLength() * this->Spacing;
   std::vector<char> bridged(this->N, 0);
   std::vector<int32_t> nodeChanged; // loops touched by a bridge
+  std::vector<char> inBand(this->LoopIsHole.size(), 0);      // original loops taken as a band
+  std::vector<char> loopBridged(this->LoopIsHole.size(), 0); // original loops with a bridge
+  const size_t originalNodes = this->Nodes.size();
   if (this->Self->GetBridgeIslands() && this->Islands > 0 && limit > 0 && !this->Nodes.empty())
   {
     struct Candidate
@@ -1915,6 +1971,48 @@ void Reconstruction::Step4Bridges()
       }
       admitted->InitPointInsertion(midpoints, bounds);
     }
+    // Issue 7: two island loops of one connected group that run alongside each other
+    // (RunsAlongside, both ways) bound a narrow band of missing surface, a gap that winds around
+    // a thin part: the two rims of a band of lost points around a leg, or of a band cut across a
+    // torus's tube. Each alone is a loop around the part whose farthest-point votes are neutral
+    // and whose triangle normals cancel (an island); a bridge would join them into one hole whose
+    // projection (steps 5 and 6) folds both rims onto one circle, and left to CapOpenEnds each
+    // would get a cap across the part's inside (CGAL's camel, random samples: fills 17 to 18
+    // spacings off the surface). They are triangulated as a strip instead (FillBands). The pair
+    // is tested once (original loops of step 3).
+    std::vector<std::vector<int32_t>> loopVertices;
+    std::map<std::pair<int32_t, int32_t>, bool> bands;
+    auto bandOf = [&](int32_t la, int32_t lb)
+    {
+      if (loopVertices.empty())
+      {
+        // The original loops in order: the nodes of step 3 (the copies come after them).
+        loopVertices.resize(this->LoopIsHole.size());
+        for (size_t i = 0; i < originalNodes; ++i)
+        {
+          loopVertices[this->Nodes[i].Loop].push_back(this->Nodes[i].Vertex);
+        }
+      }
+      const auto key = std::make_pair(std::min(la, lb), std::max(la, lb));
+      auto it = bands.find(key);
+      if (it == bands.end())
+      {
+        it = bands
+               .emplace(key,
+                 !this->LoopIsHole[la] && !this->LoopIsHole[lb] &&
+                   this->RunsAlongside(loopVertices[la], loopVertices[lb]) &&
+                   this->RunsAlongside(loopVertices[lb], loopVertices[la]))
+               .first;
+      }
+      return it->second;
+    };
+    // The original loop `l` starting at its point v.
+    auto rotated = [&](int32_t l, int32_t v)
+    {
+      std::vector<int32_t> ring(loopVertices[l]);
+      std::rotate(ring.begin(), std::find(ring.begin(), ring.end(), v), ring.end());
+      return ring;
+    };
     std::vector<std::array<int32_t, 2>> installed;
     const double separation = this->Self->GetMinimumBridgeSeparation() * this->Spacing;
     for (const Candidate& c : candidates)
@@ -1954,10 +2052,16 @@ void Reconstruction::Step4Bridges()
       const double* b1 = along(nb, +1);
       const bool consistent = angle(a0, b1, a1, b0) <= angle(a0, b0, a1, b1);
       const int32_t ga = find(this->Component[a]), gb = find(this->Component[b]);
+      const int32_t la = this->Nodes[na].Loop, lb = this->Nodes[nb].Loop;
+      if (inBand[la] || inBand[lb])
+      {
+        continue; // taken as a band
+      }
       if (ga == gb)
       {
         // Within one connected group a bridge may only split a loop (closing a hole between
-        // two bridges); joining two of its loops would make a handle.
+        // two bridges); joining two of its loops would make a handle. Two loops not bridged yet
+        // that bound a narrow band are kept for FillBands instead.
         bool sameLoop = false;
         for (int32_t m = this->Nodes[na].Next; m != na; m = this->Nodes[m].Next)
         {
@@ -1969,6 +2073,15 @@ void Reconstruction::Step4Bridges()
         }
         if (!sameLoop)
         {
+          if (!loopBridged[la] && !loopBridged[lb] && bandOf(la, lb))
+          {
+            Band band{ rotated(la, a), rotated(lb, b), {}, {} };
+            if (this->ZipBand(band))
+            {
+              inBand[la] = inBand[lb] = 1;
+              this->Bands.push_back(std::move(band));
+            }
+          }
           continue;
         }
       }
@@ -1987,6 +2100,7 @@ void Reconstruction::Step4Bridges()
           }
         }
       }
+      loopBridged[la] = loopBridged[lb] = 1;
       if (ga != gb)
       {
         parent[gb] = ga;
@@ -2022,7 +2136,7 @@ void Reconstruction::Step4Bridges()
       continue;
     }
     std::vector<int32_t> sequence;
-    bool changed = false, touchesHole = false;
+    bool changed = false, touchesHole = false, band = false;
     for (int32_t n = start; !seen[n]; n = this->Nodes[n].Next)
     {
       seen[n] = 1;
@@ -2030,6 +2144,11 @@ void Reconstruction::Step4Bridges()
       changed = changed || bridged[this->Nodes[n].Vertex] ||
         this->Nodes[n].Loop != this->Nodes[start].Loop;
       touchesHole = touchesHole || this->LoopIsHole[this->Nodes[n].Loop];
+      band = band || inBand[this->Nodes[n].Loop];
+    }
+    if (band)
+    {
+      continue; // FillBands
     }
     bool hole;
     if (!changed)
@@ -2053,6 +2172,125 @@ void Reconstruction::Step4Bridges()
     this->FinalIsHole.push_back(hole ? 1 : 0);
     this->Holes += hole ? 1 : 0;
   }
+  this->Holes += static_cast<vtkIdType>(this->Bands.size());
+}
+
+//------------------------------------------------------------------------------------------------
+// The strip of FillBands between the loops `first` and `second` (each starting at an end of
+// their shortest gap). False when the loops do not run around the part in opposite directions,
+// as the two rims of a band of one consistently oriented surface do (the strip would cross the
+// part): walking along `first`, the nearest point of `second` must move backwards along it, by
+// more than half its length in all; and false when a triangle would be degenerate or a gap of the
+// strip would leave the surface, more than 45 degrees from the tangent plane of one of its ends
+// (RunsAlongside asks 30 degrees of half the rim points; here every gap, ragged rims included,
+// is bounded: where one rim makes an excursion away from the band, the gap would cross the part).
+bool Reconstruction::ZipBand(Band& band) const
+{
+  const std::vector<int32_t>& first = band.First;
+  const std::vector<int32_t>& second = band.Second;
+  const size_t n = first.size(), m = second.size();
+  auto nearest = [&](int32_t v)
+  {
+    size_t best = 0;
+    for (size_t k = 1; k < m; ++k)
+    {
+      if (vtkMath::Distance2BetweenPoints(this->P(v), this->P(second[k])) <
+        vtkMath::Distance2BetweenPoints(this->P(v), this->P(second[best])))
+      {
+        best = k;
+      }
+    }
+    return static_cast<long>(best);
+  };
+  long drift = 0, previous = nearest(first[0]);
+  const long half = static_cast<long>(m / 2);
+  for (size_t i = 1; i <= n; ++i)
+  {
+    const long current = nearest(first[i % n]);
+    const long step =
+      (current - previous + static_cast<long>(m) + half) % static_cast<long>(m) - half;
+    drift += step;
+    previous = current;
+  }
+  if (2 * drift > -static_cast<long>(m))
+  {
+    return false;
+  }
+  const double flat = std::sin(vtkMath::RadiansFromDegrees(45.0));
+  auto alongSurface = [&](int32_t u, int32_t v)
+  {
+    double gap[3], nu[3], nv[3];
+    vtkMath::Subtract(this->P(v), this->P(u), gap);
+    this->SheetNormal(u, -1, -1, nu);
+    this->SheetNormal(v, -1, -1, nv);
+    return vtkMath::Normalize(gap) > 0 && std::abs(vtkMath::Dot(gap, nu)) <= flat &&
+      std::abs(vtkMath::Dot(gap, nv)) <= flat;
+  };
+  band.Triangles.clear();
+  band.Gaps.clear();
+  for (size_t i = 0, j = 0; i < n || j < m;)
+  {
+    const int32_t a = first[i % n], b = second[(m - j % m) % m];
+    const int32_t nextA = first[(i + 1) % n], nextB = second[(2 * m - j % m - 1) % m];
+    const double viaA = Distance(this->P(nextA), this->P(b));
+    const double viaB = Distance(this->P(a), this->P(nextB));
+    const bool alongFirst = j == m || (i < n && viaA <= viaB);
+    const std::array<int32_t, 3> triangle =
+      alongFirst ? std::array<int32_t, 3>{ nextA, a, b } : std::array<int32_t, 3>{ b, nextB, a };
+    if (pcs::projected::Collinear(
+          this->P(triangle[0]), this->P(triangle[1]), this->P(triangle[2])) ||
+      !alongSurface(alongFirst ? nextA : a, alongFirst ? b : nextB))
+    {
+      return false;
+    }
+    band.Triangles.insert(band.Triangles.end(), triangle.begin(), triangle.end());
+    band.Gaps.push_back({ a, b });
+    (alongFirst ? i : j) += 1;
+  }
+  return true;
+}
+
+// Issue 7: the band of missing surface between two loops that run alongside each other
+// (Step4Bridges: a gap around a thin part) is triangulated as a strip, as a ruled surface between
+// two curves: from the shortest gap between them, the two loops are walked in the same sense
+// around the part (the first along its direction, the second against it: the mesh runs the two
+// rims of a band in opposite directions) and each triangle joins the current gap to the next
+// point of one loop, the one that gives the shorter new gap. Projected like a hole (steps 5 and
+// 6), the two rims of a band around a tube fall onto one circle and the fill crosses the tube.
+// The lost points in the band are connected later (InsertLostPoints). A strip with a degenerate
+// triangle, or that meets the mesh (FillMeetsMesh) or would break the manifold, is left open, and
+// so are its loops in the later steps.
+void Reconstruction::FillBands()
+{
+  if (this->Bands.empty())
+  {
+    return;
+  }
+  this->CollectLongTriangles();
+  std::vector<int64_t> added;
+  for (const Band& band : this->Bands)
+  {
+    if (this->FillMeetsMesh(band.Triangles) ||
+      !this->Mesh.AddTriangles(band.Triangles.data(), band.Triangles.size() / 3, added))
+    {
+      ++this->HolesLeftOpen;
+      ++this->FillsRefused;
+      this->OnRefusedLoop.resize(static_cast<size_t>(this->N), 0);
+      for (const auto* loop : { &band.First, &band.Second })
+      {
+        for (int32_t v : *loop)
+        {
+          this->OnRefusedLoop[v] = 1;
+        }
+      }
+      continue;
+    }
+    pcs::holes::FillResult result; // the gaps join the step 7 swap candidates
+    result.Chords = band.Gaps;
+    this->RecordFill(result);
+    this->AccountForFill(band.Triangles);
+    ++this->HolesFilled;
+  }
 }
 
 //------------------------------------------------------------------------------------------------
@@ -2064,6 +2302,7 @@ void Reconstruction::Step6FillHoles(double begin, double end)
     this->HolesLeftOpen = this->Holes;
     return;
   }
+  this->FillBands();
   const double diameterLimit = this->Self->GetMaximumHoleDiameter();
   pcs::holes::HoleFiller filler;
   filler.AuxiliaryDistance = this->Self->GetAuxiliaryPointDistance() * this->Spacing;

@@ -138,6 +138,25 @@
  *   to flip is refused). Installing a bridge splices the loops at A and B (the paper's
  *   duplicated points A', B'); afterwards every loop made of original loops is classified again
  *   (step 3), a loop that contains a fragment of a hole is a hole.
+ *   Bands (ours, issue 7): a band of missing surface around a thin part (a ring of lost points
+ *   around a leg, a band cut across a torus's tube) leaves two loops that each go once around
+ *   the part; step 3 calls both islands (their votes are neutral, their triangle normals cancel)
+ *   and, when one connected piece holds both, no bridge may join them; each was then capped like
+ *   a tube's cut end (below), the caps crossing the part (17 to 18 spacings from the surface on
+ *   random samples of CGAL's camel and on a torus). Two island loops of one piece, not bridged
+ *   yet, bound a band when each runs alongside the other: for at least half of its points the
+ *   nearest point of the other loop is within MaximumBridgeLength spacings, in a direction within
+ *   30 degrees of the point's tangent plane (the area-weighted normal of its triangles; across
+ *   the space between two facing sheets the direction leaves the surface). The band is
+ *   triangulated as a strip between the two loops (stage 6, before the other holes): from their
+ *   shortest gap, both loops are walked in the same sense around the part and each triangle joins
+ *   the current gap to the next point of the loop that gives the shorter new gap; the gaps join
+ *   the step 7 swap candidates and the lost points in the band are connected by the lost point
+ *   insertion. The strip is not made, and the loops go on as before, when the two loops run
+ *   around the part in the same direction (the mesh beside them is not oriented as one band's
+ *   sides: the strip would cross the part) or when a gap would leave the tangent plane at one of
+ *   its ends by more than 45 degrees; it is refused like a fill when it meets the mesh or would
+ *   break the manifold (the loops then stay open).
  * - Step 5 (Fig. 12, 13) and step 6: every hole whose diameter is at most MaximumHoleDiameter
  *   (when FillHoles is on) is split recursively by chords until each piece projects
  *   unambiguously onto its average plane (auxiliary points at AuxiliaryPointDistance, paper:

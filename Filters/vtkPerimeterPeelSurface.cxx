@@ -41,6 +41,26 @@ vtkStandardNewMacro(vtkPerimeterPeelSurface);
 
 namespace
 {
+// The slots of facet j of a positively oriented cell (v0, v1, v2, v3), ordered so that the
+// triangle's normal (right-hand rule) points away from the cell: the increasing-slot triple
+// without slot j faces away from v_j when j is odd and towards it when j is even.
+std::array<int, 3> FacetSlots(int j)
+{
+  std::array<int, 3> slots;
+  for (int k = 0, m = 0; k < 4; ++k)
+  {
+    if (k != j)
+    {
+      slots[m++] = k;
+    }
+  }
+  if (j % 2 == 0)
+  {
+    std::swap(slots[1], slots[2]);
+  }
+  return slots;
+}
+
 // The solid being peeled: the finite tetrahedra of a Delaunay tetrahedralization, each inside or
 // outside (removed, or infinite), with the number of inside and outside cells around each vertex.
 class PeelSolid
@@ -253,23 +273,12 @@ public:
   }
 
   // The triangle of facet j of the finite cell c, ordered so that its normal (right-hand rule)
-  // points away from c. In a positively oriented cell (v0, v1, v2, v3), the increasing-slot triple
-  // without vertex j faces away from v_j when j is odd and towards it when j is even.
+  // points away from c (FacetSlots).
   std::array<int32_t, 3> FacetTriangle(int64_t c, int j) const
   {
-    std::array<int32_t, 3> t;
-    for (int k = 0, m = 0; k < 4; ++k)
-    {
-      if (k != j)
-      {
-        t[m++] = this->DT.Vertex(c, k);
-      }
-    }
-    if (j % 2 == 0)
-    {
-      std::swap(t[1], t[2]);
-    }
-    return t;
+    const std::array<int, 3> slots = FacetSlots(j);
+    return { this->DT.Vertex(c, slots[0]), this->DT.Vertex(c, slots[1]),
+      this->DT.Vertex(c, slots[2]) };
   }
 
   // The normal of facet j of the finite cell c pointing away from c (twice the area long).
@@ -1361,18 +1370,7 @@ private:
           continue;
         }
         // The slots of the facet's triangle in the order of PeelSolid::FacetTriangle.
-        int slot[3];
-        for (int k = 0, m = 0; k < 4; ++k)
-        {
-          if (k != j)
-          {
-            slot[m++] = k;
-          }
-        }
-        if (j % 2 == 0)
-        {
-          std::swap(slot[1], slot[2]);
-        }
+        const std::array<int, 3> slot = FacetSlots(j);
         std::array<double, 3> normal;
         bool measured = false;
         for (int e = 0; e < 3; ++e)

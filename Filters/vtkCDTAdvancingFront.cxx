@@ -799,7 +799,6 @@ private:
   std::vector<Id> PointCandidates;
   std::vector<std::pair<Id, Id>> EdgeCandidates;
   std::vector<std::pair<double, Id>> Candidates;
-  std::vector<std::pair<double, Id>> RingCandidates; // BestThirdPoint: a buffer (only grows)
   std::vector<std::pair<double, Id>> Pending; // BestThirdPoint on scan lines: for the next ring
   std::vector<Id> Ears;                       // BestThirdPoint in III.C: the ears of the edge
   std::vector<Id> Neighbors;
@@ -1449,10 +1448,7 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
     // without a branch on each test (see PassesProjectionTests).
     const size_t inBall =
       this->Bins.GatherWithinRadius(std::min(radii[ring], this->Diagonal), midpoint, this->Ball);
-    if (this->RingCandidates.size() < inBall)
-    {
-      this->RingCandidates.resize(2 * inBall);
-    }
+    this->Candidates.resize(inBall); // (empty before: cleared above)
     size_t kept = 0;
     for (size_t i = 0; i < inBall; ++i)
     {
@@ -1460,11 +1456,10 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& parameters
       const double d2 = this->Ball[i].second;
       const bool candidate = (d2 > inner2) & (d2 <= outer2) & (x != e0) & (x != e1) &
         (x != opposite) & (this->Status[x] == Usable) & !this->Mesh.IsInterior(x);
-      this->RingCandidates[kept] = { stretchedEdge ? this->RankDistance2(midpoint, x, e0, e1) : d2,
-        x };
+      this->Candidates[kept] = { stretchedEdge ? this->RankDistance2(midpoint, x, e0, e1) : d2, x };
       kept += candidate ? 1 : 0;
     }
-    this->Candidates.assign(this->RingCandidates.begin(), this->RingCandidates.begin() + kept);
+    this->Candidates.resize(kept);
     for (Id x : this->Ears) // (empty unless relaxed)
     {
       consider(x, Distance2(this->P(x), midpoint));

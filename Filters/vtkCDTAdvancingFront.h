@@ -232,23 +232,23 @@
  * and diplodocus and the 10^5-point samples of the camel and the elephant; with estimated normals
  * 1.33-1.65 times faster on the same clouds but the vertex sets of the camel and the elephant,
  * 1.04 and 1.25 times slower there (a front that refuses more candidates, and the normal
- * estimation; the II.D projection tests of the triangles made are about half of the work). Quality: 0 non-manifold edges and vertices and
- * coverage >= 99 % on every clean cloud; the Hausdorff distance exceeds 2 mean spacings on the
- * 10^5-point samples of the armadillo (2.04, a hole with edges of 7 spacings on a fold) and the
- * camel (2.36: a sharp tip of the mesh is 2.36 spacings from the nearest sample point, CGAL 2.38)
- * with exact normals, and with estimated normals on the camel samples (2.36); the camel vertex
- * set went from 2.79 (triangles standing across the surface on the underside of the body, where
- * the PCA planes of its rows were 60-90 degrees off) to 1.55 with the planes of rows (728 of its
- * 9,770 normals more than 30 degrees off the mesh's, 183 more than 60), the elephant vertex set
- * from 2.36 to 0.75 with the spanning-tree orientation. Estimated normals are oriented per
- * connected part of the neighbour graph by a vote of its extreme points, which can fail (CGAL's
- * elk vertex set: most normals point inwards, before and after). Noisy clouds
- * (Gaussian noise of 0.4 mean spacing): many front edges and points find no valid triangle (the
- * noise puts neighbouring points inside the candidate triangles' projections); the work per front
- * edge and per seed point is bounded by MaximumNumberOfCandidates, but the filter still takes 3-9
- * times CGAL's CPU time, leaves holes (coverage 0.94-0.98) and unused points (2-6 %), measured
- * before the noise band (see Noise above; the noisy sphere's boundary edges went from 2,368 to
- * 579, still twice CGAL's).
+ * estimation; the II.D projection tests of the triangles made are about half of the work).
+ * Quality: 0 non-manifold edges and vertices and coverage >= 99 % on every clean cloud; the
+ * Hausdorff distance exceeds 2 mean spacings on the 10^5-point samples of the armadillo (2.04, a
+ * hole with edges of 7 spacings on a fold) and the camel (2.36: a sharp tip of the mesh is 2.36
+ * spacings from the nearest sample point, CGAL 2.38) with exact normals, and with estimated normals
+ * on the camel samples (2.36); the camel vertex set went from 2.79 (triangles standing across the
+ * surface on the underside of the body, where the PCA planes of its rows were 60-90 degrees off) to
+ * 1.55 with the planes of rows (728 of its 9,770 normals more than 30 degrees off the mesh's, 183
+ * more than 60), the elephant vertex set from 2.36 to 0.75 with the spanning-tree orientation.
+ * Estimated normals are oriented per connected part of the neighbour graph by a vote of its extreme
+ * points, which can fail (CGAL's elk vertex set: most normals point inwards, before and after).
+ * Noisy clouds (Gaussian noise of 0.4 mean spacing): many front edges and points find no valid
+ * triangle (the noise puts neighbouring points inside the candidate triangles' projections); the
+ * work per front edge and per seed point is bounded by MaximumNumberOfCandidates, but the filter
+ * still takes 3-9 times CGAL's CPU time, leaves holes (coverage 0.94-0.98) and unused points
+ * (2-6 %), measured before the noise band (see Noise above; the noisy sphere's boundary edges went
+ * from 2,368 to 579, still twice CGAL's).
  *
  * @sa
  * vtkPCANormalEstimation vtkStaticPointLocator vtkReconstructionQuality vtkIncrementalDelaunay3D

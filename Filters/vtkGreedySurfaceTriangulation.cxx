@@ -1328,7 +1328,9 @@ bool Reconstruction::ConnectedAroundEdge(int32_t u,
 // - the chord leaves the surface at both ends: it makes more than 30 degrees with the tangent
 //   planes of u and of v, each the plane of the point's triangles other than the two at the chord
 //   (their area-weighted normal); an edge of a sampled surface lies in its tangent planes up to
-//   the curvature over a spacing.
+//   the curvature over a spacing. (Not the PCA plane of the K nearest, as IsNaturalBorder uses:
+//   about 2 spacings from the other sheet, the K nearest straddle both sheets and their plane
+//   tilts towards the chord.)
 // The two triangles at such a chord are removed (and the triangles of the vertices left with two
 // fans, ClearPinches), one chord at a time, the conditions checked again on the current mesh.
 // Their points become lost points for the later steps. A true handle is cut this way only when

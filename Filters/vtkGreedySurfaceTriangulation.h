@@ -185,26 +185,26 @@
  *   open by these rules is not filled by the later steps either. Counted in
  *   NumberOfFillsRefused (and in NumberOfHolesLeftOpen for step 6). The fairing (below) moves
  *   the new points of a fill afterwards and is not checked again.
- * - Natural borders (ours, issue 7): a scan is often open (a head without its neck, a tube open
- *   at both ends, a vase's mouth), and a faired cap on such a border bulges far from any sample.
- *   A loop is taken for a natural border, and neither step 6 nor CapOpenEnds fills it, when all
- *   of these hold: it is wider than MaximumBridgeLength spacings (a narrower gap is a sampling
- *   gap); its rim is planar (rms distance to its least-squares plane at most 0.05 times its
- *   diameter); the surface meets that plane steeply (the mean |cos| of the angle between the
- *   plane's normal and the tangent planes of the rim points, each the plane of the point and its
- *   NumberOfNeighbors nearest, below 0.5: more than 60 degrees); and no input point lies within
- *   half the rim's radius of its centre (samples inside the rim, e.g. a flat end whose points
- *   step 2 lost) nor beyond the plane, more than 3 spacings from it, within the ball of the rim's
- * radius tangent to the plane at the rim's centre on the side away from the surface. A removed
- * region of a curved surface leaves a rim the surface crosses at a shallow angle (a sphere's cap of
- * half-angle a: |cos| = cos a; on 8,000 random points caps of 20, 40 and 55 degrees are filled,
- * one of 60 degrees, at the threshold, is left open, a larger one is a bowl's rim), or a rim that is not planar (a ball removed from a bunny: 0.06 to 0.09 of its
- *   diameter); a part cut off from a body by a removed band (an ear, a capsule's half) faces the
- *   body across the gap. Measured on the loops before filling (mean |cos| from the mesh
- *   triangles on the rim): tube ends 0.05 to 0.09, the neck of CGAL's head 0.34,
- *   mannequin-devil 0.36, lion 0.42; removed sphere caps of 20, 40 and 60 degrees 0.93, 0.75
- *   and 0.51. A natural border that is not planar (the silhouette of a statue scanned from the
- *   front) is still filled. Counted in NumberOfHolesLeftOpen when step 3 called it a hole.
+ * - Natural borders (ours, issue 7): a scan is often open (a head without its neck, a tube open at
+ *   both ends, a vase's mouth), and a faired cap on such a border bulges far from any sample. A
+ *   loop is taken for a natural border, and neither step 6 nor CapOpenEnds fills it, when all of
+ *   these hold: it is wider than MaximumBridgeLength spacings (a narrower gap is a sampling gap);
+ *   its rim is planar (rms distance to its least-squares plane at most 0.05 times its diameter);
+ *   the surface meets that plane steeply (the mean |cos| of the angle between the plane's normal
+ *   and the tangent planes of the rim points, each the plane of the point and its NumberOfNeighbors
+ *   nearest, below 0.5: more than 60 degrees); and no input point lies within half the rim's radius
+ *   of its centre (samples inside the rim, e.g. a flat end whose points step 2 lost) nor beyond the
+ *   plane, more than 3 spacings from it, within the ball of the rim's radius tangent to the plane
+ *   at the rim's centre on the side away from the surface. A removed region of a curved surface
+ *   leaves a rim the surface crosses at a shallow angle (a sphere's cap of half-angle a: |cos| =
+ *   cos a; on 8,000 random points caps of 20, 40 and 55 degrees are filled, one of 60 degrees, at
+ *   the threshold, is left open, a larger one is a bowl's rim), or a rim that is not planar (a ball
+ *   removed from a bunny: 0.06 to 0.09 of its diameter); a part cut off from a body by a removed
+ *   band (an ear, a capsule's half) faces the body across the gap. Measured on the loops before
+ *   filling (mean |cos| from the mesh triangles on the rim): tube ends 0.05 to 0.09, the neck of
+ *   CGAL's head 0.34, mannequin-devil 0.36, lion 0.42; removed sphere caps of 20, 40 and 60 degrees
+ *   0.93, 0.75 and 0.51. A natural border that is not planar (the silhouette of a statue scanned
+ *   from the front) is still filled. Counted in NumberOfHolesLeftOpen when step 3 called it a hole.
  * - Step 7 (Fig. 14): the duplicated points are merged back (the mesh refers to the original
  *   points throughout) and, when SwapBridgeEdges is on, every bridge or chord edge AB whose two
  *   triangles ABC, BAD have |CD| < |AB| is replaced by CD, unless CD is an edge already or the
@@ -252,13 +252,13 @@
  *   apart: the outer border of an open surface spans about the area of its piece (a flat sheet
  *   1, a half cylinder pi / 2, a hemisphere bowl 2), the end of a tube reaching h beyond a
  *   hemisphere of the rim's radius r gives 2 + 2 h / r, and a narrow slit going back along
- *   itself spans almost nothing. A natural border (above: a planar rim the surface meets
- *   steeply, nothing beyond it: a vase's mouth) is not capped. The caps are fill triangles
- *   (stage 6), refined and faired like the others (FairHoleFills): across a cut the cap bulges to
- * continue the tube, so the two caps of a narrow cut come close (a capsule of radius 22 spacings
- * cut by an empty slab 17 spacings wide: 1 spacing apart). Counted in NumberOfEndsCapped, the
- * fallback also in NumberOfSmallLoopsFilledByDihedral. Parts are not joined back to the body: the
- * hole the part left in it has been filled by then.
+ *   itself spans almost nothing. A natural border (above: a planar rim the surface meets steeply,
+ *   nothing beyond it: a vase's mouth) is not capped. The caps are fill triangles (stage 6),
+ *   refined and faired like the others (FairHoleFills): across a cut the cap bulges to continue the
+ *   tube, so the two caps of a narrow cut come close (a capsule of radius 22 spacings cut by an
+ *   empty slab 17 spacings wide: 1 spacing apart). Counted in NumberOfEndsCapped, the fallback also
+ *   in NumberOfSmallLoopsFilledByDihedral. Parts are not joined back to the body: the hole the part
+ *   left in it has been filled by then.
  * - Fill refinement and fairing (ours, when FairHoleFills and FillHoles are on; "9" in
  *   StepsUsed; after Liepa, "Filling Holes in Meshes", SGP 2003, sections 3.2-3.3): step 6
  *   projects a hole on its average plane, so across a region without input points the fill is

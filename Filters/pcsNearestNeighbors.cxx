@@ -74,14 +74,8 @@ bool SpreadsAlongCurve(const double* xyz,
   {
     return false;
   }
-  double* rows[3] = { covariance[0], covariance[1], covariance[2] };
-  double values[3], column0[3], column1[3], column2[3];
-  double* vectors[3] = { column0, column1, column2 };
-  vtkMath::Jacobi(rows, values, vectors); // decreasing eigenvalues, eigenvectors in columns
-  for (int c = 0; c < 3; ++c)
-  {
-    direction[c] = vectors[c][0];
-  }
+  double values[3];
+  LargestEigenvector(covariance, values, direction);
   // Confined to a curve through p: none of them off the line p + t direction (see
   // AddOffLineNeighbors for "off").
   for (int j = 0; j < nearest && j < k; ++j)

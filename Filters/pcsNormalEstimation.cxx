@@ -37,9 +37,10 @@ inline double ReflectedAgreement(const double* p, const double* n, const double*
   }
   return Dot(n, m) - 2.0 * Dot(n, chord) * Dot(chord, m) / length2;
 }
-}
 
-void SmallestEigenvector(const double a[3][3], double values[3], double vector[3])
+// SmallestEigenvector (column 2) and LargestEigenvector (column 0): the eigenvector of the
+// eigenvalue of rank `column` in decreasing order.
+void ExtremeEigenvector(const double a[3][3], double values[3], int column, double vector[3])
 {
   double scale = 0.0;
   for (int r = 0; r < 3; ++r)
@@ -81,12 +82,13 @@ void SmallestEigenvector(const double a[3][3], double values[3], double vector[3
     const double largest = q + 2.0 * p * std::cos(phi);
     const double smallest = q + 2.0 * p * std::cos(phi + 2.0 * vtkMath::Pi() / 3.0);
     const double middle = 3.0 * q - largest - smallest;
+    const double shift = column == 0 ? largest : smallest;
     double rows[3][3];
     for (int r = 0; r < 3; ++r)
     {
       for (int k = 0; k < 3; ++k)
       {
-        rows[r][k] = b[r][k] - (r == k ? smallest : 0.0);
+        rows[r][k] = b[r][k] - (r == k ? shift : 0.0);
       }
     }
     double best[3] = { 0.0, 0.0, 0.0 };
@@ -123,9 +125,29 @@ void SmallestEigenvector(const double a[3][3], double values[3], double vector[3
     double column0[3], column1[3], column2[3];
     double* vectors[3] = { column0, column1, column2 };
     vtkMath::Jacobi(matrix, values, vectors); // eigenvalues in decreasing order
-    vector[0] = vectors[0][2];
-    vector[1] = vectors[1][2];
-    vector[2] = vectors[2][2];
+    vector[0] = vectors[0][column];
+    vector[1] = vectors[1][column];
+    vector[2] = vectors[2][column];
+  }
+}
+}
+
+void SmallestEigenvector(const double a[3][3], double values[3], double vector[3])
+{
+  ExtremeEigenvector(a, values, 2, vector);
+}
+
+void LargestEigenvector(const double a[3][3], double values[3], double vector[3])
+{
+  ExtremeEigenvector(a, values, 0, vector);
+  // vtkMath::Jacobi's sign: at least two non-negative components.
+  const int nonNegative =
+    (vector[0] >= 0.0 ? 1 : 0) + (vector[1] >= 0.0 ? 1 : 0) + (vector[2] >= 0.0 ? 1 : 0);
+  if (nonNegative < 2)
+  {
+    vector[0] = -vector[0];
+    vector[1] = -vector[1];
+    vector[2] = -vector[2];
   }
 }
 

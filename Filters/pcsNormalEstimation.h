@@ -19,6 +19,12 @@ class PointBins;
 /// falls back to vtkMath::Jacobi. Several times cheaper than Jacobi's iterations.
 void SmallestEigenvector(const double a[3][3], double values[3], double vector[3]);
 
+/// SmallestEigenvector's solver for the unit eigenvector of the largest eigenvalue (`values` as
+/// there), the sign as vtkMath::Jacobi's (at least two non-negative components). Well defined
+/// where the largest eigenvalue is well separated from the others (the principal direction of
+/// points spread along a curve); falls back to vtkMath::Jacobi where the cross products vanish.
+void LargestEigenvector(const double a[3][3], double values[3], double vector[3]);
+
 /// Covariance of the offsets q - p from the point `p` to its neighbours `row` (`count` ids into
 /// `xyz`, packed x, y, z; -1 for none; an offset with a non-finite coordinate is skipped), with
 /// p itself as one more offset 0 when `withPoint` is true: C = S2 / s0 - m m^T with m = S1 / s0,

@@ -15,7 +15,15 @@
 //   and piles of 2 to 20 copies, with points in later rows (the candidate buffer must make room
 //   for the whole pile and the rest of its row: a single point written past its end was zeroed
 //   when the buffer grew for the next row).
+// - the closed-form 3 x 3 symmetric eigenvectors (pcs::LargestEigenvector, used by the curve test
+//   of AddOffLineNeighbors, and pcs::SmallestEigenvector) on matrices R diag(l) R^T of known
+//   eigenvalues and random rotations R, from 1e-8 to 1e8 in scale: the eigenvector within 1e-9 of
+//   the known axis (up to sign; the largest's sign vtkMath::Jacobi's, at least two non-negative
+//   components), the eigenvalues within 1e-7 of the largest (the trigonometric solution loses
+//   about half the digits of two nearly equal eigenvalues: 7e-9 on a rank-1 matrix); a multiple
+//   of the identity and the zero matrix (the fallback) give unit vectors.
 #include "pcsNearestNeighbors.h"
+#include "pcsNormalEstimation.h"
 
 #include "pcsTestUtilities.h"
 
@@ -267,6 +275,132 @@ bool CheckPileBeforeSinglePoints()
   }
   return ok;
 }
+
+bool CheckExtremeEigenvectors()
+{
+  bool ok = true;
+  std::mt19937 random(7);
+  std::normal_distribution<double> gaussian;
+  auto unit = [&](double v[3])
+  {
+    const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (int c = 0; c < 3; ++c)
+    {
+      v[c] /= length;
+    }
+  };
+  const double spectra[][3] = { { 5.0, 1.0, 0.01 },
+    { 1.0, 1e-3, 1e-4 },
+    { 1.0, 0.5, 0.49 },
+    { 1.0, 0.99, 1e-3 },
+    { 2.0, 1e-12, 0.0 } };
+  for (const double scale : { 1e-8, 1.0, 1e8 })
+  {
+    for (const auto& spectrum : spectra)
+    {
+      for (int trial = 0; trial < 100; ++trial)
+      {
+        // An orthonormal frame: the largest's axis, the middle's, the smallest's.
+        double axes[3][3];
+        for (int c = 0; c < 3; ++c)
+        {
+          axes[0][c] = gaussian(random);
+          axes[1][c] = gaussian(random);
+        }
+        unit(axes[0]);
+        const double along =
+          axes[1][0] * axes[0][0] + axes[1][1] * axes[0][1] + axes[1][2] * axes[0][2];
+        for (int c = 0; c < 3; ++c)
+        {
+          axes[1][c] -= along * axes[0][c];
+        }
+        unit(axes[1]);
+        axes[2][0] = axes[0][1] * axes[1][2] - axes[0][2] * axes[1][1];
+        axes[2][1] = axes[0][2] * axes[1][0] - axes[0][0] * axes[1][2];
+        axes[2][2] = axes[0][0] * axes[1][1] - axes[0][1] * axes[1][0];
+        double a[3][3];
+        for (int r = 0; r < 3; ++r)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            a[r][c] = 0.0;
+            for (int k = 0; k < 3; ++k)
+            {
+              a[r][c] += scale * spectrum[k] * axes[k][r] * axes[k][c];
+            }
+          }
+        }
+        const bool largestSeparated = spectrum[0] - spectrum[1] >= 0.1 * spectrum[0];
+        const bool smallestSeparated = spectrum[1] - spectrum[2] >= 0.1 * spectrum[0];
+        for (const bool largest : { true, false })
+        {
+          if (largest ? !largestSeparated : !smallestSeparated)
+          {
+            continue;
+          }
+          double values[3], vector[3];
+          if (largest)
+          {
+            pcs::LargestEigenvector(a, values, vector);
+          }
+          else
+          {
+            pcs::SmallestEigenvector(a, values, vector);
+          }
+          const double* axis = axes[largest ? 0 : 2];
+          const double dot = vector[0] * axis[0] + vector[1] * axis[1] + vector[2] * axis[2];
+          const double length2 =
+            vector[0] * vector[0] + vector[1] * vector[1] + vector[2] * vector[2];
+          bool good = std::fabs(std::fabs(dot) - 1.0) <= 1e-9 && std::fabs(length2 - 1.0) <= 1e-12;
+          for (int k = 0; k < 3; ++k)
+          {
+            good = good && std::fabs(values[k] - scale * spectrum[k]) <= 1e-7 * scale * spectrum[0];
+          }
+          if (largest)
+          {
+            const int nonNegative =
+              (vector[0] >= 0.0 ? 1 : 0) + (vector[1] >= 0.0 ? 1 : 0) + (vector[2] >= 0.0 ? 1 : 0);
+            good = good && nonNegative >= 2;
+          }
+          if (!good)
+          {
+            std::cerr << (largest ? "LargestEigenvector" : "SmallestEigenvector") << ", scale "
+                      << scale << ", eigenvalues " << spectrum[0] << " " << spectrum[1] << " "
+                      << spectrum[2] << ": dot with the axis " << dot << ", values " << values[0]
+                      << " " << values[1] << " " << values[2] << "\n";
+            ok = false;
+          }
+        }
+      }
+    }
+  }
+  // No separated eigenvalue (the fallback): still unit vectors and the eigenvalues.
+  for (const double diagonal : { 3.0, 0.0 })
+  {
+    const double a[3][3] = {
+      { diagonal, 0.0, 0.0 }, { 0.0, diagonal, 0.0 }, { 0.0, 0.0, diagonal }
+    };
+    for (const bool largest : { true, false })
+    {
+      double values[3], vector[3];
+      if (largest)
+      {
+        pcs::LargestEigenvector(a, values, vector);
+      }
+      else
+      {
+        pcs::SmallestEigenvector(a, values, vector);
+      }
+      const double length2 = vector[0] * vector[0] + vector[1] * vector[1] + vector[2] * vector[2];
+      if (std::fabs(length2 - 1.0) > 1e-12 || values[0] != diagonal || values[2] != diagonal)
+      {
+        std::cerr << "eigenvector of " << diagonal << " I: squared length " << length2 << "\n";
+        ok = false;
+      }
+    }
+  }
+  return ok;
+}
 }
 
 int TestNearestNeighbors(int, char*[])
@@ -274,5 +408,6 @@ int TestNearestNeighbors(int, char*[])
   bool ok = CheckAgainstBruteForce();
   ok = CheckScanLines() && ok;
   ok = CheckPileBeforeSinglePoints() && ok;
+  ok = CheckExtremeEigenvectors() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

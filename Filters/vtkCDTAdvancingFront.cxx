@@ -29,7 +29,6 @@
 #include "vtkPolyData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
-#include "vtkStaticPointLocator.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -291,21 +290,37 @@ vtkIdType RemovePinches(pcs::SurfaceMesh& mesh)
 }
 
 //------------------------------------------------------------------------------------------------
-// The locator of the points of `cloud`, with bins sized for a surface sample
-// (pcs::SetSurfaceSampleDivisions, about 4 bins per point over the box's volume, area or length):
-// VTK's automatic bins suit points filling their box, and on a surface sample a bin would be
-// about ten point spacings wide, so that every neighbourhood query of the front (a few spacings)
-// would visit many points it does not return. On the benchmark clouds a bin is 2.5 to 5 mean
-// spacings wide. This changes the cost of the queries, never their answers. One build: the bins
-// were earlier resized after a first automatic build, from a spacing estimated by 500
-// FindClosestNPoints queries on those coarse bins (up to a tenth of the time on 2,775 points).
-void BuildSurfaceLocator(vtkStaticPointLocator* locator, vtkPolyData* cloud, Id n)
+// The bounds of the n points of `xyz` (finite), and the points filed into bins sized for a
+// surface sample over them (pcs::SurfaceSampleDivisions, about 4 bins per point over the box's
+// volume, area or length): VTK's automatic bins suit points filling their box, and on a surface
+// sample a bin would be about ten point spacings wide, so that every neighbourhood query of the
+// front (a few spacings) would visit many points it does not return. On the benchmark clouds a
+// bin is 2.5 to 5 mean spacings wide. This changes the cost of the queries, never their answers.
+// Every query is made on the bins (pcs::PointBins): no vtkStaticPointLocator is built (its
+// BuildLocator and the cloud's GetBounds were 1.6 % of the instructions on the camel vertices).
+void FileSurfaceBins(pcs::PointBins& bins,
+  const double* xyz,
+  Id n,
+  bool withCoordinates,
+  double bounds[6])
 {
-  double bounds[6];
-  cloud->GetBounds(bounds);
-  pcs::SetSurfaceSampleDivisions(locator, bounds, n);
-  locator->SetDataSet(cloud);
-  locator->BuildLocator();
+  for (int c = 0; c < 3; ++c)
+  {
+    bounds[2 * c] = n > 0 ? xyz[c] : 0.0;
+    bounds[2 * c + 1] = bounds[2 * c];
+  }
+  for (Id k = 1; k < n; ++k)
+  {
+    const double* p = xyz + 3 * static_cast<size_t>(k);
+    for (int c = 0; c < 3; ++c)
+    {
+      bounds[2 * c] = std::min(bounds[2 * c], p[c]);
+      bounds[2 * c + 1] = std::max(bounds[2 * c + 1], p[c]);
+    }
+  }
+  int divisions[3];
+  pcs::SurfaceSampleDivisions(bounds, n, 4.0, divisions);
+  bins.Build(bounds, divisions, xyz, n, withCoordinates);
 }
 
 // The ids of the points within `radius` of x (in no particular order) filed in `bins`
@@ -533,7 +548,7 @@ public:
     const double* stretch,
     const NoiseBands& noiseBand,
     const std::vector<uint8_t>& status,
-    vtkStaticPointLocator* locator,
+    const double bounds[6],
     const pcs::PointBins& bins,
     pcs::SurfaceMesh& mesh)
     : Self(self)
@@ -543,7 +558,6 @@ public:
     , Stretch(stretch)
     , NoiseBand(noiseBand)
     , Status(status)
-    , Locator(locator)
     , Bins(bins)
     , Mesh(mesh)
     , Stamp(status.size(), 0)
@@ -567,8 +581,7 @@ public:
         this->Stretched[i] = s[0] != 0.0 || s[1] != 0.0 || s[2] != 0.0 ? 1 : 0;
       }
     }
-    double bounds[6];
-    locator->GetDataSet()->GetBounds(bounds);
+    std::copy_n(bounds, 6, this->Bounds);
     this->Diagonal = 1.01 *
         std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
           (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
@@ -579,9 +592,7 @@ public:
   // Cell size of the edge-reach grid (a few neighbourhood radii).
   void SetEdgeReachCellSize(double size)
   {
-    double bounds[6];
-    this->Locator->GetDataSet()->GetBounds(bounds);
-    this->EdgeReach.Initialize(bounds, std::min(size, this->Diagonal));
+    this->EdgeReach.Initialize(this->Bounds, std::min(size, this->Diagonal));
   }
 
   // The triangles made, their origin (0 seed, 1 front, 2 hole filling).
@@ -699,7 +710,7 @@ private:
 
   // The points within `radius` of x. Every query centre lies in the bounding box of the points,
   // so a ball larger than its diagonal holds them all: the radius is capped there (a huge radius
-  // would overflow the locator's squared distances).
+  // would overflow the squared distances).
   void FindPoints(double radius, const double* x, std::vector<Id>& result)
   {
     FindPointsWithinRadius(this->Bins, std::min(radius, this->Diagonal), x, result);
@@ -783,7 +794,7 @@ private:
   bool HasStretch(Id i) const { return this->Stretch && this->Stretched[i]; }
   const NoiseBands& NoiseBand; // per point: the height band of its sampling noise (II.C.2)
   const std::vector<uint8_t>& Status;
-  vtkStaticPointLocator* Locator;
+  double Bounds[6]; // of the points
   const pcs::PointBins& Bins;
   double Diagonal = 0.0; // of the bounding box of the points, slightly enlarged
   pcs::SurfaceMesh& Mesh;
@@ -2039,7 +2050,7 @@ int vtkCDTAdvancingFront::RequestData(
     return finish();
   }
 
-  // Coordinates as doubles; the finite points form the cloud the locator and the normal
+  // Coordinates as doubles; the finite points form the cloud the bins and the normal
   // estimation see (local ids), mapped back to input ids at the end.
   vtkPoints* inputPoints = input->GetPoints();
   std::vector<double> all(3 * static_cast<size_t>(numberOfPoints));
@@ -2098,17 +2109,9 @@ int vtkCDTAdvancingFront::RequestData(
   {
     return finish();
   }
-  vtkNew<vtkDoubleArray> localCoordinates;
-  localCoordinates->SetNumberOfComponents(3);
-  localCoordinates->SetArray(xyz.data(), 3 * static_cast<vtkIdType>(local), 1);
-  vtkNew<vtkPoints> localPoints;
-  localPoints->SetData(localCoordinates);
-  vtkNew<vtkPolyData> cloud;
-  cloud->SetPoints(localPoints);
-  vtkNew<vtkStaticPointLocator> locator;
-  BuildSurfaceLocator(locator, cloud, local);
   pcs::PointBins bins;
-  bins.Build(locator, xyz.data(), local);
+  double bounds[6]; // of the points
+  FileSurfaceBins(bins, xyz.data(), local, /*withCoordinates=*/true, bounds);
   this->UpdateProgress(0.02);
   if (this->GetAbortExecute())
   {
@@ -2200,7 +2203,7 @@ int vtkCDTAdvancingFront::RequestData(
     }
     if (static_cast<Id>(distinct.size()) == local)
     {
-      // The front's grid (the same locator's bins): one grid for both.
+      // The front's grid (the same bins): one grid for both.
       estimateNormalsOn(xyz.data(), local, bins, estimatedNormals, knn, knnOthers, &stretch);
       scanLinesChecked = knnOthers > 0;
       return;
@@ -2211,18 +2214,10 @@ int vtkCDTAdvancingFront::RequestData(
       std::copy_n(&xyz[3 * static_cast<size_t>(distinct[d])], 3, &distinctXYZ[3 * d]);
     }
     const Id distinctCount = static_cast<Id>(distinct.size());
-    vtkNew<vtkDoubleArray> distinctCoordinates;
-    distinctCoordinates->SetNumberOfComponents(3);
-    distinctCoordinates->SetArray(distinctXYZ.data(), 3 * static_cast<vtkIdType>(distinctCount), 1);
-    vtkNew<vtkPoints> distinctPoints;
-    distinctPoints->SetData(distinctCoordinates);
-    vtkNew<vtkPolyData> distinctCloud;
-    distinctCloud->SetPoints(distinctPoints);
-    vtkNew<vtkStaticPointLocator> distinctLocator;
-    BuildSurfaceLocator(distinctLocator, distinctCloud, distinctCount);
     pcs::PointBins distinctBins;
-    distinctBins.Build(
-      distinctLocator, distinctXYZ.data(), distinctCount, /*withCoordinates=*/false);
+    double distinctBounds[6];
+    FileSurfaceBins(
+      distinctBins, distinctXYZ.data(), distinctCount, /*withCoordinates=*/false, distinctBounds);
     std::vector<double> distinctNormals;
     std::vector<int32_t> distinctTable; // not the table of all the points
     int distinctOthers = 0;
@@ -2386,15 +2381,19 @@ int vtkCDTAdvancingFront::RequestData(
   if ((localRay || noiseBand || !scanLinesChecked) && knnOthers != localOthers)
   {
     knnOthers = 0;
-    if (!pcs::FindNearestNeighbors(locator, xyz.data(), static_cast<int32_t>(local), localOthers,
-          knn, [this](double) { return !this->GetAbortExecute(); }))
+    if (!pcs::FindNearestNeighbors(bins,
+          xyz.data(),
+          static_cast<int32_t>(local),
+          localOthers,
+          knn,
+          [this](double) { return !this->GetAbortExecute(); }))
     {
       return finish();
     }
     knnOthers = localOthers;
   }
   if (!scanLinesChecked && knnOthers > 0 &&
-    pcs::AddOffLineNeighbors(locator,
+    pcs::AddOffLineNeighbors(bins,
       xyz.data(),
       static_cast<int32_t>(local),
       knnOthers,
@@ -2412,13 +2411,11 @@ int vtkCDTAdvancingFront::RequestData(
     // (nearest first) when one of them is distinct, else among the points within a radius, the
     // radius doubled from the width of a bin until one is found or the ball holds the whole
     // cloud.
-    double bounds[6];
-    cloud->GetBounds(bounds);
     const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
       (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
       (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-    const double* binSize = locator->GetSpacing();
-    const double widest = std::max({ binSize[0], binSize[1], binSize[2] });
+    const double widest =
+      std::max({ bins.GetBucketWidth(0), bins.GetBucketWidth(1), bins.GetBucketWidth(2) });
     const double first = widest > 0.0 ? widest : diagonal;
     vtkSMPThreadLocal<std::vector<Id>> balls;
     vtkSMPTools::For(0, local,
@@ -2567,7 +2564,7 @@ int vtkCDTAdvancingFront::RequestData(
     stretch.empty() ? nullptr : stretch.data(),
     band,
     status,
-    locator,
+    bounds,
     bins,
     mesh);
   front.SetEdgeReachCellSize(2.0 * strict.Radius);

@@ -688,10 +688,19 @@ public:
   // handleThreshold or the group holds more than 8 cells. With keepTopology (rule 7 of the class
   // docs) the group goes on past a manifold state that opened a handle, and is accepted only when
   // the topology is the same or a handle closed (the solid staying connected) and it shows the
-  // outside no facet larger than c's largest.
-  bool Try(int64_t c, double threshold, double handleThreshold, bool keepTopology = false)
+  // outside no facet larger than c's largest. A point may be left in no cell when its last cell
+  // holds it by facets over strutFacet only (rule 8: a strut; -1: never), at most
+  // MaximumStrutPoints per group, never by a group that opens a handle; such points are listed
+  // in StrutPoints.
+  bool Try(int64_t c,
+    double threshold,
+    double handleThreshold,
+    bool keepTopology = false,
+    double strutFacet = -1.0)
   {
     this->Group.clear();
+    this->StrutPoints.clear();
+    this->StrutFacet = strutFacet;
     this->BadCount = 0;
     this->DirtyBadCount = 0;
     const double startFacet = this->Solid.LargestExteriorFacet(c);
@@ -735,7 +744,7 @@ public:
       {
         continue;
       }
-      if (this->Solid.Orphans(n))
+      if (!this->MayEnter(n))
       {
         continue; // never entered: a point would be left in no cell
       }
@@ -768,7 +777,8 @@ public:
       }
       else if (change < 0)
       {
-        ok = mayOpenHandle || this->Group.size() > 8;
+        // A group that leaves points in no cell removes a strut (rule 8): never to open a handle.
+        ok = (mayOpenHandle || this->Group.size() > 8) && this->StrutPoints.empty();
       }
       else
       {
@@ -842,6 +852,8 @@ public:
   }
 
   std::vector<int64_t> Group;
+  // The points that the group leaves in no cell (rule 8 of the class docs).
+  std::vector<int32_t> StrutPoints;
 
   // Whether the (removed) group shows the outside a facet larger than `measure`.
   bool ShowsLargerFacet(double measure) const
@@ -1108,7 +1120,7 @@ private:
       return false;
     }
     const int64_t n = grow.top().second;
-    return this->Failed[n] || this->ShowsSmallFacet(n, threshold) || this->Solid.Orphans(n);
+    return this->Failed[n] || this->ShowsSmallFacet(n, threshold) || !this->MayEnter(n);
   }
 
   // Whether c shows the outside a facet whose measure is at most the threshold.
@@ -1124,8 +1136,47 @@ private:
     return false;
   }
 
+  // Whether the inside cell c is the last cell of its vertex in slot k and holds it only by a
+  // strut: its three facets through the vertex all measure over StrutFacet (clearly not surface
+  // triangles), so the vertex has no surface triangle left (rule 8 of the class docs).
+  bool HoldsOnlyStrut(int64_t c, int k) const
+  {
+    if (!(this->StrutFacet > 0.0))
+    {
+      return false;
+    }
+    for (int j = 0; j < 4; ++j)
+    {
+      if (j != k && !(this->Solid.FacetMeasure(c, j) > this->StrutFacet))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // Whether the group may enter the inside cell c: each vertex of c that would be left in no cell
+  // is held only by a strut (HoldsOnlyStrut), and the group leaves at most MaximumStrutPoints
+  // points in no cell.
+  bool MayEnter(int64_t c) const
+  {
+    size_t leaving = this->StrutPoints.size();
+    for (int k = 0; k < 4; ++k)
+    {
+      if (this->Solid.Star[this->DT.Vertex(c, k)].Inside <= 1)
+      {
+        if (!this->HoldsOnlyStrut(c, k) || ++leaving > MaximumStrutPoints)
+        {
+          return false;
+        }
+      }
+    }
+    return true;
+  }
+
   // Remove c (tentatively) and queue the cells behind its facets over the threshold. Returns false
-  // when a vertex of c is left in no cell.
+  // when a vertex of c is left in no cell, unless the group may leave it (HoldsOnlyStrut; listed
+  // in StrutPoints).
   bool Add(int64_t c, double threshold, std::priority_queue<std::pair<double, int64_t>>& grow)
   {
     this->Solid.SetInside(c, false);
@@ -1135,7 +1186,11 @@ private:
       const int32_t v = this->DT.Vertex(c, k);
       if (this->Solid.Star[v].Inside == 0)
       {
-        return false;
+        if (!this->HoldsOnlyStrut(c, k) || this->StrutPoints.size() >= MaximumStrutPoints)
+        {
+          return false;
+        }
+        this->StrutPoints.push_back(v);
       }
       if (!this->Dirty[v])
       {
@@ -1275,6 +1330,10 @@ private:
   std::vector<int32_t> Label;
   std::vector<int32_t> EdgeEnds;
   std::vector<std::pair<int32_t, int64_t>> VertexCells;
+  // A group may leave a point in no cell when the point's last cell holds it by facets over
+  // StrutFacet only (-1: never), at most MaximumStrutPoints points per group.
+  double StrutFacet = -1.0;
+  static constexpr size_t MaximumStrutPoints = 2;
 };
 
 // Folds left by the peel: boundary edges whose two triangles face opposite ways (outward normals
@@ -1707,7 +1766,7 @@ int vtkPerimeterPeelSurface::RequestData(
   output->GetPointData()->AddArray(used);
 
   vtkIdType iterations = 0, removedCount = 0, groupCount = 0, tetrahedra = 0, outliers = 0;
-  vtkIdType unfoldMoves = 0;
+  vtkIdType unfoldMoves = 0, strutPoints = 0;
   double finalThreshold = 0.0, delaunayTime = 0.0, peelTime = 0.0;
   double delaunayCPUTime = 0.0, peelCPUTime = 0.0;
   std::clock_t startCPU = std::clock();
@@ -1731,6 +1790,7 @@ int vtkPerimeterPeelSurface::RequestData(
     pcs::AddFieldCount(fd, "NumberOfRemovedTetrahedra", removedCount);
     pcs::AddFieldCount(fd, "NumberOfGroupRemovals", groupCount);
     pcs::AddFieldCount(fd, "NumberOfUnfoldingMoves", unfoldMoves);
+    pcs::AddFieldCount(fd, "NumberOfStrutPoints", strutPoints);
     pcs::AddFieldCount(fd, "NumberOfTriangles", polys->GetNumberOfCells());
     pcs::AddFieldCount(fd, "NumberOfUsedPoints", usedPoints);
     pcs::AddFieldCount(fd, "NumberOfUnusedPoints", numberOfPoints - usedPoints);
@@ -2171,12 +2231,13 @@ int vtkPerimeterPeelSurface::RequestData(
           const double way = pathRule ? solid.WidestWayIn(c, m, std::numeric_limits<float>::max())
                                       : std::numeric_limits<double>::infinity();
           if (m <= threshold ||
-            !groups->Try(c, threshold, threshold * handleFactor, m <= normalStart()))
+            !groups->Try(c, threshold, threshold * handleFactor, m <= normalStart(), normalStart()))
           {
             continue;
           }
           more = true;
           ++groupCount;
+          strutPoints += static_cast<vtkIdType>(groups->StrutPoints.size());
           for (int64_t g : groups->Group)
           {
             solid.Bottleneck[g] = static_cast<float>(way);

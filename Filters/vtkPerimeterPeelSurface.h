@@ -39,8 +39,9 @@
  *   through the faces; 1.6-1.9 with the bound, 9 seeds; on the 9 CGAL mesh vertex sets of the
  *   benchmark no coverage drops).
  * - No point is lost by peeling: a tetrahedron is kept when removing it would leave one of its
- *   vertices in no tetrahedron (the paper's "loss of vertices"). Points that the surface still
- *   does not use (inside the solid, or duplicates) have point data `Used` = 0 and are counted.
+ *   vertices in no tetrahedron (the paper's "loss of vertices"), but for the points held only by a
+ *   strut (rule 8). Points that the surface does not use (inside the solid, duplicates, or left
+ *   by a strut) have point data `Used` = 0 and are counted.
  * - ManifoldOutput (default on): the boundary of the solid is a closed 2-manifold at every step,
  *   so no repair is needed afterwards (a sculpting peel).
  *   1. One tetrahedron is removed only when the sculpting rules allow it (Boissonnat 1984,
@@ -177,6 +178,23 @@
  *      apart, joined at one end (genus 0) or both (genus 1; 20,000 random points, 3 seeds per
  *      gap, Benchmarks/run_peel_web_benchmark.py): handles in excess 39 -> 19 in 30 clouds, none
  *      added; CGAL's man vertices genus 1 -> 0 (its mesh's); the 9 benchmark sets unchanged.
+ *   8. Struts: a group of rules 3, 5 or 7 may leave a point in no tetrahedron (it is then reported
+ *      unused, counted in NumberOfStrutPoints) when the point's last tetrahedron holds it by
+ *      facets that all measure over the group start (GroupFactor x threshold, or the group start
+ *      limit of rule 5: clearly not surface triangles), at most 2 points per group, and never in
+ *      a group that opens a handle. On random samples the peel may remove every tetrahedron of a
+ *      surface point but one (the no-point-lost rule keeps the last) that spans a gap to a facing
+ *      part: a strut or spike several spacings long held up by that one point, which no group
+ *      could remove before. The trade-off: one point of the sample off the surface (within about
+ *      a spacing of it, as the surface goes through its neighbours) against triangles as far from
+ *      the surface as half the gap. The issue's "whichever keeps more points" is about pinches;
+ *      a strut held by one point is not one. Measured (2026-11-24, Benchmarks/results/peel.md):
+ *      CGAL's elephant, random 10^5-point sample seed 2: Hausdorff distance 18.52 -> 11.33 mean
+ *      spacings, genus 4 -> 3 (a strut of 4 tetrahedra across 34 spacings was a bridge), 2 points
+ *      more unused; on 20 such samples of camel, elephant, armadillo and bunny00 the other
+ *      distances are unchanged (1 point more unused on camel seeds 1-4; elephant seed 5 genus 2
+ *      -> 3); the 9 mesh vertex sets and the web benchmark unchanged. Webs (membranes of many
+ *      tetrahedra across such gaps) are not struts: their groups still burrow into the solid.
  * - Far outliers (OutlierFactor, default 8): isolated points, clumps and sparse clutter far from
  *   the surface would make the peel stop at their hull (the paper assumes none). They are left
  *   out of the tetrahedralization, keep `Used` = 0 and are counted (NumberOfOutliers, a
@@ -214,7 +232,7 @@
  * (unsigned char) and field data NumberOfIterations, FinalThreshold (input units; local spacings
  * with relative measures),
  * NumberOfTetrahedra, NumberOfRemovedTetrahedra (groups included), NumberOfGroupRemovals,
- * NumberOfUnfoldingMoves (rule 6),
+ * NumberOfUnfoldingMoves (rule 6), NumberOfStrutPoints (rule 8),
  * NumberOfTriangles, NumberOfUsedPoints, NumberOfUnusedPoints (outliers included),
  * NumberOfOutliers, DelaunayTime and PeelTime
  * (seconds: the tetrahedralization, and everything after it), DelaunayCPUTime and PeelCPUTime

@@ -21,6 +21,9 @@
 // - ManifoldOutput off (the paper's peeling): no point left in no tetrahedron;
 // - an abort requested once the peel is done (progress 0.9) stops the unfolding pass: a valid
 //   output with every point and no triangle (20,000 random sphere points, about 7,000 moves);
+// - a strut (rule 8): a point 20 or 30 mean spacings above a random sphere (20,000 points, outlier
+//   removal off), held at the end by one tetrahedron of facets over the group start, is reported
+//   unused and the strut removed: the sphere alone, every triangle within one spacing of it;
 // - the field data agree with the mesh (triangles, used points, Used array).
 #include "vtkPerimeterPeelSurface.h"
 #include "vtkReconstructionQuality.h"
@@ -164,22 +167,13 @@ bool CheckSphere()
 double TorusDistance(vtkPolyData* mesh, int n)
 {
   const double spacing = std::sqrt(4 * M_PI * M_PI * 0.35 / n);
-  double largest = 0.0;
-  for (const auto& t : pcstest::CellTuples<3>(mesh))
-  {
-    double c[3] = { 0, 0, 0 };
-    for (int k = 0; k < 3; ++k)
-    {
-      double p[3];
-      mesh->GetPoint(t[k], p);
-      c[0] += p[0] / 3;
-      c[1] += p[1] / 3;
-      c[2] += p[2] / 3;
-    }
-    const double ring = std::hypot(c[0], c[1]) - 1.0;
-    largest = std::max(largest, std::fabs(std::hypot(ring, c[2]) - 0.35));
-  }
-  return largest / spacing;
+  return pcstest::FarthestCentroid(mesh,
+           [](const double* c)
+           {
+             const double ring = std::hypot(c[0], c[1]) - 1.0;
+             return std::fabs(std::hypot(ring, c[2]) - 0.35);
+           }) /
+    spacing;
 }
 
 bool CheckTorus()
@@ -438,6 +432,50 @@ bool CheckDenseTorus()
 {
   return CheckClosedSurface("dense random torus (seed 2)", Peel(TorusPoints(100000, 2)), 1);
 }
+// A strut (rule 8): a point held by one tetrahedron whose facets through it all measure over the
+// group start. A point 20 or 30 mean spacings above a random sphere (20,000 points; far outlier
+// removal off, so that the point is tetrahedralized): the peel removes every cell of the point but
+// the last (no point lost), a spike whose facets through the point are over the group start. The
+// rule removes it and reports the point unused: the sphere's surface alone (closed, manifold,
+// genus 0), every triangle centroid within one mean spacing of the sphere, the point's Used 0 and
+// NumberOfStrutPoints 1. Without the rule the spike stays: triangles 6.6 (20) and 9.9 (30)
+// spacings out on both seeds (2026-11-24).
+bool CheckStrutAt(unsigned seed, double height)
+{
+  const int n = 20000;
+  const double spacing = 0.5 * std::sqrt(4 * M_PI / n);
+  const std::string label = "strut of " + std::to_string(static_cast<int>(height)) +
+    " spacings (seed " + std::to_string(seed) + ")";
+  std::vector<double> xyz = SpherePoints(n, seed);
+  xyz.insert(xyz.end(), { 0.0, 0.0, 1.0 + height * spacing });
+  vtkNew<vtkPerimeterPeelSurface> peel;
+  peel->SetInputData(pcstest::MakeCloud(xyz));
+  peel->SetOutlierFactor(0.0);
+  peel->Update();
+  vtkPolyData* mesh = peel->GetOutput();
+  const double farthest = pcstest::FarthestCentroid(
+    mesh, [spacing](const double* c) { return std::fabs(vtkMath::Norm(c) - 1.0) / spacing; });
+  std::cout << label << ": farthest triangle centroid " << farthest << " spacings, "
+            << FieldValue(mesh, "NumberOfStrutPoints") << " strut point(s)" << std::endl;
+  PCS_CHECK(farthest <= 1.0, label << ": a triangle " << farthest << " spacings out");
+  PCS_CHECK(mesh->GetPointData()->GetArray("Used")->GetTuple1(n) == 0, label << ": point used");
+  PCS_CHECK(FieldValue(mesh, "NumberOfStrutPoints") == 1, label << ": NumberOfStrutPoints");
+  return CheckClosedSurface(label, mesh, 0);
+}
+
+bool CheckStrut()
+{
+  bool ok = true;
+  for (unsigned seed : { 1u, 2u })
+  {
+    for (double height : { 20.0, 30.0 })
+    {
+      ok = CheckStrutAt(seed, height) && ok;
+    }
+  }
+  return ok;
+}
+
 // Abort during the unfolding pass (rule 6): requested at the progress 0.9 reported when the peel
 // is done, it must stop the pass (which reports progress and reads the flag) and leave an output
 // with every point and no triangle, as an abort during the peel does.
@@ -487,5 +525,6 @@ int TestPerimeterPeelSurface(int, char*[])
   ok = CheckDenseTorus() && ok;
   ok = CheckNoisy() && ok;
   ok = CheckAbortInUnfolding() && ok;
+  ok = CheckStrut() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -15,6 +15,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <iostream>
@@ -99,6 +100,29 @@ inline vtkIdType FieldCount(vtkDataObject* data, const char* name)
 {
   vtkDataArray* array = data->GetFieldData()->GetArray(name);
   return array ? static_cast<vtkIdType>(array->GetTuple1(0)) : -1;
+}
+
+/// The largest `distance` (a function of a point, e.g. to a known surface) over the centroids of
+/// the triangles of `mesh`.
+template<typename Distance>
+double FarthestCentroid(vtkPolyData* mesh, Distance&& distance)
+{
+  double farthest = 0.0;
+  for (const auto& t : CellTuples<3>(mesh))
+  {
+    double centroid[3] = { 0.0, 0.0, 0.0 };
+    for (vtkIdType v : t)
+    {
+      double p[3];
+      mesh->GetPoint(v, p);
+      for (int i = 0; i < 3; ++i)
+      {
+        centroid[i] += p[i] / 3.0;
+      }
+    }
+    farthest = std::max(farthest, distance(centroid));
+  }
+  return farthest;
 }
 } // namespace pcstest
 

@@ -1086,9 +1086,6 @@ double LeastDihedralFill(const double* xyz, const std::vector<int32_t>& loop,
     vtkMath::Cross(u, v, nrm);
     return 0.5 * vtkMath::Normalize(nrm);
   };
-  auto between = [](const double a[3], const double b[3]) {
-    return std::acos(std::max(-1.0, std::min(1.0, vtkMath::Dot(a, b))));
-  };
   // The normal of the triangle on the side (i, j) of the sub-polygon i..j (j = i + 1: the mesh).
   auto side = [&](int i, int j, double nrm[3]) {
     if (j == i + 1)
@@ -1124,17 +1121,24 @@ double LeastDihedralFill(const double* xyz, const std::vector<int32_t>& loop,
         double nrm[3], other[3];
         const double a = area[at(i, k)] + area[at(k, j)] + unitNormal(i, k, j, nrm);
         double worst = std::max(angle[at(i, k)], angle[at(k, j)]);
+        // The dihedral angles with the neighbours on its sides: the largest is the angle of the
+        // smallest dot product (acos is decreasing: one acos per triangle).
+        double smallestDot = std::numeric_limits<double>::infinity();
         if (side(i, k, other))
         {
-          worst = std::max(worst, between(nrm, other));
+          smallestDot = std::min(smallestDot, vtkMath::Dot(nrm, other));
         }
         if (side(k, j, other))
         {
-          worst = std::max(worst, between(nrm, other));
+          smallestDot = std::min(smallestDot, vtkMath::Dot(nrm, other));
         }
         if (outer && across(n - 1, other))
         {
-          worst = std::max(worst, between(nrm, other));
+          smallestDot = std::min(smallestDot, vtkMath::Dot(nrm, other));
+        }
+        if (smallestDot < std::numeric_limits<double>::infinity())
+        {
+          worst = std::max(worst, std::acos(std::max(-1.0, std::min(1.0, smallestDot))));
         }
         // Lexicographic: the largest angle first (ties within 1e-9 radians), then the area.
         const double current = angle[at(i, j)];

@@ -1086,20 +1086,19 @@ double LeastDihedralFill(const double* xyz, const std::vector<int32_t>& loop,
     vtkMath::Cross(u, v, nrm);
     return 0.5 * vtkMath::Normalize(nrm);
   };
-  // The normal of the triangle on the side (i, j) of the sub-polygon i..j (j = i + 1: the mesh).
-  auto side = [&](int i, int j, double nrm[3]) {
-    if (j == i + 1)
-    {
-      return across(i, nrm);
-    }
-    unitNormal(i, best[at(i, j)], j, nrm);
-    return true;
-  };
+  // The unit normal of the triangle on the side (i, j) of the sub-polygon i..j, once (i, j) is
+  // solved: the mesh triangle across the loop edge when j = i + 1, else the sub-polygon's triangle
+  // on (i, j). `hasSide` is 0 where there is none.
+  std::vector<double> sideNormal(3 * static_cast<size_t>(n) * n, 0.0);
+  std::vector<char> hasSide(static_cast<size_t>(n) * n, 0);
   for (int i = 0; i + 1 < n; ++i)
   {
     angle[at(i, i + 1)] = 0.0;
     area[at(i, i + 1)] = 0.0;
+    hasSide[at(i, i + 1)] = across(i, &sideNormal[3 * at(i, i + 1)]) ? 1 : 0;
   }
+  double outerNormal[3];
+  const bool hasOuter = across(n - 1, outerNormal);
   for (int span = 2; span < n; ++span)
   {
     for (int i = 0; i + span < n; ++i)
@@ -1111,43 +1110,58 @@ double LeastDihedralFill(const double* xyz, const std::vector<int32_t>& loop,
       {
         continue;
       }
+      // The best candidate so far; a candidate whose angle with a neighbour exceeds `current` by
+      // more than the tie tolerance cannot be kept: its cosine is below `cosineCut` (a margin of
+      // 1e-12 in cosine is more than 1e-12 radians, far above the rounding of cos and acos).
+      double current = inf, cosineCut = -inf;
       for (int k = i + 1; k < j; ++k)
       {
-        if (!(angle[at(i, k)] < inf && angle[at(k, j)] < inf) ||
-          pcs::projected::Collinear(point(i), point(k), point(j)))
+        // The sub-polygons' angles bound the candidate's from below: a candidate that cannot
+        // beat the current best even on a tie is passed over before any normal is computed, and
+        // the exact degeneracy test is made only for a candidate that would be kept.
+        const double atLeast = std::max(angle[at(i, k)], angle[at(k, j)]);
+        if (!(atLeast < inf) || atLeast > current + 1e-9)
         {
           continue;
         }
-        double nrm[3], other[3];
+        double nrm[3];
         const double a = area[at(i, k)] + area[at(k, j)] + unitNormal(i, k, j, nrm);
-        double worst = std::max(angle[at(i, k)], angle[at(k, j)]);
+        const double* neighbours[3] = { hasSide[at(i, k)] ? &sideNormal[3 * at(i, k)] : nullptr,
+          hasSide[at(k, j)] ? &sideNormal[3 * at(k, j)] : nullptr,
+          outer && hasOuter ? outerNormal : nullptr };
         // The dihedral angles with the neighbours on its sides: the largest is the angle of the
         // smallest dot product (acos is decreasing: one acos per triangle).
-        double smallestDot = std::numeric_limits<double>::infinity();
-        if (side(i, k, other))
+        double smallestDot = inf;
+        for (const double* neighbour : neighbours)
         {
-          smallestDot = std::min(smallestDot, vtkMath::Dot(nrm, other));
+          if (neighbour)
+          {
+            smallestDot = std::min(smallestDot, vtkMath::Dot(nrm, neighbour));
+          }
         }
-        if (side(k, j, other))
+        if (smallestDot < cosineCut)
         {
-          smallestDot = std::min(smallestDot, vtkMath::Dot(nrm, other));
+          continue;
         }
-        if (outer && across(n - 1, other))
-        {
-          smallestDot = std::min(smallestDot, vtkMath::Dot(nrm, other));
-        }
-        if (smallestDot < std::numeric_limits<double>::infinity())
+        double worst = atLeast;
+        if (smallestDot < inf)
         {
           worst = std::max(worst, std::acos(std::max(-1.0, std::min(1.0, smallestDot))));
         }
         // Lexicographic: the largest angle first (ties within 1e-9 radians), then the area.
-        const double current = angle[at(i, j)];
-        if (worst < current - 1e-9 || (worst <= current + 1e-9 && a < area[at(i, j)]))
+        if ((worst < current - 1e-9 || (worst <= current + 1e-9 && a < area[at(i, j)])) &&
+          !pcs::projected::Collinear(point(i), point(k), point(j)))
         {
-          angle[at(i, j)] = worst;
+          angle[at(i, j)] = current = worst;
           area[at(i, j)] = a;
           best[at(i, j)] = k;
+          cosineCut = std::cos(std::min(worst + 1e-9, vtkMath::Pi())) - 1e-12;
         }
+      }
+      if (best[at(i, j)] >= 0)
+      {
+        unitNormal(i, best[at(i, j)], j, &sideNormal[3 * at(i, j)]);
+        hasSide[at(i, j)] = 1;
       }
     }
   }

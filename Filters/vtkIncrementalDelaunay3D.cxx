@@ -6,6 +6,7 @@
 #include "pcsDuplicatePoints.h"
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
+#include "pcsHoleFilling.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -167,68 +168,10 @@ vtkSmartPointer<vtkCellArray> MakeCellArray(vtkTypeInt32Array* connectivity, int
   return array;
 }
 
-// Orthonormal frame of the projection plane: origin and two in-plane axes.
-struct ProjectionFrame
-{
-  double Origin[3] = { 0, 0, 0 };
-  double U[3] = { 1, 0, 0 };
-  double V[3] = { 0, 1, 0 };
-
-  void Project(const double* p, double* uv) const
-  {
-    const double d[3] = { p[0] - this->Origin[0], p[1] - this->Origin[1], p[2] - this->Origin[2] };
-    uv[0] = vtkMath::Dot(d, this->U);
-    uv[1] = vtkMath::Dot(d, this->V);
-  }
-  void Lift(const double* uv, double* p) const
-  {
-    for (int i = 0; i < 3; ++i)
-    {
-      p[i] = this->Origin[i] + uv[0] * this->U[i] + uv[1] * this->V[i];
-    }
-  }
-};
-
-// Least-squares plane through the points `ids`: centroid and the two principal axes of largest
-// variance, oriented so that U x V is the normal of smallest variance (right-handed).
-ProjectionFrame BestFitFrame(const double* xyz, const std::vector<int32_t>& ids)
-{
-  ProjectionFrame frame;
-  if (ids.empty())
-  {
-    return frame;
-  }
-  double centroid[3] = { 0, 0, 0 };
-  for (int32_t id : ids)
-  {
-    vtkMath::Add(centroid, xyz + 3 * static_cast<int64_t>(id), centroid);
-  }
-  vtkMath::MultiplyScalar(centroid, 1.0 / ids.size());
-  double covariance[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
-  for (int32_t id : ids)
-  {
-    double d[3];
-    vtkMath::Subtract(xyz + 3 * static_cast<int64_t>(id), centroid, d);
-    for (int i = 0; i < 3; ++i)
-    {
-      for (int j = 0; j < 3; ++j)
-      {
-        covariance[i][j] += d[i] * d[j];
-      }
-    }
-  }
-  double* rows[3] = { covariance[0], covariance[1], covariance[2] };
-  double eigenvalues[3], vectorStorage[3][3];
-  double* vectors[3] = { vectorStorage[0], vectorStorage[1], vectorStorage[2] };
-  vtkMath::Jacobi(rows, eigenvalues, vectors); // sorted by decreasing eigenvalue; columns
-  for (int i = 0; i < 3; ++i)
-  {
-    frame.Origin[i] = centroid[i];
-    frame.U[i] = vectors[i][0];
-    frame.V[i] = vectors[i][1];
-  }
-  return frame;
-}
+// The projection plane of the 2.5D mode is a pcs::holes::Plane: the x-y plane by default, the
+// least-squares plane of the points (centroid and the two principal axes of largest variance)
+// with BEST_FIT_PLANE.
+using ProjectionFrame = pcs::holes::Plane;
 
 //------------------------------------------------------------------------------------------------
 // Exact duplicates (dim = 2: of the projected coordinates), removed from `ids` (ascending) and
@@ -835,7 +778,7 @@ int vtkIncrementalDelaunay3D::RequestData(
   {
     if (this->ProjectionPlane == BEST_FIT_PLANE)
     {
-      frame = BestFitFrame(xyz.data(), ids);
+      frame.Fit(xyz.data(), ids.data(), ids.size());
     }
     uv.resize(2 * static_cast<size_t>(numberOfPoints), 0.0);
     for (int32_t id : ids)

@@ -168,6 +168,14 @@ void Plane::Project(const double* p, double uv[2]) const
   uv[1] = d[0] * this->V[0] + d[1] * this->V[1] + d[2] * this->V[2];
 }
 
+void Plane::Lift(const double uv[2], double p[3]) const
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    p[i] = this->Origin[i] + uv[0] * this->U[i] + uv[1] * this->V[i];
+  }
+}
+
 double Plane::Distance(const double* p) const
 {
   const double d[3] = { p[0] - this->Origin[0], p[1] - this->Origin[1], p[2] - this->Origin[2] };

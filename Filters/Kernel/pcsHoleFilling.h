@@ -63,6 +63,8 @@ struct Plane
   bool Fit(const double* xyz, const int32_t* ids, size_t count);
   /// In-plane coordinates of p.
   void Project(const double* p, double uv[2]) const;
+  /// The point of the plane with in-plane coordinates uv (the inverse of Project on the plane).
+  void Lift(const double uv[2], double p[3]) const;
   /// Signed distance of p to the plane (along N).
   double Distance(const double* p) const;
   /// Reverse the orientation of the frame (V and N change sign).

@@ -284,8 +284,23 @@ private:
   bool FillNarrowLoop(const std::vector<Id>& frontLoop);
   void GatherAround(const std::vector<Id>& loop, std::vector<Id>& around);
   void OrientComponents();
+  // The quadrilateral (a, c, b, d) of an interior edge a-b: its triangles (a, b, c) = t1 and
+  // (b, a, d) = t2 with their unit normals n1, n2, the flipped ones (a, d, c) and (b, c, d) with
+  // m1, m2, and the smallest normal dot product among its five edges before and after a flip.
+  struct Quad
+  {
+    Id A, B, C, D;
+    int64_t T1, T2;
+    double N1[3], N2[3], M1[3], M2[3];
+    double Before, After;
+  };
+  template<typename Candidate, typename Examine, typename Decide>
+  void FlipEdges(const Candidate& candidate, const Examine& examine, const Decide& decide);
   void Unfold();
   bool NeighborDiagonal(Id c, Id d) const;
+  void ShortenLongEdges();
+  double NearestSampleDistance2(const double* x, const Id* around, int count) const;
+  double FarthestFromSamples(Id p, Id q, Id r, Id u) const;
   void ReportProgress();
 
   // Neighbourhood of the current operation: candidate vertices (the K-neighbourhoods of the
@@ -1948,13 +1963,15 @@ void Grower::InsertOrphans()
   }
 }
 
-// Step 7: folds repaired by edge flips. An edge whose two triangles bend by more than constraint 1
-// allows is flipped when the other diagonal of its quadrilateral is absent from the mesh and
-// shorter, or joins two K nearest neighbours (NeighborDiagonal), and the flip raises the smallest
-// normal dot product among the five edges of the quadrilateral (the edge itself and the four around
-// it). Topology: the flip keeps every vertex and boundary edge, and the two new triangles are
-// checked by the mesh before they are kept.
-void Grower::Unfold()
+// The edge flips of step 7 (both passes), driven by three tests: `candidate(a, b, c)` picks the
+// edges a-b of triangle (a, b, c) examined at first (cheap; the edges around a flipped edge are
+// examined again whatever it says), `examine(quad)` asks for the normals of the two triangles only,
+// `decide(quad)` for the flipped ones and the five edges' smallest dot products too. An edge is
+// examined only when it has two triangles whose third vertices differ and are not joined by an
+// edge already, and the flipped triangles are not degenerate. Topology: the flip keeps every vertex
+// and boundary edge, and the two new triangles are checked by the mesh before they are kept.
+template<typename Candidate, typename Examine, typename Decide>
+void Grower::FlipEdges(const Candidate& candidate, const Examine& examine, const Decide& decide)
 {
   auto normalOf = [this](Id x, Id y, Id z, double* n) {
     return UnitNormal(this->P3(x), this->P3(y), this->P3(z), n);
@@ -1974,7 +1991,7 @@ void Grower::Unfold()
       const int32_t* v = this->Mesh.GetTriangle(t);
       for (int j = 0; j < 3; ++j)
       {
-        if (v[j] < v[(j + 1) % 3])
+        if (v[j] < v[(j + 1) % 3] && candidate(v[j], v[(j + 1) % 3], v[(j + 2) % 3]))
         {
           stack.emplace_back(v[j], v[(j + 1) % 3]);
         }
@@ -1983,37 +2000,39 @@ void Grower::Unfold()
   }
   // Each flip raises a local minimum; the budget bounds the work whatever the geometry.
   int64_t budget = 4 * count + 64;
+  Quad q;
   while (!stack.empty() && budget > 0 && !this->Aborted)
   {
     const Id a = stack.back().first, b = stack.back().second;
     stack.pop_back();
-    const int64_t t1 = this->Mesh.FindTriangle(a, b);
-    const int64_t t2 = this->Mesh.FindTriangle(b, a);
-    if (t1 < 0 || t2 < 0)
+    q.T1 = this->Mesh.FindTriangle(a, b);
+    q.T2 = this->Mesh.FindTriangle(b, a);
+    if (q.T1 < 0 || q.T2 < 0)
     {
       continue;
     }
     // The third vertices read from the two triangles found (no second scan of the wedges).
-    const Id c = thirdVertex(t1, a, b), d = thirdVertex(t2, a, b);
-    double n1[3], n2[3];
-    if (c == d || !normalOf(a, b, c, n1) || !normalOf(b, a, d, n2) ||
-      Dot(n1, n2) >= this->Par.CosNormal || this->Mesh.GetEdgeValence(c, d) > 0 ||
-      (Distance2(this->P3(c), this->P3(d)) >= Distance2(this->P3(a), this->P3(b)) &&
-        !this->NeighborDiagonal(c, d)))
+    const Id c = thirdVertex(q.T1, a, b), d = thirdVertex(q.T2, a, b);
+    q.A = a;
+    q.B = b;
+    q.C = c;
+    q.D = d;
+    if (c == d || !normalOf(a, b, c, q.N1) || !normalOf(b, a, d, q.N2) || !examine(q) ||
+      this->Mesh.GetEdgeValence(c, d) > 0)
     {
       continue;
     }
-    double m1[3], m2[3]; // the new triangles (a, d, c) and (b, c, d)
     if (pcs::projected::Collinear(this->P3(a), this->P3(d), this->P3(c)) ||
       pcs::projected::Collinear(this->P3(b), this->P3(c), this->P3(d)) ||
-      !normalOf(a, d, c, m1) || !normalOf(b, c, d, m2))
+      !normalOf(a, d, c, q.M1) || !normalOf(b, c, d, q.M2))
     {
       continue;
     }
-    double before = Dot(n1, n2), after = Dot(m1, m2);
+    q.Before = Dot(q.N1, q.N2);
+    q.After = Dot(q.M1, q.M2);
     // The four edges around: (s, e) with the triangle owning s->e before and after the flip.
     const Id ring[4][2] = { { b, c }, { c, a }, { a, d }, { d, b } };
-    const double* owners[4][2] = { { n1, m2 }, { n1, m1 }, { n2, m1 }, { n2, m2 } };
+    const double* owners[4][2] = { { q.N1, q.M2 }, { q.N1, q.M1 }, { q.N2, q.M1 }, { q.N2, q.M2 } };
     for (int i = 0; i < 4; ++i)
     {
       const Id s = ring[i][0], e = ring[i][1];
@@ -2021,17 +2040,17 @@ void Grower::Unfold()
       double no[3];
       if (o >= 0 && normalOf(e, s, o, no))
       {
-        before = std::min(before, Dot(no, owners[i][0]));
-        after = std::min(after, Dot(no, owners[i][1]));
+        q.Before = std::min(q.Before, Dot(no, owners[i][0]));
+        q.After = std::min(q.After, Dot(no, owners[i][1]));
       }
     }
-    if (!(after > before))
+    if (!decide(q))
     {
       continue;
     }
     --budget;
-    this->Mesh.RemoveTriangle(t1);
-    this->Mesh.RemoveTriangle(t2);
+    this->Mesh.RemoveTriangle(q.T1);
+    this->Mesh.RemoveTriangle(q.T2);
     int64_t x = -1, y = -1;
     if (this->Mesh.CanAddTriangle(a, d, c) == pcs::SurfaceMesh::Check::Ok)
     {
@@ -2056,6 +2075,122 @@ void Grower::Unfold()
       stack.emplace_back(edge[0], edge[1]);
     }
   }
+}
+
+// Step 7: folds repaired by edge flips. An edge whose two triangles bend by more than constraint 1
+// allows is flipped when the other diagonal of its quadrilateral is absent from the mesh and
+// shorter, or joins two K nearest neighbours (NeighborDiagonal), and the flip raises the smallest
+// normal dot product among the five edges of the quadrilateral (the edge itself and the four around
+// it).
+void Grower::Unfold()
+{
+  this->FlipEdges([](Id, Id, Id) { return true; },
+    [this](const Quad& q)
+    {
+      return Dot(q.N1, q.N2) < this->Par.CosNormal &&
+        (Distance2(this->P3(q.C), this->P3(q.D)) < Distance2(this->P3(q.A), this->P3(q.B)) ||
+          this->NeighborDiagonal(q.C, q.D));
+    },
+    [](const Quad& q) { return q.After > q.Before; });
+}
+
+// Squared distance from x to the nearest of the points `around` and their K nearest neighbours.
+double Grower::NearestSampleDistance2(const double* x, const Id* around, int count) const
+{
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < count; ++i)
+  {
+    const Id* nb = this->Neighbors(around[i]);
+    for (int j = -1; j < this->K; ++j)
+    {
+      const Id u = j < 0 ? around[i] : nb[j];
+      if (u >= 0)
+      {
+        best = std::min(best, Distance2(x, this->P3(u)));
+      }
+    }
+  }
+  return best;
+}
+
+// The largest squared distance from the centroids of the triangles (p, q, r) and (q, p, u) and
+// from the midpoint of p-q to the nearest input point among p, q, r, u and their K nearest.
+double Grower::FarthestFromSamples(Id p, Id q, Id r, Id u) const
+{
+  const Id quad[4] = { p, q, r, u };
+  double x[3][3];
+  for (int k = 0; k < 3; ++k)
+  {
+    x[0][k] = (this->P3(p)[k] + this->P3(q)[k] + this->P3(r)[k]) / 3.0;
+    x[1][k] = (this->P3(p)[k] + this->P3(q)[k] + this->P3(u)[k]) / 3.0;
+    x[2][k] = 0.5 * (this->P3(p)[k] + this->P3(q)[k]);
+  }
+  double farthest = 0.0;
+  for (const auto& y : x)
+  {
+    farthest = std::max(farthest, this->NearestSampleDistance2(y, quad, 4));
+  }
+  return farthest;
+}
+
+// Step 7, second pass: long edges across thin tips. An edge a-b longer than LongEdgeFactor local
+// spacings (the mean, over a, b, c, d, of the mean distance to the 6 nearest neighbours) whose
+// quadrilateral (a, c, b, d) has the other diagonal c-d absent from the mesh and shorter than
+// ShorterDiagonal |ab| is flipped when the flip folds nothing (the smallest normal dot product
+// among the five edges of the quadrilateral stays at least min(before, cos MaximumNormalAngle)), or
+// when it brings the two triangles closer to the points (FarthestFromSamples falls by the factor
+// ShorterDiagonal) without folding over (normals more than 90 degrees apart) a quadrilateral
+// that was not folded over before.
+void Grower::ShortenLongEdges()
+{
+  constexpr double LongEdgeFactor = 3.0;
+  constexpr double ShorterDiagonal = 0.8;
+  // The local spacing of a vertex, computed when first needed (-1: not yet).
+  std::vector<double> local(static_cast<size_t>(this->N), -1.0);
+  auto localSpacing = [this, &local](Id v)
+  {
+    if (local[v] < 0.0)
+    {
+      const Id* nb = this->Neighbors(v);
+      double sum = 0.0;
+      int count = 0;
+      for (int j = 0; j < std::min(6, this->K) && nb[j] >= 0; ++j)
+      {
+        sum += std::sqrt(Distance2(this->P3(v), this->P3(nb[j])));
+        ++count;
+      }
+      local[v] = count > 0 ? sum / count : 0.0;
+    }
+    return local[v];
+  };
+  // The edges that may be long: |ab| over the bound even without the fourth vertex's spacing
+  // (most edges fail this, before any search of the triangle across).
+  auto candidate = [&](Id a, Id b, Id c)
+  {
+    const double bound =
+      LongEdgeFactor * 0.25 * (localSpacing(a) + localSpacing(b) + localSpacing(c));
+    return Distance2(this->P3(a), this->P3(b)) > bound * bound;
+  };
+  auto examine = [&](const Quad& q)
+  {
+    const double ab2 = Distance2(this->P3(q.A), this->P3(q.B));
+    const double bound = LongEdgeFactor * 0.25 *
+      (localSpacing(q.A) + localSpacing(q.B) + localSpacing(q.C) + localSpacing(q.D));
+    return ab2 > bound * bound &&
+      Distance2(this->P3(q.C), this->P3(q.D)) < ShorterDiagonal * ShorterDiagonal * ab2;
+  };
+  auto decide = [&](const Quad& q)
+  {
+    if (q.After >= std::min(q.Before, this->Par.CosNormal))
+    {
+      return true;
+    }
+    // Nearer to the points, but not folding a quadrilateral that was not folded.
+    return (q.Before < 0.0 || q.After >= 0.0) &&
+      this->FarthestFromSamples(q.C, q.D, q.A, q.B) <
+      ShorterDiagonal * ShorterDiagonal * this->FarthestFromSamples(q.A, q.B, q.C, q.D);
+  };
+  this->FlipEdges(candidate, examine, decide);
 }
 
 // May the fold of the quadrilateral (a, c, b, d) be flipped to its longer diagonal c-d? When c
@@ -2197,6 +2332,7 @@ void Grower::Run()
     this->InsertOrphans();
     this->FillHoles();
     this->Unfold();
+    this->ShortenLongEdges();
   }
   this->OrientComponents();
 }

@@ -63,6 +63,12 @@ constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 // loop spans (twice a hemisphere bowl's), by a least-dihedral fill folding at most this much.
 constexpr double CapAreaRatio = 4.0;
 constexpr double MaximumCapDihedral = 150.0; // degrees
+// CapOpenEnds: no cap on a loop where the mesh makes an angle of more than this with the cap on
+// the side of the material (a tube's cut end 90, a smooth surface's hole about 180, the mouth of a
+// hole through the object 270 and more); judged on a piece whose volume is at least its area
+// times this many mean spacings (a body whose inside its orientation tells).
+constexpr double MaximumCapFold = 240.0; // degrees
+constexpr double MinimumCapVolumeThickness = 0.25;
 // A natural border (IsNaturalBorder): a rim within this fraction of its diameter (rms) of its
 // plane, met by the surface at more than 60 degrees on average (mean |cos| below this).
 constexpr double NaturalBorderFlatness = 0.05;
@@ -81,6 +87,21 @@ constexpr vtkIdType MaximumNumberOfPoints = 500000000;
 inline double Distance(const double* a, const double* b)
 {
   return std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+}
+
+// Six times the signed volume of the tetrahedron (origin, a, b, c): positive when a, b, c turn
+// counterclockwise seen from the side away from the origin.
+inline double TetrahedronVolume6(const double* origin,
+  const double* a,
+  const double* b,
+  const double* c)
+{
+  double u[3], v[3], w[3], vw[3];
+  vtkMath::Subtract(a, origin, u);
+  vtkMath::Subtract(b, origin, v);
+  vtkMath::Subtract(c, origin, w);
+  vtkMath::Cross(v, w, vw);
+  return vtkMath::Dot(u, vw);
 }
 
 // Axis-aligned bounding box (xmin, xmax, ymin, ymax, zmin, zmax) of the points `ids` of `xyz`.
@@ -264,7 +285,7 @@ public:
   void Step1GreedyEdges(double begin, double end);
   void Step2Umbrella(double begin, double end);
   void GrowRegions(double begin, double end);
-  bool RemoveSmallOpenGrownParts();
+  void RemoveSmallOpenGrownParts();
   void RemoveGrownFlaps();
   void TakeBack(int64_t t);
   void Step3Status();
@@ -286,6 +307,18 @@ public:
     const double centre[3], double radius, double maximumDihedral, bool& byDihedral);
   void CapOpenEnds();
   bool IsNaturalBorder(const std::vector<int32_t>& loop, const double centre[3], double radius);
+  void PieceAreasAndVolumes(const std::vector<int32_t>& piece,
+    const std::vector<std::vector<int32_t>>& loops,
+    std::vector<double>& area,
+    std::vector<double>& volume) const;
+  bool CapsWellMouth(const std::vector<int32_t>& loop,
+    const double centre[3],
+    double radius,
+    double area,
+    double volume) const;
+  double CapFoldAngle(const std::vector<int32_t>& loop,
+    const double centre[3],
+    double outward) const;
   void Step7Swaps();
   void OrientOutwards();
   void RefineAndFairFills(std::vector<int32_t>& triangles, std::vector<uint8_t>& stages,
@@ -1502,13 +1535,12 @@ void Reconstruction::TakeBack(int64_t t)
 // After the small loops and the caps: a piece with grown triangles (stage 2) that is still open
 // and has fewer than MinimumIslandTriangles triangles is taken back, as step 2 dissolves its
 // small islands (a seed that grew into a strip the later steps could not join or close); its
-// points are lost again. True when a piece was taken back.
-bool Reconstruction::RemoveSmallOpenGrownParts()
+// points are lost again.
+void Reconstruction::RemoveSmallOpenGrownParts()
 {
-  bool takenBack = false;
   if (this->Grown == 0)
   {
-    return takenBack;
+    return;
   }
   const int64_t ids = std::min<int64_t>(this->Mesh.GetNumberOfTriangleIds(), this->Stage.size());
   const int64_t minimum = this->Self->GetMinimumIslandTriangles();
@@ -1548,7 +1580,6 @@ bool Reconstruction::RemoveSmallOpenGrownParts()
       vertices.insert(vertices.end(), tri, tri + 3);
       this->TakeBack(t);
     }
-    takenBack = true;
     // A lost point inserted into the piece (stage 8) is lost again: no longer counted inserted.
     for (int32_t v : vertices)
     {
@@ -1559,7 +1590,6 @@ bool Reconstruction::RemoveSmallOpenGrownParts()
       }
     }
   }
-  return takenBack;
 }
 
 //------------------------------------------------------------------------------------------------
@@ -3043,7 +3073,8 @@ bool Reconstruction::FillOpenLoop(const pcs::holes::HoleFiller& filler,
 // hemisphere of the rim's radius r gives 2 + 2 h / r, and a narrow slit going back along itself
 // spans almost nothing. Such a loop whose diameter is at most MaximumHoleDiameter is closed like
 // a small loop, its least-dihedral fallback kept up to MaximumCapDihedral: a cap meets the tube's
-// wall at about 90 degrees, more where the cut is ragged.
+// wall at about 90 degrees, more where the cut is ragged. Neither a natural border
+// (IsNaturalBorder) nor the mouth of a well (CapsWellMouth) is capped.
 void Reconstruction::CapOpenEnds()
 {
   if (!this->Self->GetFillHoles() || !this->Self->GetCapOpenEnds())
@@ -3057,22 +3088,10 @@ void Reconstruction::CapOpenEnds()
   {
     return;
   }
-  // Connected pieces of the mesh (through shared vertices) and their areas.
+  // Connected pieces of the mesh (through shared vertices), their areas and volumes.
   const std::vector<int32_t> piece = this->VertexPieces();
-  const int64_t ids = this->Mesh.GetNumberOfTriangleIds();
-  std::vector<double> area(static_cast<size_t>(this->N), 0.0);
-  for (int64_t t = 0; t < ids; ++t)
-  {
-    if (!this->Mesh.IsTriangleRemoved(t))
-    {
-      const int32_t* tri = this->Mesh.GetTriangle(t);
-      double u[3], v[3], n[3];
-      vtkMath::Subtract(this->P(tri[1]), this->P(tri[0]), u);
-      vtkMath::Subtract(this->P(tri[2]), this->P(tri[0]), v);
-      vtkMath::Cross(u, v, n);
-      area[piece[tri[0]]] += 0.5 * vtkMath::Norm(n);
-    }
-  }
+  std::vector<double> area, volume;
+  this->PieceAreasAndVolumes(piece, loops, area, volume);
   pcs::holes::HoleFiller filler;
   filler.AuxiliaryDistance = this->Self->GetAuxiliaryPointDistance() * this->Spacing;
   filler.MaximumGreedyPoints = this->Self->GetMaximumHolePoints();
@@ -3114,7 +3133,8 @@ void Reconstruction::CapOpenEnds()
     }
     if (2 * radius > diameterLimit ||
       !(area[piece[loop[0]]] >= CapAreaRatio * 0.5 * vtkMath::Norm(spanned)) ||
-      this->IsNaturalBorder(loop, centre, radius))
+      this->IsNaturalBorder(loop, centre, radius) ||
+      this->CapsWellMouth(loop, centre, radius, area[piece[loop[0]]], volume[piece[loop[0]]]))
     {
       continue;
     }
@@ -3126,6 +3146,182 @@ void Reconstruction::CapOpenEnds()
       this->LoopsFilledByDihedral += byDihedral ? 1 : 0;
     }
   }
+}
+
+//------------------------------------------------------------------------------------------------
+// The area of each piece (indexed by its VertexPieces root) and the signed volume it encloses once
+// each of its boundary loops is closed by a fan at the loop's centroid: positive when the piece is
+// oriented outwards.
+void Reconstruction::PieceAreasAndVolumes(const std::vector<int32_t>& piece,
+  const std::vector<std::vector<int32_t>>& loops,
+  std::vector<double>& area,
+  std::vector<double>& volume) const
+{
+  area.assign(static_cast<size_t>(this->N), 0.0);
+  volume.assign(static_cast<size_t>(this->N), 0.0);
+  const double* origin = this->P(0);
+  const int64_t ids = this->Mesh.GetNumberOfTriangleIds();
+  for (int64_t t = 0; t < ids; ++t)
+  {
+    if (!this->Mesh.IsTriangleRemoved(t))
+    {
+      const int32_t* tri = this->Mesh.GetTriangle(t);
+      double u[3], v[3], n[3];
+      vtkMath::Subtract(this->P(tri[1]), this->P(tri[0]), u);
+      vtkMath::Subtract(this->P(tri[2]), this->P(tri[0]), v);
+      vtkMath::Cross(u, v, n);
+      area[piece[tri[0]]] += 0.5 * vtkMath::Norm(n);
+      volume[piece[tri[0]]] +=
+        TetrahedronVolume6(origin, this->P(tri[0]), this->P(tri[1]), this->P(tri[2])) / 6.0;
+    }
+  }
+  for (const auto& front : loops)
+  {
+    double centre[3] = { 0, 0, 0 };
+    for (int32_t v : front)
+    {
+      vtkMath::Add(centre, this->P(v), centre);
+    }
+    vtkMath::MultiplyScalar(centre, 1.0 / front.size());
+    for (size_t i = 0; i < front.size(); ++i)
+    {
+      // The fan's triangle holds the twin of the mesh's half-edge on the loop.
+      int32_t a = front[i], b = front[(i + 1) % front.size()];
+      if (this->Mesh.FindTriangle(a, b) < 0)
+      {
+        std::swap(a, b);
+      }
+      volume[piece[front[0]]] += TetrahedronVolume6(origin, centre, this->P(b), this->P(a)) / 6.0;
+    }
+  }
+}
+
+// A loop at the mouth of a well (CapOpenEnds): wider than MaximumBridgeLength spacings (a
+// narrower loop is a sampling gap, closed as the small loops are), planar as a natural border's
+// rim (NaturalBorderFlatness), with no lost point within half its radius of its centre, where the
+// mesh beyond the loop rises over the outer side of the cap, making an angle of more than
+// MaximumCapFold degrees with it on the side of the material (CapFoldAngle). The piece's
+// orientation is read from the sign of its volume, when that volume is at least its area times
+// MinimumCapVolumeThickness mean spacings.
+bool Reconstruction::CapsWellMouth(const std::vector<int32_t>& loop,
+  const double centre[3],
+  double radius,
+  double area,
+  double volume) const
+{
+  if (2.0 * radius <= this->Self->GetMaximumBridgeLength() * this->Spacing ||
+    !(std::abs(volume) >= MinimumCapVolumeThickness * this->Spacing * area))
+  {
+    return false;
+  }
+  // A planar rim (as a natural border's): the angle with one cap plane means nothing on a loop
+  // winding in space.
+  pcs::holes::Plane plane;
+  if (!plane.Fit(this->X.data(), loop.data(), loop.size()))
+  {
+    return false;
+  }
+  double squares = 0.0;
+  for (int32_t v : loop)
+  {
+    const double d = plane.Distance(this->P(v));
+    squares += d * d;
+  }
+  if (std::sqrt(squares / loop.size()) > NaturalBorderFlatness * 2.0 * radius)
+  {
+    return false;
+  }
+  // Lost points within half the loop's radius of its centre: samples of the surface across the
+  // loop (a hole to fill, as IsNaturalBorder's).
+  vtkNew<vtkIdList> near;
+  this->Locator->FindPointsWithinRadius(0.5 * radius, centre, near);
+  for (vtkIdType j = 0; j < near->GetNumberOfIds(); ++j)
+  {
+    const int32_t q = static_cast<int32_t>(near->GetId(j));
+    if (this->Status[q] == vtkGreedySurfaceTriangulation::LOST && this->Mesh.IsFree(q))
+    {
+      return false;
+    }
+  }
+  return this->CapFoldAngle(loop, centre, volume) > MaximumCapFold;
+}
+
+// The angle (degrees, 0 to 360) that the mesh makes with a cap of `loop` across the loop, on the
+// side of the material (inside the piece closed by the cap, oriented outwards when `outward` is
+// positive): about 90 at the cut end of a tube, 180 where the cap continues the surface, 270 at the
+// mouth of a hole through the object whose wall leaves the loop at a right angle to the cap.
+double Reconstruction::CapFoldAngle(const std::vector<int32_t>& loop,
+  const double centre[3],
+  double outward) const
+{
+  // The cap's normal: its triangles hold the twins of the mesh's half-edges on the loop.
+  double normal[3] = { 0, 0, 0 };
+  for (size_t i = 0; i < loop.size(); ++i)
+  {
+    int32_t a = loop[i], b = loop[(i + 1) % loop.size()];
+    if (this->Mesh.FindTriangle(a, b) < 0)
+    {
+      std::swap(a, b);
+    }
+    double u[3], v[3], n[3];
+    vtkMath::Subtract(this->P(b), centre, u);
+    vtkMath::Subtract(this->P(a), centre, v);
+    vtkMath::Cross(u, v, n);
+    vtkMath::Add(normal, n, normal);
+  }
+  if (vtkMath::Normalize(normal) == 0.0 || outward == 0.0)
+  {
+    return NaN;
+  }
+  // The cap lies on the side of each edge that its own normal (the loop's orientation) tells; the
+  // outward normal is the cap's, or its opposite when the piece is oriented inwards.
+  const double capNormal[3] = { normal[0], normal[1], normal[2] };
+  vtkMath::MultiplyScalar(normal, outward > 0.0 ? 1.0 : -1.0);
+  // Per loop edge, the direction from the edge into its mesh triangle, perpendicular to the edge,
+  // against the direction from the edge into the cap (in the cap's plane, on the cap's side of
+  // the edge: its triangle holds the edge's twin) and the outward normal.
+  double acrossSum = 0.0, heightSum = 0.0;
+  for (size_t i = 0; i < loop.size(); ++i)
+  {
+    int32_t a = loop[i], b = loop[(i + 1) % loop.size()];
+    if (this->Mesh.FindTriangle(a, b) < 0)
+    {
+      std::swap(a, b);
+    }
+    const int32_t c = this->Mesh.OppositeVertex(a, b);
+    if (c < 0)
+    {
+      continue;
+    }
+    // The cap holds b -> a. The surface leaves the edge in the tangent plane of b's K nearest
+    // points (as IsNaturalBorder's: the triangles on a ragged rim may fold anywhere), on the side
+    // of the mesh triangle's third vertex.
+    double edge[3], towards[3], into[3], capward[3], covariance[3][3], values[3], tangentNormal[3];
+    vtkMath::Subtract(this->P(a), this->P(b), edge);
+    const double length = vtkMath::Normalize(edge);
+    vtkMath::Subtract(this->P(c), this->P(b), towards);
+    const int32_t* row = &this->Neighbors[static_cast<size_t>(b) * this->K];
+    if (pcs::OffsetCovariance(this->X.data(), this->P(b), row, this->K, true, covariance) < 3)
+    {
+      continue;
+    }
+    pcs::SmallestEigenvector(covariance, values, tangentNormal);
+    vtkMath::Cross(tangentNormal, edge, into);
+    if (vtkMath::Dot(into, towards) < 0.0)
+    {
+      vtkMath::MultiplyScalar(into, -1.0);
+    }
+    vtkMath::Cross(capNormal, edge, capward);
+    if (vtkMath::Normalize(into) == 0.0 || vtkMath::Normalize(capward) == 0.0)
+    {
+      continue;
+    }
+    acrossSum += length * vtkMath::Dot(into, capward);
+    heightSum += length * vtkMath::Dot(into, normal);
+  }
+  // The cap leaves the loop at angle 0; the material lies below it (against the normal).
+  const double angle = vtkMath::DegreesFromRadians(std::atan2(-heightSum, acrossSum));
+  return angle < 0.0 ? angle + 360.0 : angle;
 }
 
 //------------------------------------------------------------------------------------------------
@@ -3312,12 +3508,7 @@ void Reconstruction::OrientOutwards()
       const int64_t t = stack.back();
       stack.pop_back();
       const int32_t* tri = this->Mesh.GetTriangle(t);
-      double a[3], b[3], c[3], bc[3];
-      vtkMath::Subtract(this->P(tri[0]), origin, a);
-      vtkMath::Subtract(this->P(tri[1]), origin, b);
-      vtkMath::Subtract(this->P(tri[2]), origin, c);
-      vtkMath::Cross(b, c, bc);
-      volume += vtkMath::Dot(a, bc);
+      volume += TetrahedronVolume6(origin, this->P(tri[0]), this->P(tri[1]), this->P(tri[2]));
       for (int j = 0; j < 3; ++j)
       {
         const int64_t u = this->Mesh.FindTriangle(tri[(j + 1) % 3], tri[j]);
@@ -4360,12 +4551,10 @@ int vtkGreedySurfaceTriangulation::RequestData(
     x.RemoveGrownFlaps();
     x.CloseSmallLoops();
     x.CapOpenEnds();
-    if (x.RemoveSmallOpenGrownParts())
-    {
-      // The points of the pieces taken back, and the lost points still free, get one more pass
-      // of the insertion, into the mesh as the small loops and the caps left it.
-      x.InsertLostPoints(end, end);
-    }
+    x.RemoveSmallOpenGrownParts();
+    // The lost points still free (and those of the pieces taken back) get one more pass of the
+    // insertion, into the mesh as the small loops and the caps left it.
+    x.InsertLostPoints(end, end);
     x.Step7Swaps();
     return true;
   };

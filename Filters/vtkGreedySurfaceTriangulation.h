@@ -101,9 +101,10 @@
  *   run twice, on the regions of step 2 and on the grown ones, and the grown result is kept when
  *   it uses more points without more boundary edges. After the insertion, grown triangles
  *   hanging by one edge are taken back, and after the caps so are open pieces with grown
- *   triangles of fewer than MinimumIslandTriangles triangles (their points, and the lost points
- *   still free, get one more pass of the lost point insertion into the mesh the caps left, and
- *   are reported unused when it cannot reach them: on the camel's vertices 50 -> 31 unused;
+ *   triangles of fewer than MinimumIslandTriangles triangles (their points, and in both results
+ *   the lost points still free, get one more pass of the lost point insertion into the mesh the
+ *   small loops and caps left, and are reported unused when it cannot reach them: on the camel's
+ *   vertices 50 -> 31 unused;
  *   a lost point inserted into such a piece is no longer counted in NumberOfInsertedPoints; a
  *   hole fill, loop closure or cap taken back with one stays counted in NumberOfHolesFilled,
  *   NumberOfSmallLoopsClosed or NumberOfEndsCapped: fills made, none taken back on the benchmark
@@ -253,7 +254,21 @@
  *   1, a half cylinder pi / 2, a hemisphere bowl 2), the end of a tube reaching h beyond a
  *   hemisphere of the rim's radius r gives 2 + 2 h / r, and a narrow slit going back along
  *   itself spans almost nothing. A natural border (above: a planar rim the surface meets steeply,
- *   nothing beyond it: a vase's mouth) is not capped. The caps are fill triangles (stage 6),
+ *   nothing beyond it: a vase's mouth) is not capped, nor the mouth of a well: a loop wider than
+ *   MaximumBridgeLength spacings, planar as a natural border's rim (rms distance to its plane at
+ *   most 0.05 of its diameter), with no lost point within half its radius of its centre, where
+ *   the surface beyond it rises over the outer side of the cap, making an angle of more than 240
+ *   degrees with it on the side of the material (the direction in which the surface leaves each
+ *   loop edge, perpendicular to the edge in the plane of the K nearest points of its end, towards
+ *   its mesh triangle, against the cap's plane, summed over the loop weighted by edge length; a
+ *   tube's cut end makes 90 degrees, a hole in a smooth surface about 180, the mouth of a hole
+ *   through the object 270 and more, a flared one about 340). The
+ *   side of the material is read from the sign of the volume the piece encloses once its loops
+ *   are closed by fans, when that volume is at least a quarter of its area times the mean spacing
+ *   (a body, not a sheet). Such a cap closes the mouth of a hole whose wall the samples show, and
+ *   faired it bulges out of the object (the held-out turbine's flared central hole, the missing
+ *   flat ring around its mouth open: 31 spacings from the surface); a well's floor missing in a
+ *   scan is left open as well. The caps are fill triangles (stage 6),
  *   refined and faired like the others (FairHoleFills): across a cut the cap bulges to continue the
  *   tube, so the two caps of a narrow cut come close (a capsule of radius 22 spacings cut by an
  *   empty slab 17 spacings wide: 1 spacing apart). Counted in NumberOfEndsCapped, the fallback also

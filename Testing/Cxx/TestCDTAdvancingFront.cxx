@@ -122,6 +122,25 @@ Cloud DenseCapSphere(int n, int m, unsigned seed)
   return c;
 }
 
+// A density jump: `upper` points uniform on the hemisphere z >= 0 and `lower` on z <= 0 (each a
+// uniform sample of the sphere folded onto its half); exact normals.
+Cloud TwoDensitySphere(int upper, int lower, unsigned seed)
+{
+  Cloud c;
+  for (int half = 0; half < 2; ++half)
+  {
+    const Cloud sample = Sphere(half == 0 ? upper : lower, seed + half);
+    const double sign = half == 0 ? 1.0 : -1.0;
+    for (size_t i = 0; i < sample.XYZ.size(); i += 3)
+    {
+      const double p[3] = { sample.XYZ[i], sample.XYZ[i + 1], sign * std::fabs(sample.XYZ[i + 2]) };
+      c.XYZ.insert(c.XYZ.end(), { p[0], p[1], p[2] });
+      c.Normals.insert(c.Normals.end(), { p[0], p[1], p[2] });
+    }
+  }
+  return c;
+}
+
 // Uniform on the torus surface (rejection on the area element), radii 1 and 0.4.
 Cloud Torus(int n, unsigned seed)
 {
@@ -589,6 +608,13 @@ int TestCDTAdvancingFront(int, char*[])
   const Cloud denseCap = DenseCapSphere(3000, 2000, 6);
   failures += TestClosed("sphere + dense cap, input normals", denseCap, true, 0) ? 0 : 1;
   failures += TestClosed("sphere + dense cap, PCA normals", denseCap, false, 0) ? 0 : 1;
+  // A density jump of 20 (spacing 4.5 times larger on the lower half; most points on the upper
+  // half, so the mean spacing is about the fine one): the automatic neighbourhood radius follows
+  // the local spacing where it exceeds the mean. With one global radius of 5 mean spacings (about
+  // 1.2 spacings of the sparse half) 225 boundary edges were left.
+  const Cloud jump = TwoDensitySphere(6000, 300, 7);
+  failures += TestClosed("sphere, density jump 20, input normals", jump, true, 0) ? 0 : 1;
+  failures += TestClosed("sphere, density jump 20, PCA normals", jump, false, 0) ? 0 : 1;
   failures += TestClosed("torus 4000, input normals", Torus(4000, 4), true, 1) ? 0 : 1;
   failures += TestClosed("torus 4000, PCA normals", Torus(4000, 5), false, 1) ? 0 : 1;
   // A sharp rim (normals 120 and 100 degrees apart across it): the front stops there (II.C.1),

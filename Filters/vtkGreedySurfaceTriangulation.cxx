@@ -2996,8 +2996,9 @@ bool Reconstruction::LeastDihedralFill(const std::vector<int32_t>& loop,
   };
   auto edgeExists = [this](int32_t a, int32_t b) { return this->Mesh.GetEdgeValence(a, b) > 0; };
   std::vector<int32_t> fill;
+  // Fills beyond maximumDihedral are refused below: the programme does not keep them either.
   const double worst =
-    pcs::holes::LeastDihedralFill(this->X.data(), loop, edgeExists, across, fill);
+    pcs::holes::LeastDihedralFill(this->X.data(), loop, edgeExists, across, fill, maximumDihedral);
   if (!(worst >= 0.0 && worst <= maximumDihedral))
   {
     return false;

@@ -1072,10 +1072,14 @@ bool HoleFiller::Fill(const double* xyz, const std::vector<int32_t>& loop,
 // unit normal of the mesh triangle on the loop edge loop[e] -> loop[e + 1] (false when none).
 // Triangles in loop order are appended to `triangles`; the largest dihedral angle (radians) is
 // returned, or a negative value when there is no triangulation (or the loop has more than 400
-// vertices: the cost is cubic).
-double LeastDihedralFill(const double* xyz, const std::vector<int32_t>& loop,
+// vertices: the cost is cubic). No sub-polygon's triangulation whose angle exceeds `maximumAngle`
+// (beyond the tie tolerance) is kept: the caller refuses such fills anyway.
+double LeastDihedralFill(const double* xyz,
+  const std::vector<int32_t>& loop,
   const std::function<bool(int32_t, int32_t)>& edgeExists,
-  const std::function<bool(int, double[3])>& across, std::vector<int32_t>& triangles)
+  const std::function<bool(int, double[3])>& across,
+  std::vector<int32_t>& triangles,
+  double maximumAngle)
 {
   const int n = static_cast<int>(loop.size());
   if (n < 3 || n > 400)
@@ -1107,6 +1111,8 @@ double LeastDihedralFill(const double* xyz, const std::vector<int32_t>& loop,
   }
   double outerNormal[3];
   const bool hasOuter = across(n - 1, outerNormal);
+  const double capCut =
+    maximumAngle < inf ? std::cos(std::min(maximumAngle + 1e-9, vtkMath::Pi())) - 1e-12 : -inf;
   for (int span = 2; span < n; ++span)
   {
     for (int i = 0; i + span < n; ++i)
@@ -1118,17 +1124,18 @@ double LeastDihedralFill(const double* xyz, const std::vector<int32_t>& loop,
       {
         continue;
       }
-      // The best candidate so far; a candidate whose angle with a neighbour exceeds `current` by
-      // more than the tie tolerance cannot be kept: its cosine is below `cosineCut` (a margin of
-      // 1e-12 in cosine is more than 1e-12 radians, far above the rounding of cos and acos).
-      double current = inf, cosineCut = -inf;
+      // The best candidate so far; a candidate whose angle with a neighbour exceeds `current`
+      // (or `maximumAngle`) by more than the tie tolerance cannot be kept: its cosine is below
+      // `cosineCut` (a margin of 1e-12 in cosine is more than 1e-12 radians, far above the
+      // rounding of cos and acos).
+      double current = inf, ceiling = maximumAngle, cosineCut = capCut;
       for (int k = i + 1; k < j; ++k)
       {
         // The sub-polygons' angles bound the candidate's from below: a candidate that cannot
         // beat the current best even on a tie is passed over before any normal is computed, and
         // the exact degeneracy test is made only for a candidate that would be kept.
         const double atLeast = std::max(angle[at(i, k)], angle[at(k, j)]);
-        if (!(atLeast < inf) || atLeast > current + 1e-9)
+        if (!(atLeast < inf) || atLeast > ceiling + 1e-9)
         {
           continue;
         }
@@ -1163,7 +1170,8 @@ double LeastDihedralFill(const double* xyz, const std::vector<int32_t>& loop,
           angle[at(i, j)] = current = worst;
           area[at(i, j)] = a;
           best[at(i, j)] = k;
-          cosineCut = std::cos(std::min(worst + 1e-9, vtkMath::Pi())) - 1e-12;
+          ceiling = std::min(current, maximumAngle);
+          cosineCut = std::cos(std::min(ceiling + 1e-9, vtkMath::Pi())) - 1e-12;
         }
       }
       if (best[at(i, j)] >= 0)

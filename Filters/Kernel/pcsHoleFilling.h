@@ -41,6 +41,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace pcs
@@ -186,10 +187,16 @@ private:
 /// unit normal of the mesh triangle on the loop edge loop[e] -> loop[e + 1] (false when none).
 /// Triangles in loop order are appended to `triangles`; the largest dihedral angle (radians) is
 /// returned, or a negative value when there is no triangulation (or the loop has more than 400
-/// vertices: the cost is cubic).
-double LeastDihedralFill(const double* xyz, const std::vector<int32_t>& loop,
+/// vertices: the cost is cubic). A caller that refuses fills whose angle exceeds `maximumAngle`
+/// (radians) passes it: no sub-polygon's triangulation beyond it (and the 1e-9 tie tolerance)
+/// is kept, which prunes the programme; the result is then negative, or above `maximumAngle`,
+/// when every triangulation exceeds it.
+double LeastDihedralFill(const double* xyz,
+  const std::vector<int32_t>& loop,
   const std::function<bool(int32_t, int32_t)>& edgeExists,
-  const std::function<bool(int, double[3])>& across, std::vector<int32_t>& triangles);
+  const std::function<bool(int, double[3])>& across,
+  std::vector<int32_t>& triangles,
+  double maximumAngle = std::numeric_limits<double>::infinity());
 
 /// A loop of `mesh`'s boundary closed by LeastDihedralFill, kept only when the fill stays on the
 /// sampled surface (the loop closers of vtkLocalOptimumGrowth and vtkCDTAdvancingFront, each

@@ -545,6 +545,28 @@ void TestLeastDihedralFill()
   triangles.clear();
   CHECK(pcs::holes::LeastDihedralFill(flat, { 0, 1 }, nullptr, noAcross, triangles) < 0,
     "two vertices: no triangulation");
+  // A saddle (12 vertices on z = 0.4 cos 2a): its fill has some least largest angle A > 0. With
+  // maximumAngle above A the fill is the same; below A no fill within maximumAngle is returned.
+  std::vector<double> saddle;
+  std::vector<int32_t> twelve;
+  for (int i = 0; i < 12; ++i)
+  {
+    const double a = 2.0 * std::acos(-1.0) * i / 12.0;
+    saddle.insert(saddle.end(), { std::cos(a), std::sin(a), 0.4 * std::cos(2.0 * a) });
+    twelve.push_back(i);
+  }
+  std::vector<int32_t> uncapped, capped;
+  const double least =
+    pcs::holes::LeastDihedralFill(saddle.data(), twelve, nullptr, noAcross, uncapped);
+  CHECK(
+    least > 0.01 && uncapped.size() == 30, "saddle: 10 triangles with a positive angle expected");
+  const double above =
+    pcs::holes::LeastDihedralFill(saddle.data(), twelve, nullptr, noAcross, capped, least + 0.01);
+  CHECK(above == least && capped == uncapped, "saddle: a cap above the angle changed the fill");
+  capped.clear();
+  const double below =
+    pcs::holes::LeastDihedralFill(saddle.data(), twelve, nullptr, noAcross, capped, least - 0.01);
+  CHECK(below < 0.0 || below > least - 0.01, "saddle: a fill within a cap below its angle");
 }
 
 // FillLoopNearSamples on a unit cube without its top face (the samples: the 8 corners, and the

@@ -687,9 +687,22 @@ bool HoleFiller::SplitPiece(const double* xyz, const Piece& piece, const Plane* 
         j });
     }
   }
-  std::sort(chords.begin(), chords.end(), [](const Chord& a, const Chord& b) {
-    return a.Score != b.Score ? a.Score < b.Score : (a.I != b.I ? a.I < b.I : a.J < b.J);
-  });
+  // The chords in increasing score (ties by I, then J), taken from a heap as the passes reach
+  // them: the first acceptable chord usually comes early, so the whole list is rarely sorted.
+  auto later = [](const Chord& a, const Chord& b)
+  { return a.Score != b.Score ? a.Score > b.Score : (a.I != b.I ? a.I > b.I : a.J > b.J); };
+  std::make_heap(chords.begin(), chords.end(), later);
+  std::vector<Chord> ordered;
+  auto chordAt = [&](size_t k) -> const Chord*
+  {
+    while (ordered.size() <= k && !chords.empty())
+    {
+      std::pop_heap(chords.begin(), chords.end(), later);
+      ordered.push_back(chords.back());
+      chords.pop_back();
+    }
+    return k < ordered.size() ? &ordered[k] : nullptr;
+  };
 
   auto forbidden = [this, &piece](int32_t a, int32_t b) {
     return (this->EdgeExists && this->EdgeExists(a, b)) ||
@@ -742,8 +755,9 @@ bool HoleFiller::SplitPiece(const double* xyz, const Piece& piece, const Plane* 
 
   for (int pass = 0; pass < 2; ++pass)
   {
-    for (const Chord& c : chords)
+    for (size_t next = 0; const Chord* chord = chordAt(next); ++next)
     {
+      const Chord& c = *chord;
       if (forbidden(loop[c.I], loop[c.J]))
       {
         continue;

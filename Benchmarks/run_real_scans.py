@@ -11,8 +11,8 @@ script reports what can be judged without one, side by side with CGAL's advancin
 
 - CPU seconds of the reconstruction alone (the filter's Update; CGAL's own processor time), and
   the ratio to CGAL's;
-- triangles, points left unused (negative: points added, e.g. greedy's faired fills), boundary
-  edges, connected components, non-manifold edges + vertices (vtkReconstructionQuality);
+- triangles, input points left unused, points added (greedy's faired fills), boundary edges,
+  connected components, non-manifold edges + vertices (vtkReconstructionQuality);
 - long edges: triangle edges longer than 6 times the larger of their two end points' distance to
   their 6th nearest input point: edges that jump over the local sampling (webs, bridges, caps).
 
@@ -86,8 +86,10 @@ def summarize(points, mesh_points, triangles):
     quality.Update()
     fields = quality.GetOutput().GetFieldData()
     value = lambda name: int(fields.GetArray(name).GetValue(0))  # noqa: E731
-    used = len(np.unique(triangles)) if len(triangles) else 0
+    vertices = np.unique(triangles) if len(triangles) else np.zeros(0, np.int64)
+    used = int(np.count_nonzero(vertices < len(points)))
     return {"triangles": len(triangles), "unused": len(points) - used,
+            "added": int(np.count_nonzero(vertices >= len(points))),
             "boundary": value("NumberOfBoundaryEdges"),
             "components": value("NumberOfConnectedComponents"),
             "nonmanifold": value("NumberOfNonManifoldEdges") +
@@ -114,14 +116,15 @@ def run_filter(path, name):
     print(json.dumps(result))
 
 
-def run_cgal(binary, path):
+def run_cgal(binary, path, timeout):
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     from run_mesh_vertex_sweep import read_off
     points = load_points(path)
     with tempfile.TemporaryDirectory() as folder:
         xyz, off = os.path.join(folder, "cloud.xyz"), os.path.join(folder, "mesh.off")
         np.savetxt(xyz, points)
-        out = subprocess.run([binary, xyz, off], check=True, capture_output=True, text=True)
+        out = subprocess.run([binary, xyz, off], check=True, capture_output=True, text=True,
+                             timeout=timeout)
         report = json.loads(out.stdout.strip().splitlines()[-1])
         triangles = read_off(off)[1]
     result = summarize(points, points, triangles.reshape(-1, 3))
@@ -141,17 +144,17 @@ def main():
     if args.one:
         run_filter(*args.one)
         return
-    print("| cloud | points | method | CPU s | / CGAL | triangles | unused | boundary edges | "
-          "components | non-manifold | long edges |")
-    print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+    print("| cloud | points | method | CPU s | / CGAL | triangles | unused | added | "
+          "boundary edges | components | non-manifold | long edges |")
+    print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for label in args.clouds:
         path = os.path.join(args.data, "points_3", CLOUDS[label])
         rows = []
         cgal = None
         if args.cgal:
             try:
-                cgal = run_cgal(args.cgal, path)
-            except (subprocess.CalledProcessError, ValueError) as error:
+                cgal = run_cgal(args.cgal, path, args.timeout)
+            except (subprocess.SubprocessError, ValueError, IndexError, OSError) as error:
                 print("| %s | | cgal | failed: %s |" % (label, str(error)[:80]))
         for name in args.filters:
             try:
@@ -160,20 +163,26 @@ def main():
                 out = subprocess.run(command, capture_output=True, text=True,
                                      timeout=args.timeout)
                 lines = out.stdout.strip().splitlines()
-                rows.append((name, json.loads(lines[-1]) if out.returncode == 0 and lines
-                             else "exit code %d" % out.returncode))
+                if out.returncode != 0 or not lines:
+                    rows.append((name, "exit code %d" % out.returncode))
+                    continue
+                try:
+                    rows.append((name, json.loads(lines[-1])))
+                except ValueError:
+                    rows.append((name, "bad output: %s" % lines[-1][:60]))
             except subprocess.TimeoutExpired:
                 rows.append((name, "TIMEOUT (%g s)" % args.timeout))
         if cgal:
             rows.append(("cgal", cgal))
         for name, r in rows:
             if isinstance(r, str):
-                print("| %s | | %s | %s | | | | | | | |" % (label, name, r))
+                print("| %s | | %s | %s | | | | | | | | |" % (label, name, r))
                 continue
             ratio = "%.2f" % (r["cpu"] / cgal["cpu"]) if cgal and cgal["cpu"] > 0 else ""
-            print("| %s | %d | %s | %.3f | %s | %d | %d | %d | %d | %d | %d |" % (
+            print("| %s | %d | %s | %.3f | %s | %d | %d | %d | %d | %d | %d | %d |" % (
                 label, r["points"], name, r["cpu"], ratio, r["triangles"], r["unused"],
-                r["boundary"], r["components"], r["nonmanifold"], r["long"]), flush=True)
+                r["added"], r["boundary"], r["components"], r["nonmanifold"], r["long"]),
+                flush=True)
 
 
 if __name__ == "__main__":

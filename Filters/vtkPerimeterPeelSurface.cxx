@@ -801,6 +801,7 @@ public:
         }
       }
       this->Group.clear();
+      this->StrutPoints.clear();
       this->DirtyVertices.clear();
     }
     return ok;

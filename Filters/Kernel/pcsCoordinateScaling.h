@@ -27,18 +27,24 @@ inline int PredicateSafeExponent(double largest)
   return -exponent; // largest * 2^-exponent is in [0.5, 1)
 }
 
-/// The same for the points `ids` of `coords` (dim values per point).
-inline int PredicateSafeExponent(const double* coords, int dim, const std::vector<int32_t>& ids)
+/// The same for the points ids[0, count) of `coords` (dim values per point).
+inline int PredicateSafeExponent(const double* coords, int dim, const int32_t* ids, size_t count)
 {
   double largest = 0.0;
-  for (int32_t id : ids)
+  for (size_t k = 0; k < count; ++k)
   {
     for (int i = 0; i < dim; ++i)
     {
-      largest = std::max(largest, std::fabs(coords[dim * static_cast<int64_t>(id) + i]));
+      largest = std::max(largest, std::fabs(coords[dim * static_cast<int64_t>(ids[k]) + i]));
     }
   }
   return PredicateSafeExponent(largest);
+}
+
+/// The same for the points `ids` of `coords` (dim values per point).
+inline int PredicateSafeExponent(const double* coords, int dim, const std::vector<int32_t>& ids)
+{
+  return PredicateSafeExponent(coords, dim, ids.data(), ids.size());
 }
 
 /// The largest magnitude among the finite values of coords[0, count) and `largest` (0 when there

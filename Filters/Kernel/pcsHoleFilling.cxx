@@ -112,7 +112,7 @@ int SimplePolygonOrientation(const std::vector<double>& uv)
 //------------------------------------------------------------------------------------------------
 bool Plane::Fit(const double* xyz, const int32_t* ids, size_t count)
 {
-  if (count < 3)
+  if (count == 0)
   {
     return false;
   }
@@ -120,7 +120,7 @@ bool Plane::Fit(const double* xyz, const int32_t* ids, size_t count)
   // pcsCoordinateScaling.h; exact, 1 in the usual range): the squares of coordinates near 1e300
   // or 1e-300 would overflow or underflow.
   const double scale =
-    std::ldexp(1.0, pcs::PredicateSafeExponent(xyz, 3, std::vector<int32_t>(ids, ids + count)));
+    std::ldexp(1.0, pcs::PredicateSafeExponent(xyz, 3, ids, count));
   double centroid[3] = { 0, 0, 0 };
   for (size_t k = 0; k < count; ++k)
   {
@@ -158,7 +158,8 @@ bool Plane::Fit(const double* xyz, const int32_t* ids, size_t count)
     this->V[i] = vectors[i][1];
   }
   vtkMath::Cross(this->U, this->V, this->N);
-  return std::isfinite(this->N[0]) && std::isfinite(this->N[1]) && std::isfinite(this->N[2]);
+  return count >= 3 && std::isfinite(this->N[0]) && std::isfinite(this->N[1]) &&
+    std::isfinite(this->N[2]);
 }
 
 void Plane::Project(const double* p, double uv[2]) const

@@ -60,7 +60,8 @@ struct Plane
   double N[3] = { 0, 0, 1 };
 
   /// Least-squares plane of the points `ids` of `xyz` (centroid, principal axes of largest
-  /// variance). Returns false when there are fewer than 3 points.
+  /// variance; with 1 or 2 points the centroid and an axis along them). Returns false when there
+  /// are fewer than 3 points or the frame is not finite.
   bool Fit(const double* xyz, const int32_t* ids, size_t count);
   /// In-plane coordinates of p.
   void Project(const double* p, double uv[2]) const;

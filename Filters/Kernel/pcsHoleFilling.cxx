@@ -1118,6 +1118,8 @@ double LeastDihedralFill(const double* xyz,
   // on (i, j). `hasSide` is 0 where there is none.
   std::vector<double> sideNormal(3 * static_cast<size_t>(n) * n, 0.0);
   std::vector<char> hasSide(static_cast<size_t>(n) * n, 0);
+  // The cosine of each solved sub-polygon's angle (1 for a loop edge's 0).
+  std::vector<double> cosine(static_cast<size_t>(n) * n, 1.0);
   for (int i = 0; i + 1 < n; ++i)
   {
     angle[at(i, i + 1)] = 0.0;
@@ -1154,8 +1156,15 @@ double LeastDihedralFill(const double* xyz,
         {
           continue;
         }
+        // Nor can one that is not clearly better by its sub-polygons and whose sub-polygons alone
+        // have at least the best one's area (its triangle's area only adds to it).
+        const double partsArea = area[at(i, k)] + area[at(k, j)];
+        if (atLeast >= current - 1e-9 && partsArea >= area[at(i, j)])
+        {
+          continue;
+        }
         double nrm[3];
-        const double a = area[at(i, k)] + area[at(k, j)] + unitNormal(i, k, j, nrm);
+        const double a = partsArea + unitNormal(i, k, j, nrm);
         const double* neighbours[3] = { hasSide[at(i, k)] ? &sideNormal[3 * at(i, k)] : nullptr,
           hasSide[at(k, j)] ? &sideNormal[3 * at(k, j)] : nullptr,
           outer && hasOuter ? outerNormal : nullptr };
@@ -1173,8 +1182,11 @@ double LeastDihedralFill(const double* xyz,
         {
           continue;
         }
+        // A dot product above the sub-polygons' cosine (by the same margin) is an angle below
+        // their largest one, which it does not change: no acos then.
         double worst = atLeast;
-        if (smallestDot < inf)
+        const double atLeastCosine = std::min(cosine[at(i, k)], cosine[at(k, j)]) + 1e-12;
+        if (smallestDot < inf && !(smallestDot > atLeastCosine))
         {
           worst = std::max(worst, std::acos(std::max(-1.0, std::min(1.0, smallestDot))));
         }
@@ -1193,6 +1205,7 @@ double LeastDihedralFill(const double* xyz,
       {
         unitNormal(i, best[at(i, j)], j, &sideNormal[3 * at(i, j)]);
         hasSide[at(i, j)] = 1;
+        cosine[at(i, j)] = std::cos(angle[at(i, j)]);
       }
     }
   }

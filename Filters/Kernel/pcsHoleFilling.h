@@ -191,7 +191,10 @@ private:
 /// vertices: the cost is cubic). A caller that refuses fills whose angle exceeds `maximumAngle`
 /// (radians) passes it: no sub-polygon's triangulation beyond it (and the 1e-9 tie tolerance)
 /// is kept, which prunes the programme; the result is then negative, or above `maximumAngle`,
-/// when every triangulation exceeds it.
+/// when every triangulation exceeds it. Splits that cannot be taken (their parts or their
+/// normals already beyond the best split's angle, or not better and with no less area) are
+/// skipped before their angles are computed: the result of the plain recurrence, in a fraction
+/// of the time on noisy loops.
 double LeastDihedralFill(const double* xyz,
   const std::vector<int32_t>& loop,
   const std::function<bool(int32_t, int32_t)>& edgeExists,

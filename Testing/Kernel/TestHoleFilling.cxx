@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <random>
 #include <set>
@@ -569,6 +570,226 @@ void TestLeastDihedralFill()
   CHECK(below < 0.0 || below > least - 0.01, "saddle: a fill within a cap below its angle");
 }
 
+// The largest dihedral angle of a triangulation of `loop` (fill triangles as LeastDihedralFill
+// writes them): between the two triangles on each diagonal, and between a triangle and the mesh
+// normal across a loop edge (`across`, indexed by the edge's first loop position).
+double LargestDihedral(const std::vector<double>& xyz,
+  const std::vector<int32_t>& loop,
+  const std::vector<int32_t>& triangles,
+  const std::vector<std::vector<double>>& across)
+{
+  const int n = static_cast<int>(loop.size());
+  std::map<std::pair<int32_t, int32_t>, std::vector<std::vector<double>>> normalsOnEdge;
+  for (int e = 0; e < n; ++e)
+  {
+    if (!across[e].empty())
+    {
+      const int32_t a = loop[e], b = loop[(e + 1) % n];
+      normalsOnEdge[{ std::min(a, b), std::max(a, b) }].push_back(across[e]);
+    }
+  }
+  for (size_t t = 0; t + 2 < triangles.size(); t += 3)
+  {
+    const double* p = &xyz[3 * triangles[t]];
+    const double* q = &xyz[3 * triangles[t + 1]];
+    const double* r = &xyz[3 * triangles[t + 2]];
+    const double u[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+    const double v[3] = { r[0] - p[0], r[1] - p[1], r[2] - p[2] };
+    std::vector<double> m = {
+      u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]
+    };
+    const double length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    for (double& c : m)
+    {
+      c /= length;
+    }
+    for (int j = 0; j < 3; ++j)
+    {
+      const int32_t a = triangles[t + j], b = triangles[t + (j + 1) % 3];
+      normalsOnEdge[{ std::min(a, b), std::max(a, b) }].push_back(m);
+    }
+  }
+  double worst = 0.0;
+  for (const auto& edge : normalsOnEdge)
+  {
+    if (edge.second.size() == 2)
+    {
+      const auto& a = edge.second[0];
+      const auto& b = edge.second[1];
+      const double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+      worst = std::max(worst, std::acos(std::max(-1.0, std::min(1.0, dot))));
+    }
+  }
+  return worst;
+}
+
+// Liepa's recurrence as written (SGP 2003, section 3.1; no pruning), the reference for
+// LeastDihedralFill, which skips the splits that cannot be taken: for each sub-polygon i..j in
+// order of size, the split k of least (largest dihedral angle, then area), ties within 1e-9
+// radians going to the smaller area and then to the first k. Returns the triangles.
+std::vector<int32_t> PlainLeastDihedralFill(const std::vector<double>& xyz,
+  const std::vector<int32_t>& loop,
+  const std::set<std::pair<int32_t, int32_t>>& edges,
+  const std::vector<std::vector<double>>& across)
+{
+  const int n = static_cast<int>(loop.size());
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<std::vector<double>> angle(n, std::vector<double>(n, inf)), area(angle);
+  std::vector<std::vector<int>> best(n, std::vector<int>(n, -1));
+  // The unit normal of the triangle of loop positions (a, b, c) and half its cross product's
+  // length.
+  auto normal = [&](int a, int b, int c, double m[3])
+  {
+    const double* p = &xyz[3 * loop[a]];
+    const double* q = &xyz[3 * loop[b]];
+    const double* r = &xyz[3 * loop[c]];
+    const double u[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+    const double v[3] = { r[0] - p[0], r[1] - p[1], r[2] - p[2] };
+    m[0] = u[1] * v[2] - u[2] * v[1];
+    m[1] = u[2] * v[0] - u[0] * v[2];
+    m[2] = u[0] * v[1] - u[1] * v[0];
+    const double length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    for (int d = 0; d < 3 && length > 0.0; ++d)
+    {
+      m[d] /= length;
+    }
+    return 0.5 * length;
+  };
+  // The normal on the side (a, b): the mesh across a loop edge, else the best split's triangle.
+  auto side = [&](int a, int b, double m[3])
+  {
+    if (b == a + 1 || (a == 0 && b == n - 1))
+    {
+      const auto& t = across[b == a + 1 ? a : n - 1];
+      std::copy(t.begin(), t.end(), m);
+      return !t.empty();
+    }
+    normal(a, best[a][b], b, m);
+    return true;
+  };
+  for (int i = 0; i + 1 < n; ++i)
+  {
+    angle[i][i + 1] = area[i][i + 1] = 0.0;
+  }
+  for (int span = 2; span < n; ++span)
+  {
+    for (int i = 0, j = span; j < n; ++i, ++j)
+    {
+      if (span < n - 1 && edges.count({ std::min(loop[i], loop[j]), std::max(loop[i], loop[j]) }))
+      {
+        continue;
+      }
+      for (int k = i + 1; k < j; ++k)
+      {
+        double m[3], other[3];
+        const double triangleArea = normal(i, k, j, m);
+        if (!(angle[i][k] < inf && angle[k][j] < inf) || !(triangleArea > 0.0))
+        {
+          continue;
+        }
+        double worst = std::max(angle[i][k], angle[k][j]);
+        const std::pair<int, int> sides[3] = { { i, k }, { k, j }, { 0, n - 1 } };
+        for (int s = 0; s < (span == n - 1 ? 3 : 2); ++s)
+        {
+          if (side(sides[s].first, sides[s].second, other))
+          {
+            const double dot = m[0] * other[0] + m[1] * other[1] + m[2] * other[2];
+            worst = std::max(worst, std::acos(std::max(-1.0, std::min(1.0, dot))));
+          }
+        }
+        const double a = area[i][k] + area[k][j] + triangleArea;
+        if (worst < angle[i][j] - 1e-9 || (worst <= angle[i][j] + 1e-9 && a < area[i][j]))
+        {
+          angle[i][j] = worst;
+          area[i][j] = a;
+          best[i][j] = k;
+        }
+      }
+    }
+  }
+  std::vector<int32_t> triangles;
+  std::vector<std::pair<int, int>> stack = { { 0, n - 1 } };
+  while (!stack.empty() && best[0][n - 1] >= 0)
+  {
+    const auto range = stack.back();
+    stack.pop_back();
+    const int k = best[range.first][range.second];
+    if (k >= 0)
+    {
+      triangles.insert(triangles.end(), { loop[range.first], loop[k], loop[range.second] });
+      stack.push_back({ range.first, k });
+      stack.push_back({ k, range.second });
+    }
+  }
+  return triangles;
+}
+
+// LeastDihedralFill against the plain recurrence on random loops: bumpy, noisy rings of 4 to
+// 60 vertices with mesh normals across most of their edges and some diagonals already in the
+// mesh, which have many splits of equal largest angle (the one at a mesh edge). The same
+// triangles, and their largest dihedral angle is the one returned.
+void TestLeastDihedralFillSkipsOnlyUntakenSplits()
+{
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int trial = 0; trial < 120; ++trial)
+  {
+    const int n = 4 + trial % 57;
+    std::vector<double> xyz;
+    std::vector<int32_t> loop;
+    std::vector<std::vector<double>> across(n);
+    for (int i = 0; i < n; ++i)
+    {
+      const double a = 2.0 * std::acos(-1.0) * i / n;
+      const double bump = 0.4 * std::sin(3.0 * a);
+      xyz.insert(xyz.end(),
+        { std::cos(a) + 0.1 * unit(random),
+          std::sin(a) + 0.1 * unit(random),
+          bump + 0.1 * unit(random) });
+      loop.push_back(i);
+      if (unit(random) > -0.6)
+      {
+        std::vector<double> m = { 0.7 * unit(random), 0.7 * unit(random), -1.0 };
+        const double length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+        for (double& c : m)
+        {
+          c /= length;
+        }
+        across[i] = m;
+      }
+    }
+    std::set<std::pair<int32_t, int32_t>> edges;
+    for (int e = 0; e < n / 4; ++e)
+    {
+      const int32_t a = static_cast<int32_t>(random() % n), b = static_cast<int32_t>(random() % n);
+      edges.insert({ std::min(a, b), std::max(a, b) });
+    }
+    const auto edgeExists = [&edges](int32_t a, int32_t b) {
+      return edges.count({ std::min(a, b), std::max(a, b) }) > 0;
+    };
+    const auto acrossEdge = [&across](int e, double m[3])
+    {
+      std::copy(across[e].begin(), across[e].end(), m);
+      return !across[e].empty();
+    };
+    std::vector<int32_t> triangles;
+    const double worst =
+      pcs::holes::LeastDihedralFill(xyz.data(), loop, edgeExists, acrossEdge, triangles);
+    const std::vector<int32_t> expected = PlainLeastDihedralFill(xyz, loop, edges, across);
+    CHECK(triangles == expected,
+      "random loop %d (%d vertices): %d triangles, %d expected, "
+      "not the same",
+      trial,
+      n,
+      static_cast<int>(triangles.size() / 3),
+      static_cast<int>(expected.size() / 3));
+    CHECK(
+      triangles.empty() || std::abs(LargestDihedral(xyz, loop, triangles, across) - worst) <= 1e-12,
+      "random loop %d: the returned triangles do not have the returned angle",
+      trial);
+  }
+}
+
 // FillLoopNearSamples on a unit cube without its top face (the samples: the 8 corners, and the
 // top face's centre when asked): the fill is the top's 2 triangles, whose farthest tested point,
 // the diagonal's midpoint, is sqrt(1/2) from every corner, and whose dihedral angle with the
@@ -881,6 +1102,7 @@ int main()
   TestGreedy2D();
   TestHoleFiller();
   TestLeastDihedralFill();
+  TestLeastDihedralFillSkipsOnlyUntakenSplits();
   TestFillLoopNearSamples();
   TestDegenerateFills();
   TestTrianglesIntersect();

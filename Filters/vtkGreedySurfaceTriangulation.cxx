@@ -307,6 +307,8 @@ public:
     const double centre[3], double radius, double maximumDihedral, bool& byDihedral);
   void CapOpenEnds();
   bool IsNaturalBorder(const std::vector<int32_t>& loop, const double centre[3], double radius);
+  bool IsWidePlanarRim(
+    const std::vector<int32_t>& loop, double radius, pcs::holes::Plane& plane) const;
   void PieceAreasAndVolumes(const std::vector<int32_t>& piece,
     const std::vector<std::vector<int32_t>>& loops,
     std::vector<double>& area,
@@ -3197,6 +3199,27 @@ void Reconstruction::PieceAreasAndVolumes(const std::vector<int32_t>& piece,
   }
 }
 
+// The rim test shared by IsNaturalBorder and CapsWellMouth: the loop is wider than
+// MaximumBridgeLength spacings (a narrower loop is a sampling gap) and planar: the rms distance of
+// its points to their least-squares plane (returned in `plane`) is at most NaturalBorderFlatness
+// times its diameter.
+bool Reconstruction::IsWidePlanarRim(
+  const std::vector<int32_t>& loop, double radius, pcs::holes::Plane& plane) const
+{
+  if (loop.size() < 3 || 2.0 * radius <= this->Self->GetMaximumBridgeLength() * this->Spacing ||
+    !plane.Fit(this->X.data(), loop.data(), loop.size()))
+  {
+    return false;
+  }
+  double squares = 0.0;
+  for (int32_t v : loop)
+  {
+    const double d = plane.Distance(this->P(v));
+    squares += d * d;
+  }
+  return std::sqrt(squares / loop.size()) <= NaturalBorderFlatness * 2.0 * radius;
+}
+
 // A loop at the mouth of a well (CapOpenEnds): wider than MaximumBridgeLength spacings (a
 // narrower loop is a sampling gap, closed as the small loops are), planar as a natural border's
 // rim (NaturalBorderFlatness), with no lost point within half its radius of its centre, where the
@@ -3210,25 +3233,11 @@ bool Reconstruction::CapsWellMouth(const std::vector<int32_t>& loop,
   double area,
   double volume) const
 {
-  if (2.0 * radius <= this->Self->GetMaximumBridgeLength() * this->Spacing ||
-    !(std::abs(volume) >= MinimumCapVolumeThickness * this->Spacing * area))
-  {
-    return false;
-  }
-  // A planar rim (as a natural border's): the angle with one cap plane means nothing on a loop
-  // winding in space.
+  // A wide planar rim (as a natural border's): the angle with one cap plane means nothing on a
+  // loop winding in space.
   pcs::holes::Plane plane;
-  if (!plane.Fit(this->X.data(), loop.data(), loop.size()))
-  {
-    return false;
-  }
-  double squares = 0.0;
-  for (int32_t v : loop)
-  {
-    const double d = plane.Distance(this->P(v));
-    squares += d * d;
-  }
-  if (std::sqrt(squares / loop.size()) > NaturalBorderFlatness * 2.0 * radius)
+  if (!(std::abs(volume) >= MinimumCapVolumeThickness * this->Spacing * area) ||
+    !this->IsWidePlanarRim(loop, radius, plane))
   {
     return false;
   }
@@ -3344,18 +3353,7 @@ bool Reconstruction::IsNaturalBorder(const std::vector<int32_t>& loop,
   double radius)
 {
   pcs::holes::Plane plane;
-  if (loop.size() < 3 || 2.0 * radius <= this->Self->GetMaximumBridgeLength() * this->Spacing ||
-    !plane.Fit(this->X.data(), loop.data(), loop.size()))
-  {
-    return false;
-  }
-  double squares = 0.0;
-  for (int32_t v : loop)
-  {
-    const double d = plane.Distance(this->P(v));
-    squares += d * d;
-  }
-  if (std::sqrt(squares / loop.size()) > NaturalBorderFlatness * 2.0 * radius)
+  if (!this->IsWidePlanarRim(loop, radius, plane))
   {
     return false;
   }

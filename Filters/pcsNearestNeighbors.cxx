@@ -844,6 +844,28 @@ void SurfaceSampleDivisions(const double bounds[6],
   }
 }
 
+void BuildSurfaceSampleBins(
+  PointBins& bins, const double* xyz, int32_t n, bool withCoordinates, double bounds[6])
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    bounds[2 * c] = n > 0 ? xyz[c] : 0.0;
+    bounds[2 * c + 1] = bounds[2 * c];
+  }
+  for (int32_t k = 1; k < n; ++k)
+  {
+    const double* p = xyz + 3 * static_cast<size_t>(k);
+    for (int c = 0; c < 3; ++c)
+    {
+      bounds[2 * c] = std::min(bounds[2 * c], p[c]);
+      bounds[2 * c + 1] = std::max(bounds[2 * c + 1], p[c]);
+    }
+  }
+  int divisions[3];
+  SurfaceSampleDivisions(bounds, n, 4.0, divisions);
+  bins.Build(bounds, divisions, xyz, n, withCoordinates);
+}
+
 void SetSurfaceSampleDivisions(vtkStaticPointLocator* locator,
   const double bounds[6],
   int32_t n,

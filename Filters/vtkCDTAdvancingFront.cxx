@@ -297,40 +297,6 @@ vtkIdType RemovePinches(pcs::SurfaceMesh& mesh)
   return removed;
 }
 
-//------------------------------------------------------------------------------------------------
-// The bounds of the n points of `xyz` (finite), and the points filed into bins sized for a
-// surface sample over them (pcs::SurfaceSampleDivisions, about 4 bins per point over the box's
-// volume, area or length): VTK's automatic bins suit points filling their box, and on a surface
-// sample a bin would be about ten point spacings wide, so that every neighbourhood query of the
-// front (a few spacings) would visit many points it does not return. On the benchmark clouds a
-// bin is 2.5 to 5 mean spacings wide. This changes the cost of the queries, never their answers.
-// Every query is made on the bins (pcs::PointBins): no vtkStaticPointLocator is built (its
-// BuildLocator and the cloud's GetBounds were 1.6 % of the instructions on the camel vertices).
-void FileSurfaceBins(pcs::PointBins& bins,
-  const double* xyz,
-  Id n,
-  bool withCoordinates,
-  double bounds[6])
-{
-  for (int c = 0; c < 3; ++c)
-  {
-    bounds[2 * c] = n > 0 ? xyz[c] : 0.0;
-    bounds[2 * c + 1] = bounds[2 * c];
-  }
-  for (Id k = 1; k < n; ++k)
-  {
-    const double* p = xyz + 3 * static_cast<size_t>(k);
-    for (int c = 0; c < 3; ++c)
-    {
-      bounds[2 * c] = std::min(bounds[2 * c], p[c]);
-      bounds[2 * c + 1] = std::max(bounds[2 * c + 1], p[c]);
-    }
-  }
-  int divisions[3];
-  pcs::SurfaceSampleDivisions(bounds, n, 4.0, divisions);
-  bins.Build(bounds, divisions, xyz, n, withCoordinates);
-}
-
 // The ids of the points within `radius` of x (in no particular order) filed in `bins`
 // (pcs::PointBins; the front makes two such queries per candidate triangle, which made
 // vtkStaticPointLocator::FindPointsWithinRadius more than 40 % of the filter's time).
@@ -2156,7 +2122,7 @@ int vtkCDTAdvancingFront::RequestData(
   }
   pcs::PointBins bins;
   double bounds[6]; // of the points
-  FileSurfaceBins(bins, xyz.data(), local, /*withCoordinates=*/true, bounds);
+  pcs::BuildSurfaceSampleBins(bins, xyz.data(), local, /*withCoordinates=*/true, bounds);
   this->UpdateProgress(0.02);
   if (this->GetAbortExecute())
   {
@@ -2261,7 +2227,7 @@ int vtkCDTAdvancingFront::RequestData(
     const Id distinctCount = static_cast<Id>(distinct.size());
     pcs::PointBins distinctBins;
     double distinctBounds[6];
-    FileSurfaceBins(
+    pcs::BuildSurfaceSampleBins(
       distinctBins, distinctXYZ.data(), distinctCount, /*withCoordinates=*/false, distinctBounds);
     std::vector<double> distinctNormals;
     std::vector<int32_t> distinctTable; // not the table of all the points

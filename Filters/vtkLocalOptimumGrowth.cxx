@@ -2620,10 +2620,7 @@ int vtkLocalOptimumGrowth::RequestData(
       // search files the points into its own bucket grid (their coordinates are filed only when
       // the scan-line search below needs them).
       double bounds[6];
-      internalPoints->GetBounds(bounds);
-      int divisions[3];
-      pcs::SurfaceSampleDivisions(bounds, n, 4.0, divisions);
-      bins.Build(bounds, divisions, x.data(), n, /*withCoordinates=*/false);
+      pcs::BuildSurfaceSampleBins(bins, x.data(), n, /*withCoordinates=*/false, bounds);
       neighborsFound = pcs::FindNearestNeighbors(bins, x.data(), n, k, knn, progress);
     }
   };

@@ -63,6 +63,15 @@ def polydata(points, triangles=None):
     return data
 
 
+def reconstruct(key, points):
+    """The mesh of filter `key` (defaults) over the points, and the CPU seconds of its Update."""
+    algorithm = FILTERS[key]()
+    algorithm.SetInputData(polydata(points))
+    start = time.process_time()
+    algorithm.Update()
+    return algorithm.GetOutput(), time.process_time() - start
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--data", required=True, help="the CGAL demo data folder (has meshes/)")
@@ -81,12 +90,7 @@ def main():
             continue
         reference = polydata(points, triangles)
         for key in args.filters:
-            algorithm = FILTERS[key]()
-            algorithm.SetInputData(polydata(points))
-            start = time.process_time()
-            algorithm.Update()
-            seconds = time.process_time() - start
-            mesh = algorithm.GetOutput()
+            mesh, seconds = reconstruct(key, points)
             cells = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray())
             used = len(np.unique(cells)) if len(cells) else 0
             quality = pcs.vtkReconstructionQuality()

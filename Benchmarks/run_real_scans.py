@@ -31,7 +31,6 @@ import os
 import subprocess
 import sys
 import tempfile
-import time
 
 import numpy as np
 from scipy.spatial import cKDTree
@@ -100,15 +99,10 @@ def summarize(points, mesh_points, triangles):
 def run_filter(path, name):
     """Child process: one filter on one cloud; prints one JSON line."""
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-    from run_mesh_vertex_sweep import FILTERS, polydata
+    from run_mesh_vertex_sweep import reconstruct
     from vtkmodules.util.numpy_support import vtk_to_numpy
     points = load_points(path)
-    algorithm = FILTERS[name]()
-    algorithm.SetInputData(polydata(points))
-    start = time.process_time()
-    algorithm.Update()
-    cpu = time.process_time() - start
-    mesh = algorithm.GetOutput()
+    mesh, cpu = reconstruct(name, points)
     mesh_points = vtk_to_numpy(mesh.GetPoints().GetData()) if mesh.GetPoints() else points
     cells = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray()).reshape(-1, 3)
     result = summarize(points, np.asarray(mesh_points, float), cells.astype(np.int64))

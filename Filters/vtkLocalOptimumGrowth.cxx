@@ -76,6 +76,17 @@ inline double Distance2(const double* a, const double* b)
   const double d[3] = { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
   return Dot(d, d);
 }
+// Twice the area of the triangle (a, b, c) over the square of its longest edge: 0 for collinear
+// points, sqrt(3) / 2 for an equilateral triangle (a sliver's measure, scale free).
+inline double Fatness(const double* a, const double* b, const double* c)
+{
+  double ab[3], ac[3], n[3];
+  Sub(b, a, ab);
+  Sub(c, a, ac);
+  Cross(ab, ac, n);
+  const double longest2 = std::max({ Dot(ab, ab), Dot(ac, ac), Distance2(b, c) });
+  return longest2 > 0.0 ? std::sqrt(Dot(n, n)) / longest2 : 0.0;
+}
 // Normal of the triangle (a, b, c) (right-hand rule), normalized; false when it has no finite
 // non-zero length.
 inline bool UnitNormal(const double* a, const double* b, const double* c, double* n)
@@ -2185,8 +2196,14 @@ void Grower::ShortenLongEdges()
     {
       return true;
     }
-    // Nearer to the points, but not folding a quadrilateral that was not folded.
-    return (q.Before < 0.0 || q.After >= 0.0) &&
+    // Nearer to the points, but not folding a quadrilateral that was not folded, and not making
+    // a sliver thinner than the two triangles it replaces (three points of one scan line: the
+    // sliver lies on the points, so it is "nearer", but stands across the surface).
+    const double fatBefore = std::min(Fatness(this->P3(q.A), this->P3(q.B), this->P3(q.C)),
+      Fatness(this->P3(q.B), this->P3(q.A), this->P3(q.D)));
+    const double fatAfter = std::min(Fatness(this->P3(q.A), this->P3(q.D), this->P3(q.C)),
+      Fatness(this->P3(q.B), this->P3(q.C), this->P3(q.D)));
+    return (q.Before < 0.0 || q.After >= 0.0) && fatAfter >= 0.25 * fatBefore &&
       this->FarthestFromSamples(q.C, q.D, q.A, q.B) <
       ShorterDiagonal * ShorterDiagonal * this->FarthestFromSamples(q.A, q.B, q.C, q.D);
   };

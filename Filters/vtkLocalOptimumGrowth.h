@@ -219,15 +219,17 @@
  *    the two triangles nearer to the points (the largest distance from their centroids and the
  *    diagonal's midpoint to the nearest input point among the four vertices and their K nearest
  *    falls by the factor 0.8) without folding over (normals more than 90 degrees apart) a
- *    quadrilateral that was not folded over. On random samples such an edge joins the two sides of
+ *    quadrilateral that was not folded over, and without making the thinner triangle less than a
+ *    quarter as fat as before (twice its area over its longest edge squared: no sliver along a
+ *    scan line, which lies on the points but stands across the surface). On random samples such an edge joins the two sides of
  *    a thin, sharply bent tip (a tusk, a claw) and its triangles cut across the inside, 2-3 mean
  *    spacings off the surface. Measured (Benchmarks/run_sample_seeds.py, 20 random 10^5 samples of
  *    CGAL's camel, elephant, armadillo and bunny00, seeds 1-5; Benchmarks/results/
  *    local_optimum.md): Hausdorff distance within 2 mean spacings on 10 -> 12 of them (elephant
  *    seed 2 2.22 -> 1.42, armadillo seed 5 2.03 -> 1.74), none worse by more than 0.01, boundary
  *    edges and coverage unchanged; CGAL's held-out mesh vertex sets (run_mesh_vertex_sweep.py):
- *    boundary edges unchanged, Hausdorff distances equal or lower (head 1.08 -> 0.83,
- *    ChineseDragon-10kv 1.53 -> 1.32). The walls across thin tubes (discs across a leg or a tail
+ *    boundary edges unchanged, Hausdorff distances equal or lower (ChineseDragon-10kv 1.53 ->
+ *    1.32, femur 1.75 -> 1.68). The walls across thin tubes (discs across a leg or a tail
  *    of radius 2-3 spacings) are not quadrilaterals with a wrong diagonal and stay.
  * 8. Each closed component is oriented outwards (positive signed volume).
  *

@@ -210,7 +210,8 @@
  * `NumberOfRemovedTriangles` (pinch repair),
  * `MeanSpacing` and `NeighborhoodRadiusUsed`.
  *
- * Cost: each front edge queries the points within NeighborhoodRadius (vtkStaticPointLocator),
+ * Cost: each front edge queries the points within NeighborhoodRadius (a bucket grid sized for a
+ * surface sample, pcs::BuildSurfaceSampleBins; no vtkStaticPointLocator is built),
  * tests candidates in order of distance until one is valid, and each test visits the points and
  * mesh edges near the triangle: O(N K) for N points and K points per neighbourhood. Duplicate
  * detection, the mean spacing and the normal estimation run in parallel (vtkSMPTools); the front

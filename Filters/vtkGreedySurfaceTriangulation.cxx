@@ -309,6 +309,8 @@ public:
   bool IsNaturalBorder(const std::vector<int32_t>& loop, const double centre[3], double radius);
   bool IsWidePlanarRim(
     const std::vector<int32_t>& loop, double radius, pcs::holes::Plane& plane) const;
+  bool TangentNormal(int32_t v, double normal[3]) const;
+  void MeshHalfEdge(const std::vector<int32_t>& loop, size_t i, int32_t& a, int32_t& b) const;
   void PieceAreasAndVolumes(const std::vector<int32_t>& piece,
     const std::vector<std::vector<int32_t>>& loops,
     std::vector<double>& area,
@@ -3189,13 +3191,38 @@ void Reconstruction::PieceAreasAndVolumes(const std::vector<int32_t>& piece,
     for (size_t i = 0; i < front.size(); ++i)
     {
       // The fan's triangle holds the twin of the mesh's half-edge on the loop.
-      int32_t a = front[i], b = front[(i + 1) % front.size()];
-      if (this->Mesh.FindTriangle(a, b) < 0)
-      {
-        std::swap(a, b);
-      }
+      int32_t a, b;
+      this->MeshHalfEdge(front, i, a, b);
       volume[piece[front[0]]] += TetrahedronVolume6(origin, centre, this->P(b), this->P(a)) / 6.0;
     }
+  }
+}
+
+// The unit normal (unoriented) of the plane through v's K nearest points and v (as
+// pcs::EstimatePlaneNormals): the surface's tangent plane at a rim point, which the mesh
+// triangles on a ragged rim need not follow. False when fewer than 3 offsets are finite.
+bool Reconstruction::TangentNormal(int32_t v, double normal[3]) const
+{
+  const int32_t* row = &this->Neighbors[static_cast<size_t>(v) * this->K];
+  double covariance[3][3], values[3];
+  if (pcs::OffsetCovariance(this->X.data(), this->P(v), row, this->K, true, covariance) < 3)
+  {
+    return false;
+  }
+  pcs::SmallestEigenvector(covariance, values, normal);
+  return true;
+}
+
+// Edge i of `loop` (loop[i], loop[i + 1]) as the mesh's half-edge a -> b (its triangle holds
+// a -> b; a cap or a fan across the loop holds b -> a).
+void Reconstruction::MeshHalfEdge(
+  const std::vector<int32_t>& loop, size_t i, int32_t& a, int32_t& b) const
+{
+  a = loop[i];
+  b = loop[(i + 1) % loop.size()];
+  if (this->Mesh.FindTriangle(a, b) < 0)
+  {
+    std::swap(a, b);
   }
 }
 
@@ -3268,11 +3295,8 @@ double Reconstruction::CapFoldAngle(const std::vector<int32_t>& loop,
   double normal[3] = { 0, 0, 0 };
   for (size_t i = 0; i < loop.size(); ++i)
   {
-    int32_t a = loop[i], b = loop[(i + 1) % loop.size()];
-    if (this->Mesh.FindTriangle(a, b) < 0)
-    {
-      std::swap(a, b);
-    }
+    int32_t a, b;
+    this->MeshHalfEdge(loop, i, a, b);
     double u[3], v[3], n[3];
     vtkMath::Subtract(this->P(b), centre, u);
     vtkMath::Subtract(this->P(a), centre, v);
@@ -3293,11 +3317,8 @@ double Reconstruction::CapFoldAngle(const std::vector<int32_t>& loop,
   double acrossSum = 0.0, heightSum = 0.0;
   for (size_t i = 0; i < loop.size(); ++i)
   {
-    int32_t a = loop[i], b = loop[(i + 1) % loop.size()];
-    if (this->Mesh.FindTriangle(a, b) < 0)
-    {
-      std::swap(a, b);
-    }
+    int32_t a, b;
+    this->MeshHalfEdge(loop, i, a, b);
     const int32_t c = this->Mesh.OppositeVertex(a, b);
     if (c < 0)
     {
@@ -3306,16 +3327,14 @@ double Reconstruction::CapFoldAngle(const std::vector<int32_t>& loop,
     // The cap holds b -> a. The surface leaves the edge in the tangent plane of b's K nearest
     // points (as IsNaturalBorder's: the triangles on a ragged rim may fold anywhere), on the side
     // of the mesh triangle's third vertex.
-    double edge[3], towards[3], into[3], capward[3], covariance[3][3], values[3], tangentNormal[3];
-    vtkMath::Subtract(this->P(a), this->P(b), edge);
-    const double length = vtkMath::Normalize(edge);
-    vtkMath::Subtract(this->P(c), this->P(b), towards);
-    const int32_t* row = &this->Neighbors[static_cast<size_t>(b) * this->K];
-    if (pcs::OffsetCovariance(this->X.data(), this->P(b), row, this->K, true, covariance) < 3)
+    double edge[3], towards[3], into[3], capward[3], tangentNormal[3];
+    if (!this->TangentNormal(b, tangentNormal))
     {
       continue;
     }
-    pcs::SmallestEigenvector(covariance, values, tangentNormal);
+    vtkMath::Subtract(this->P(a), this->P(b), edge);
+    const double length = vtkMath::Normalize(edge);
+    vtkMath::Subtract(this->P(c), this->P(b), towards);
     vtkMath::Cross(tangentNormal, edge, into);
     if (vtkMath::Dot(into, towards) < 0.0)
     {
@@ -3364,12 +3383,11 @@ bool Reconstruction::IsNaturalBorder(const std::vector<int32_t>& loop,
   for (int32_t v : loop)
   {
     const int32_t* row = &this->Neighbors[static_cast<size_t>(v) * this->K];
-    double covariance[3][3], values[3], normal[3];
-    if (pcs::OffsetCovariance(this->X.data(), this->P(v), row, this->K, true, covariance) < 3)
+    double normal[3];
+    if (!this->TangentNormal(v, normal))
     {
       return false;
     }
-    pcs::SmallestEigenvector(covariance, values, normal);
     cosines += std::abs(vtkMath::Dot(normal, plane.N));
     for (int j = 0; j < this->K && row[j] >= 0; ++j)
     {

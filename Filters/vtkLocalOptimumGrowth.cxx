@@ -2151,7 +2151,7 @@ double Grower::FarthestFromSamples(Id p, Id q, Id r, Id u) const
 // among the five edges of the quadrilateral stays at least min(before, cos MaximumNormalAngle)), or
 // when it brings the two triangles closer to the points (FarthestFromSamples falls by the factor
 // ShorterDiagonal) without folding over (normals more than 90 degrees apart) a quadrilateral
-// that was not folded over before.
+// that was not folded over before nor making a sliver (Fatness).
 void Grower::ShortenLongEdges()
 {
   constexpr double LongEdgeFactor = 3.0;
@@ -2197,8 +2197,9 @@ void Grower::ShortenLongEdges()
       return true;
     }
     // Nearer to the points, but not folding a quadrilateral that was not folded, and not making
-    // a sliver thinner than the two triangles it replaces (three points of one scan line: the
-    // sliver lies on the points, so it is "nearer", but stands across the surface).
+    // a sliver: the thinner new triangle at least a quarter as fat as the thinner old one (three
+    // points of one scan line: the sliver lies on the points, so it is "nearer", but stands
+    // across the surface).
     const double fatBefore = std::min(Fatness(this->P3(q.A), this->P3(q.B), this->P3(q.C)),
       Fatness(this->P3(q.B), this->P3(q.A), this->P3(q.D)));
     const double fatAfter = std::min(Fatness(this->P3(q.A), this->P3(q.D), this->P3(q.C)),

@@ -4673,7 +4673,12 @@ int vtkGreedySurfaceTriangulation::RequestData(
   if (r.Added > 0)
   {
     // The new points after the input points, with the point data of the nearest input point.
+    // The input points pass unchanged: DeepCopy converts them to the new array's type (float by
+    // default), so it is the input's when floating point, double otherwise (integer points; the
+    // new points are not on the integer grid).
     vtkNew<vtkPoints> outPoints;
+    const int inputType = input->GetPoints()->GetDataType();
+    outPoints->SetDataType(inputType == VTK_FLOAT ? VTK_FLOAT : VTK_DOUBLE);
     outPoints->DeepCopy(input->GetPoints());
     vtkPointData* inPD = input->GetPointData();
     vtkPointData* outPD = output->GetPointData();

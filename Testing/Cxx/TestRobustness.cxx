@@ -1249,6 +1249,57 @@ bool RunNaNParameters(const FilterEntry& filter)
   return true;
 }
 
+// A sphere with a cap cut off (a 20-degree hole that vtkGreedySurfaceTriangulation fills with
+// new points): the output starts with the input points, unchanged (same data type, same values),
+// the points a filter adds come after them. (Greedy's output points were a float copy when it
+// added points: every double input coordinate was rounded.)
+bool RunAddedPointsKeepInput(const FilterEntry& filter)
+{
+  const std::vector<double> sphere = Sphere(3000, 91);
+  std::vector<double> xyz;
+  for (size_t i = 0; i < sphere.size(); i += 3)
+  {
+    if (sphere[i + 2] < std::cos(vtkMath::RadiansFromDegrees(20.0)))
+    {
+      xyz.insert(xyz.end(), &sphere[i], &sphere[i] + 3);
+    }
+  }
+  auto prepared = filter.Prepare(pcstest::MakeCloud(xyz));
+  Algorithm algorithm = filter.Info.Make();
+  algorithm->SetInputData(prepared);
+  Update(algorithm);
+  const std::string label = filter.Info.Name + " / sphere with a hole";
+  vtkPoints* in = prepared->GetPoints();
+  vtkPoints* out = algorithm->GetOutput()->GetPoints();
+  const vtkIdType n = in->GetNumberOfPoints();
+  PCS_CHECK(out && out->GetNumberOfPoints() >= n, label << ": fewer output points than input");
+  PCS_CHECK(out->GetDataType() == in->GetDataType(),
+    label << ": " << out->GetData()->GetDataTypeAsString() << " output points for "
+          << in->GetData()->GetDataTypeAsString() << " input points ("
+          << out->GetNumberOfPoints() - n << " added)");
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double a[3], b[3];
+    in->GetPoint(i, a);
+    out->GetPoint(i, b);
+    PCS_CHECK(
+      a[0] == b[0] && a[1] == b[1] && a[2] == b[2], label << ": input point " << i << " changed");
+  }
+  vtkPolyData* output = algorithm->GetOutput();
+  for (vtkIdType c = 0; c < output->GetNumberOfCells(); ++c)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    output->GetCellPoints(c, npts, pts);
+    for (vtkIdType k = 0; k < npts; ++k)
+    {
+      PCS_CHECK(pts[k] >= 0 && pts[k] < out->GetNumberOfPoints(),
+        label << ": cell " << c << " has point id " << pts[k]);
+    }
+  }
+  return true;
+}
+
 bool RunWithoutInput(const FilterEntry& filter)
 {
   Algorithm algorithm = filter.Info.Make();
@@ -1276,6 +1327,7 @@ int TestRobustness(int, char*[])
     failures += RunNaNParameters(filter) ? 0 : 1;
     failures += RunExtremes(filter) ? 0 : 1;
     failures += RunOutlierFactorLimits(filter) ? 0 : 1;
+    failures += RunAddedPointsKeepInput(filter) ? 0 : 1;
     std::cout << filter.Info.Name << ": " << cases << " inputs, " << filter.Extremes.size()
               << " parameter limits" << std::endl;
   }

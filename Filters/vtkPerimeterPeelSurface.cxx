@@ -293,6 +293,14 @@ public:
     return normal;
   }
 
+  // The outward normal of the boundary facet between the finite or infinite cell c and its
+  // neighbour across slot j: FacetNormal of the inside one of them (c when `cInside`).
+  std::array<double, 3> BoundaryNormal(int64_t c, int j, bool cInside) const
+  {
+    return cInside ? this->FacetNormal(c, j)
+                   : this->FacetNormal(this->DT.Neighbor(c, j), this->DT.MirrorIndex(c, j));
+  }
+
   // One walk around the edge of c joining its slots i and j for the current states (s = 0) and,
   // when `states` is 2, with the cells for which `moved(cell)` is true in the other state (s = 1).
   // cosine[s] (2 when not `normals`): the cosine of the angle between the outward normals of the
@@ -323,9 +331,7 @@ public:
           const bool nextInside = this->IsInside(next) != (s == 1 && moved(next));
           if (cellInside != nextInside && found[s]++ < 2 && normals)
           {
-            normal[s][found[s] - 1] = cellInside
-              ? this->FacetNormal(cell, cross)
-              : this->FacetNormal(next, this->DT.MirrorIndex(cell, cross));
+            normal[s][found[s] - 1] = this->BoundaryNormal(cell, cross, cellInside);
           }
         }
         return false;
@@ -341,28 +347,80 @@ public:
   // edge) is 2; 2 otherwise.
   static double NormalCosine(const std::array<double, 3> n[2], int found)
   {
-    if (found != 2)
-    {
-      return 2.0;
-    }
-    const double dot = n[0][0] * n[1][0] + n[0][1] * n[1][1] + n[0][2] * n[1][2];
-    const double lengths = std::sqrt((n[0][0] * n[0][0] + n[0][1] * n[0][1] + n[0][2] * n[0][2]) *
-      (n[1][0] * n[1][0] + n[1][1] * n[1][1] + n[1][2] * n[1][2]));
+    return found == 2 ? Cosine(n[0], n[1]) : 2.0;
+  }
+
+  // The cosine of the angle between the normals a and b (symmetric in a and b, to the bit).
+  static double Cosine(const std::array<double, 3>& a, const std::array<double, 3>& b)
+  {
+    const double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    const double lengths = std::sqrt(
+      (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
     return lengths > 0.0 ? dot / lengths : (dot < 0.0 ? -1.0 : 1.0);
   }
 
-  // The boundary facet next to the exterior facet j of c around the edge of c without slots j
-  // and k: the walk around the edge starts across facet k and goes through inside cells until
-  // the cell behind the facet it would cross is outside. Returns that facet (cell, slot).
+  // For the move of the finite cell c alone to the other state, when MayToggle(c) allows it and
+  // the boundary is a closed 2-manifold: the cosines of EdgeStates for each edge e of c ((0, 1),
+  // (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)) before (before[e]) and after (after[e]), with one
+  // normal per facet of c and at most one short walk per edge instead of a walk around each edge
+  // for both states. Each facet of c is on the boundary in exactly one of the two states, and an
+  // edge of c lies in two of them: when both are on the boundary before, they are the edge's two
+  // boundary triangles then and it has none after; when neither, the reverse (MayToggle: no cell
+  // of the other state was around the edge); when one, the edge's other boundary triangle, found
+  // by a walk from the other facet through cells of c's state, is the same before and after.
+  void ToggleCosines(int64_t c, double before[6], double after[6]) const
+  {
+    const bool inside = this->IsInside(c);
+    std::array<double, 3> normal[4];
+    bool boundary[4]; // whether facet f of c is on the boundary before the move
+    for (int f = 0; f < 4; ++f)
+    {
+      const bool crossing = this->IsInside(this->DT.Neighbor(c, f)) != inside;
+      boundary[f] = crossing;
+      // c is the inside side of facet f in the state in which it is on the boundary when it is
+      // inside and the facet on the boundary before, or outside and the facet on it after.
+      normal[f] = this->BoundaryNormal(c, f, inside == crossing);
+    }
+    // The facets of c that contain each edge: those opposite its other two vertices.
+    static const int edgeFacets[6][2] = {
+      { 2, 3 }, { 1, 3 }, { 1, 2 }, { 0, 3 }, { 0, 2 }, { 0, 1 }
+    };
+    for (int e = 0; e < 6; ++e)
+    {
+      const int k = edgeFacets[e][0], l = edgeFacets[e][1];
+      const bool onK = boundary[k], onL = boundary[l];
+      if (onK == onL)
+      {
+        const double both = Cosine(normal[k], normal[l]);
+        before[e] = onK ? both : 2.0;
+        after[e] = onK ? 2.0 : both;
+      }
+      else
+      {
+        const int on = onK ? k : l, off = onK ? l : k;
+        const std::pair<int64_t, int> other = this->NextBoundaryFacet(c, on, off);
+        const std::array<double, 3> otherNormal =
+          this->BoundaryNormal(other.first, other.second, inside);
+        before[e] = Cosine(normal[on], otherNormal);
+        after[e] = Cosine(normal[off], otherNormal);
+      }
+    }
+  }
+
+  // The boundary facet next to the boundary facet j of c around the edge of c without slots j
+  // and k: the walk around the edge starts across facet k and goes through cells of c's state
+  // until the cell behind the facet it would cross is of the other state. Returns that facet
+  // (cell, slot).
   std::pair<int64_t, int> NextBoundaryFacet(int64_t c, int j, int k) const
   {
+    const bool inside = this->IsInside(c);
     int64_t cell = c;
     int cross = k;
     int32_t kept = this->DT.Vertex(c, j);
     for (;;)
     {
       const int64_t next = this->DT.Neighbor(cell, cross);
-      if (!this->IsInside(next))
+      if (this->IsInside(next) != inside)
       {
         return { cell, cross };
       }
@@ -1504,9 +1562,7 @@ private:
         {
           if (found++ < 2)
           {
-            normal[found - 1] = inside
-              ? this->Solid.FacetNormal(cell, cross)
-              : this->Solid.FacetNormal(next, this->DT.MirrorIndex(cell, cross));
+            normal[found - 1] = this->Solid.BoundaryNormal(cell, cross, inside);
           }
           for (int64_t c : { cell, next })
           {
@@ -1537,9 +1593,9 @@ private:
   }
 
   // Move the cells to the other state when that is allowed and improves the surface, and queue
-  // the folds among their edges then. One cell: the sculpting rules (cheap) first, then one walk
-  // around each of its edges for both states. Several (a fan): GroupPeeler::Evaluate, then the
-  // links and the connectivity (GroupPeeler::Toggle).
+  // the folds among their edges then. One cell: the sculpting rules (cheap) first, then its edges'
+  // folds and bending before and after (PeelSolid::ToggleCosines). Several (a fan):
+  // GroupPeeler::Evaluate, then the links and the connectivity (GroupPeeler::Toggle).
   bool TryMove(const int64_t* cells, size_t size)
   {
     if (size == 1)
@@ -1550,18 +1606,12 @@ private:
         return false;
       }
       GroupPeeler::MoveEffect effect;
-      double after[6];
-      for (int i = 0, e = 0; i < 3; ++i)
+      double before[6], after[6];
+      this->Solid.ToggleCosines(c, before, after);
+      for (int e = 0; e < 6; ++e)
       {
-        for (int j = i + 1; j < 4; ++j, ++e)
-        {
-          double cosine[2];
-          bool onBoundary[2];
-          this->Solid.EdgeStates(
-            c, i, j, 2, true, [c](int64_t cell) { return cell == c; }, cosine, onBoundary);
-          effect.Tally(cosine);
-          after[e] = cosine[1];
-        }
+        const double cosine[2] = { before[e], after[e] };
+        effect.Tally(cosine);
       }
       if (!Better(effect))
       {

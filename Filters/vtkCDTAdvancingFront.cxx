@@ -1770,9 +1770,11 @@ public:
   }
 
 private:
-  // The least-dihedral triangulation is cubic in the loop's length: with 400 edges the noisy
-  // bunny00 vertex set took 70 % more CPU, for loops the near-point rule then refused.
-  static constexpr size_t MaximumLoopEdges = 100;
+  // The least-dihedral triangulation is cubic in the loop's length. Loops of up to 400 edges
+  // are tried (100 before; FillLoopNearSamples refuses a wide loop by its area before the
+  // programme): the noisy clouds, with many long loops, took 0 to 5 % more CPU than with 100
+  // (Benchmarks/results/cdt.md, "Loops of up to 400 edges").
+  static constexpr size_t MaximumLoopEdges = 400;
   static constexpr double MaximumDihedral = 170.0 * 3.14159265358979323846 / 180.0;
 
   const double* P(Id i) const { return this->XYZ + 3 * static_cast<size_t>(i); }

@@ -157,7 +157,7 @@
  *   as many boundary edges. So, after III.C, (1) each usable point that no triangle uses is
  *   connected by the shared kernel pcs::InsertFreePoint at its 9 nearest points (the nearest
  *   triangle split at it, or the edge it lies beyond; a point farther from those triangles than
- *   their longest edge stays unused); (2) each boundary loop of at most 100 edges that passes no
+ *   their longest edge stays unused); (2) each boundary loop of at most 400 edges that passes no
  *   vertex twice is closed by the triangulation of its own vertices of least largest dihedral
  *   angle (pcs::holes::LeastDihedralFill, Liepa 2003; it reads no point normal), kept only when
  *   the centroid and the midpoints of the new edges of every fill triangle lie within 1.5 local
@@ -173,6 +173,12 @@
  *   spacings off the sphere). On the vertex sets of CGAL's cow, triceratops and camel (PCA
  *   normals) the boundary edges went from 336, 293, 673 to 38, 19, 49 and the unused points
  *   from 12, 18, 23 to 3, 0, 0 (Benchmarks/results/cdt.md, "Holes left with estimated normals").
+ *   Loops of 101 to 400 edges (the bound was 100): where the front leaves a tangle of long thin
+ *   triangles (a crease of an irregular vertex set, PCA normals), the loops left are long but
+ *   their fills stay within the rules above; the held-out vertex sets of CGAL's femur and man
+ *   went from 295 and 662 boundary edges to 149 and 248 (Benchmarks/results/cdt.md, "Loops of up
+ *   to 400 edges"). The fill's dynamic programme is cubic in the loop's length, but a wide loop is
+ *   refused by its area first, so the longer loops cost little (noisy clouds: 0 to 5 % more CPU).
  *
  * Scan-line sampling (ours; laser-line and LiDAR scans: points 6 to 20 times denser along lines
  * than across them). There the nearest points of a point lie on its own line: its estimated plane

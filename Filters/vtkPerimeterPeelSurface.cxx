@@ -1133,12 +1133,27 @@ private:
   // every cell and the link of a vertex on the rim of a large flat layer holds thousands of cells:
   // a vertex found non-manifold whose cells have not changed since is still non-manifold (then
   // nothing is checked), and the vertices whose cells changed (the last changed first) are
-  // checked until one is non-manifold. The answer is the same as checking every vertex.
+  // checked until one is non-manifold. The answer is the same as checking every vertex. A vertex
+  // found at once to be non-manifold (IsolatedAt, no walk) is looked for among them first.
   bool IsManifold()
   {
     if (this->BadCount > this->DirtyBadCount)
     {
       return false;
+    }
+    for (size_t i = 0; i < this->DirtyVertices.size(); ++i)
+    {
+      const std::pair<int32_t, int64_t> vc = this->DirtyVertices[i];
+      if (this->IsolatedAt(vc.first, vc.second))
+      {
+        this->DirtyVertices[i] = this->DirtyVertices.back();
+        this->DirtyVertices.pop_back();
+        this->Dirty[vc.first] = 0;
+        this->DirtyBadCount -= this->Bad[vc.first];
+        this->BadCount += 1 - this->Bad[vc.first];
+        this->Bad[vc.first] = 1;
+        return false;
+      }
     }
     while (!this->DirtyVertices.empty())
     {
@@ -1268,6 +1283,26 @@ private:
         {
           grow.emplace(m, n);
         }
+      }
+    }
+    return true;
+  }
+
+  // Whether the outside cell c alone is an outside component of the star of its vertex v, which
+  // has other outside cells and inside cells: its facets through v all face inside cells. The
+  // boundary is then not a manifold at v (ManifoldAt is false), found without a walk.
+  bool IsolatedAt(int32_t v, int64_t c) const
+  {
+    const PeelSolid::StarCounts& star = this->Solid.Star[v];
+    if (this->Solid.IsInside(c) || star.Inside == 0 || star.Outside < 2)
+    {
+      return false;
+    }
+    for (int j = 0; j < 4; ++j)
+    {
+      if (this->DT.Vertex(c, j) != v && !this->Solid.IsInside(this->DT.Neighbor(c, j)))
+      {
+        return false;
       }
     }
     return true;

@@ -2098,6 +2098,14 @@ int vtkPerimeterPeelSurface::RequestData(
   // `way`, when given, receives the widest way in to c, computed in full (the bottleneck c records
   // when it goes); otherwise only as far as the rule needs it (see WidestWayIn). It is left
   // unchanged when c is refused before the rule, or without ManifoldOutput.
+  // The verdict tells the rules that do not depend on the threshold (no point left in no cell, the
+  // sculpting rules: RefusedForGood, until a face neighbour goes) from rules 2 and 4.
+  enum Verdict
+  {
+    Allowed,
+    RefusedForGood,
+    RefusedAtThreshold
+  };
   const bool pathRule = this->FacetMeasure != AREA;
   // At a cell's turn, when its exterior facets are those it was offered with: the rules of
   // `refused` that depend on more than them (no point left in no cell, the sculpting rules).
@@ -2107,11 +2115,11 @@ int vtkPerimeterPeelSurface::RequestData(
   {
     if (solid.Orphans(c))
     {
-      return true;
+      return RefusedForGood;
     }
     if (!manifold)
     {
-      return false;
+      return Allowed;
     }
     // The cheap tests first: the sculpting rules but for two exterior facets, rules 2 and 4, the
     // walk around an edge for two exterior facets.
@@ -2119,7 +2127,7 @@ int vtkPerimeterPeelSurface::RequestData(
       mask == 3 || mask == 5 || mask == 6 || mask == 9 || mask == 10 || mask == 12;
     if (!twoFacets && !solid.KeepsManifold(c, mask))
     {
-      return true;
+      return RefusedForGood;
     }
     const double above = way ? std::numeric_limits<float>::max() : threshold * groupFactor;
     const double smallest = pathRule ? solid.WidestWayIn(c, m, above) : m;
@@ -2133,11 +2141,14 @@ int vtkPerimeterPeelSurface::RequestData(
       const double hidden = solid.LargestFacet(c, 15 & ~mask);
       if ((pathBound && hidden > 1.5 * smallest) || (m <= caveLimit && hidden > caveLimit))
       {
-        return true;
+        return RefusedAtThreshold;
       }
     }
-    return twoFacets && edgeRule && !solid.KeepsManifold(c, mask);
+    return twoFacets && edgeRule && !solid.KeepsManifold(c, mask) ? RefusedForGood : Allowed;
   };
+  // The cells refused RefusedForGood at their last offer or turn, one bit per cell: the first
+  // offers of a new threshold skip them (every cell whose face neighbour goes is offered again).
+  std::vector<bool> refusedForGood(cells, false);
   // Cells with an exterior facet over the threshold, largest first. A cell refused now is not
   // queued (it would be refused when its turn came: see `refused`); it is offered again when a
   // neighbour goes. The largest exterior facet of an inside cell only grows, so an entry whose
@@ -2150,18 +2161,25 @@ int vtkPerimeterPeelSurface::RequestData(
   // threshold, or the group start limit: rule 5) (group candidates; some may be listed twice or
   // have gone since).
   std::vector<int64_t> refusedLarge;
+  auto listRefused = [&](int64_t c, double m)
+  {
+    if (manifold && m > groupStart())
+    {
+      refusedLarge.push_back(c);
+    }
+  };
   auto offer = [&](int64_t c, int mask, double m)
   {
     if (m <= threshold)
     {
+      refusedForGood[c] = false;
       return;
     }
-    if (refused(c, mask, m, false, nullptr))
+    const Verdict verdict = refused(c, mask, m, false, nullptr);
+    refusedForGood[c] = verdict == RefusedForGood;
+    if (verdict != Allowed)
     {
-      if (manifold && m > groupStart())
-      {
-        refusedLarge.push_back(c);
-      }
+      listRefused(c, m);
       return;
     }
     queue.Push({ m, c << 4 | mask });
@@ -2222,25 +2240,23 @@ int vtkPerimeterPeelSurface::RequestData(
         continue; // stale
       }
       double way = m;
-      bool refuse = false;
+      Verdict verdict = Allowed;
       if (offeredMask)
       {
-        refuse = !pointsAndSculptingAllow(c, mask);
-        if (!refuse && manifold && pathRule)
+        verdict = pointsAndSculptingAllow(c, mask) ? Allowed : RefusedForGood;
+        if (verdict == Allowed && manifold && pathRule)
         {
           way = solid.WidestWayIn(c, m, std::numeric_limits<float>::max());
         }
       }
       else
       {
-        refuse = refused(c, mask, m, true, &way);
+        verdict = refused(c, mask, m, true, &way);
       }
-      if (refuse)
+      if (verdict != Allowed)
       {
-        if (manifold && m > groupStart())
-        {
-          refusedLarge.push_back(c);
-        }
+        refusedForGood[c] = verdict == RefusedForGood;
+        listRefused(c, m);
         continue; // refused; offered again when a neighbour goes
       }
       solid.Bottleneck[c] = static_cast<float>(way);
@@ -2272,7 +2288,14 @@ int vtkPerimeterPeelSurface::RequestData(
     {
       if (e.first > threshold)
       {
-        offer(e.second, solid.ExteriorMask(e.second), e.first);
+        if (refusedForGood[e.second])
+        {
+          listRefused(e.second, e.first); // as offer would
+        }
+        else
+        {
+          offer(e.second, solid.ExteriorMask(e.second), e.first);
+        }
       }
     }
     peelQueue();

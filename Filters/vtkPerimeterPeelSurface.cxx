@@ -104,6 +104,36 @@ public:
 #endif
   }
 
+  // Start loading the Bottleneck of the cells around cell c (what WidestWayIn reads when c is
+  // offered; a hint, as Prefetch).
+  void PrefetchBottlenecks(int64_t c) const
+  {
+#if defined(__GNUC__) || defined(__clang__)
+    for (int j = 0; j < 4; ++j)
+    {
+      __builtin_prefetch(&this->Bottleneck[this->DT.Neighbor(c, j)]);
+    }
+#else
+    (void)c;
+#endif
+  }
+
+  // Start loading what the facet measures and the rules read of vertex v (finite): its
+  // coordinates, local spacing and cell counts (a hint, as Prefetch).
+  void PrefetchVertex(int32_t v) const
+  {
+#if defined(__GNUC__) || defined(__clang__)
+    __builtin_prefetch(this->XYZ + 3 * static_cast<int64_t>(v));
+    __builtin_prefetch(&this->Star[v]);
+    if (!this->Spacing.empty())
+    {
+      __builtin_prefetch(&this->Spacing[v]);
+    }
+#else
+    (void)v;
+#endif
+  }
+
   // The widest way in to the inside cell c, whose largest exterior facet measures m: over its
   // exterior facets, the largest of min(the facet's measure, the Bottleneck of the outside cell
   // behind it). When every such Bottleneck is over `above` (often: the infinite cells), the
@@ -2225,6 +2255,19 @@ int vtkPerimeterPeelSurface::RequestData(
       for (int k = 0; k < 4; ++k)
       {
         solid.Prefetch(dt.Neighbor(c, k));
+      }
+      // What the offers of c's neighbours read when c goes (their records were requested at the
+      // previous turn): the vertex of each opposite c (its facet measures) and the bottlenecks
+      // of their neighbours (their widest ways in).
+      for (int k = 0; k < 4; ++k)
+      {
+        const int64_t n = dt.Neighbor(c, k);
+        const int32_t apex = dt.Vertex(n, dt.MirrorIndex(c, k));
+        if (apex >= 0)
+        {
+          solid.PrefetchVertex(apex);
+          solid.PrefetchBottlenecks(n);
+        }
       }
       if (!solid.IsInside(c))
       {

@@ -1505,6 +1505,20 @@ public:
       }
       const EdgeRef e = this->Work.back();
       this->Work.pop_back();
+      // The folds are mostly met in queue order: start loading the records of the fold after
+      // next and the neighbours of the next one (whose record was requested at the last turn).
+      const size_t left = this->Work.size();
+      if (left >= 2)
+      {
+        this->Solid.Prefetch(this->Work[left - 2].Cell);
+      }
+      if (left >= 1)
+      {
+        for (int k = 0; k < 4; ++k)
+        {
+          this->Solid.Prefetch(this->DT.Neighbor(this->Work[left - 1].Cell, k));
+        }
+      }
       if (!this->ListMoves(e))
       {
         continue; // no longer a fold

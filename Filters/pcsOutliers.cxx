@@ -207,7 +207,11 @@ int64_t FlagOutliers(const double* x, int32_t n, const std::vector<int32_t>& knn
     vtkIdList* list = listLocal.Local();
     for (int32_t i = begin; i < end; ++i)
     {
-      if (!(reach[i] > sparse))
+      // (A point on a sampled surface is never an outlier: tested first, it needs no query. Where
+      // the dense points are a few clumps, e.g. piles of near-coincident points, the sparse
+      // points are the rest of the surface, and each query swept the empty bins out to a clump
+      // and sorted its points.)
+      if (!(reach[i] > sparse) || onSampledSurface(i))
       {
         continue;
       }
@@ -220,7 +224,7 @@ int64_t FlagOutliers(const double* x, int32_t n, const std::vector<int32_t>& knn
       if (!around.empty())
       {
         std::nth_element(around.begin(), around.begin() + around.size() / 2, around.end());
-        far[i] = reach[i] > factor * around[around.size() / 2] && !onSampledSurface(i);
+        far[i] = reach[i] > factor * around[around.size() / 2];
       }
     }
   });

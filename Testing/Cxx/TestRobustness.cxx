@@ -400,6 +400,22 @@ std::vector<InputCase> Inputs()
     cases.push_back({ "sphere with 10 % exact duplicates", xyz, false });
   }
   {
+    // 4 piles of 250 near-coincident points (a scanner's repeated returns at one spot; spread
+    // 1e-9) on a 2,000-point sphere: the sphere is the sparse part of the cloud. (The shared
+    // outlier rule queried the piles from every sphere point: with 10 piles of 1,000 points on a
+    // 10^4-point sphere, 22x the time of the sphere alone for vtkLocalOptimumGrowth.)
+    std::vector<double> xyz = Sphere(2000, 13);
+    const std::vector<double> centres = Sphere(4, 14);
+    const std::vector<double> jitter = Sphere(1000, 15, 1e-9);
+    for (size_t i = 0; i < jitter.size(); i += 3)
+    {
+      const size_t c = 3 * ((i / 3) % 4);
+      xyz.insert(xyz.end(),
+        { centres[c] + jitter[i], centres[c + 1] + jitter[i + 1], centres[c + 2] + jitter[i + 2] });
+    }
+    cases.push_back({ "sphere and 4 piles of 250 near-coincident points", xyz, false });
+  }
+  {
     std::vector<double> xyz = Sphere(2000, 2);
     for (int i = 0; i < 200; ++i)
     {

@@ -269,6 +269,11 @@ vtkIdType Triangulate3D(vtkIncrementalDelaunay3D* self, const double* xyz,
   {
     representative->SetValue(duplicate.first, duplicate.second);
   }
+  const std::string large = dt.DescribeLargeSize(ids.size());
+  if (!large.empty())
+  {
+    vtkWarningWithObjectMacro(self, << large);
+  }
 
   const int64_t numberOfKernelCells = dt.GetNumberOfCells();
   const int32_t numberOfFinite = static_cast<int32_t>(dt.GetNumberOfFiniteCells());

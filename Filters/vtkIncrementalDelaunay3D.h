@@ -58,6 +58,10 @@
  * about 220 bytes per point during the construction, then the VTK output arrays. Exact
  * duplicates are detected during point location at no extra cost. With VTK's STDThread (or TBB)
  * SMP backend the spatial sort and the output stage use all cores; the insertion is sequential.
+ * Some point sets have a much larger tetrahedralization: points along a curve (a helix: about
+ * n^1.5 tetrahedra; the moment curve: n^2 / 2) or arranged on a cylinder (Erickson, "Nice point
+ * sets can have nasty Delaunay triangulations"); the filter then warns (more than 25 tetrahedra
+ * per distinct point), since time and memory grow with the tetrahedra.
  *
  * @warning
  * In 3D at least 4 non-coplanar points are needed; with fewer (or when all points are coplanar)

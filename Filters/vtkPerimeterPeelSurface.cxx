@@ -2015,6 +2015,11 @@ int vtkPerimeterPeelSurface::RequestData(
     return finish();
   }
   tetrahedra = dt.GetNumberOfFiniteCells();
+  const std::string large = dt.DescribeLargeSize(ids.size());
+  if (!large.empty())
+  {
+    vtkWarningMacro(<< large);
+  }
   peelStart = Clock::now();
   delaunayTime = std::chrono::duration<double>(peelStart - start).count();
   peelStartCPU = std::clock();

@@ -221,7 +221,9 @@
  *
  * Cost: O(n log n) after the tetrahedralization (each tetrahedron is queued a bounded number of
  * times per threshold, and the thresholds are few); the local spacing is one pass over the
- * tetrahedra's edges.
+ * tetrahedra's edges. The tetrahedra are about 3 per point on a surface sample; points along a
+ * curve (a helix, the moment curve: up to n^2 / 2 tetrahedra) have many more, and the filter
+ * warns beyond 25 per distinct point (as vtkIncrementalDelaunay3D).
  *
  * Caveat (paper section 3): the threshold is global; on clouds whose density varies a lot, the
  * sparse regions open (holes) or the dense ones keep spurious tetrahedra. ThresholdFactor

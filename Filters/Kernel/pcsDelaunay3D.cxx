@@ -22,6 +22,7 @@
 #include <limits>
 #include <map>
 #include <new>
+#include <sstream>
 #include <utility>
 
 namespace pcs
@@ -853,5 +854,24 @@ void Delaunay3D::Clear()
   this->Circumradii.reset();
   this->NumberOfFiniteCells = 0;
   this->Duplicates.clear();
+}
+
+std::string Delaunay3D::DescribeLargeSize(size_t inserted) const
+{
+  const double vertices =
+    static_cast<double>(inserted) - static_cast<double>(this->Duplicates.size());
+  const double cells = static_cast<double>(this->NumberOfFiniteCells);
+  if (!(vertices > 0.0) || !(cells > LargeCellsPerVertex * vertices))
+  {
+    return std::string();
+  }
+  std::ostringstream text;
+  text.precision(3);
+  text << "The Delaunay tetrahedralization has " << this->NumberOfFiniteCells << " tetrahedra for "
+       << static_cast<int64_t>(vertices) << " distinct points (" << cells / vertices
+       << " per point; a well-spread sample has about 3 on a surface, 6.7 in a volume): the points "
+          "lie along curves or in another configuration whose Delaunay size grows faster than "
+          "the number of points (up to n^2 / 2 tetrahedra), and time and memory grow with it.";
+  return text.str();
 }
 } // namespace pcs

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <functional>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -59,6 +60,18 @@ public:
 
   /// Number of finite cells.
   int64_t GetNumberOfFiniteCells() const { return this->NumberOfFiniteCells; }
+
+  /// Finite cells per vertex beyond which the tetrahedralization is reported as unusually large:
+  /// a well-spread sample has about 3 per point on a surface and 6.7 in a volume (lattices and
+  /// scan rings included); points along a curve (a helix: n^1.5, the moment curve: n^2 / 2) or
+  /// arranged on a cylinder (Erickson, "Nice point sets can have nasty Delaunay
+  /// triangulations") have many more, and time and memory grow with them.
+  static constexpr double LargeCellsPerVertex = 25.0;
+
+  /// After Triangulate: a sentence for a warning when the finite cells exceed
+  /// LargeCellsPerVertex per distinct vertex (`inserted` points given, duplicates left out),
+  /// else an empty string.
+  std::string DescribeLargeSize(size_t inserted) const;
 
   /// Circumcentre and circumradius of the tetrahedron abcd (NaN centre and infinite radius when
   /// it is flat in floating point).

@@ -136,7 +136,12 @@ inline double SegmentDistance2(const double* a, const double* b, const double* x
   const double ax[3] = { x[0] - a[0], x[1] - a[1], x[2] - a[2] };
   const double length2 = Dot(ab, ab);
   double s = length2 > 0.0 ? Dot(ax, ab) / length2 : 0.0;
-  s = std::min(1.0, std::max(0.0, s));
+  // Clamped to [0, 1] without a branch (maxsd, minsd): with constant bounds GCC branches on the
+  // lower one, and the projection tests' segments fall on either side at random. (zero and one
+  // are 0 and 1 for a finite length2, as for the finite points and projections tested here.)
+  const double zero = 0.0 * length2, one = zero + 1.0;
+  s = s > zero ? s : zero;
+  s = s < one ? s : one;
   const double d[3] = { ax[0] - s * ab[0], ax[1] - s * ab[1], ax[2] - s * ab[2] };
   return Dot(d, d);
 }

@@ -1732,9 +1732,10 @@ bool Front::Seed(Id p, const Parameters& parameters)
 //   neighbour (largest dihedral angle at most MaximumDihedral: 170 degrees, where a fill
 //   triangle and the triangle across its edge would overlap within 10 degrees).
 // The triangles around such a hole are often steep against it (90 to 180 degrees against the
-// fill on 33 of the cow's 37 loops): a smaller bound left most holes open, and removing the
-// steep triangles to fill the larger loop did not help (Benchmarks/results/cdt.md, "Holes left
-// with estimated normals").
+// fill on 33 of the cow's 37 loops): a smaller bound left most holes open, and removing every
+// steep triangle to fill the larger loop did not help (Benchmarks/results/cdt.md, "Holes left
+// with estimated normals"). Removing only the triangles folded over the hole (facing against its
+// fill) when no fill closes the loop does: CloseAfterPeel.
 class LoopCloser
 {
 public:
@@ -1765,16 +1766,178 @@ public:
     std::vector<Id> fill;
     for (const std::vector<Id>& loop : loops)
     {
-      std::vector<int64_t> added;
-      if (this->Fill(loop, fill) && this->Mesh.AddTriangles(fill.data(), fill.size() / 3, added))
+      if (!this->IsLoop(loop))
       {
-        this->Origin.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 2);
+        continue; // opened further by the peel around an earlier loop
+      }
+      if (this->Fill(loop, fill))
+      {
+        this->AddFill(fill);
+      }
+      else
+      {
+        this->CloseAfterPeel(loop);
       }
     }
     return static_cast<vtkIdType>(this->Mesh.GetNumberOfTriangles() - before);
   }
 
 private:
+  // Are the loop's edges all boundary half-edges (loop[i] -> loop[i + 1])?
+  bool IsLoop(const std::vector<Id>& loop) const
+  {
+    for (size_t i = 0; i < loop.size(); ++i)
+    {
+      if (!this->Mesh.IsBoundaryHalfEdge(loop[i], loop[(i + 1) % loop.size()]))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // The fill's triangles added to the mesh (origin 2, hole filling); false when the mesh
+  // refuses them (it is then unchanged).
+  bool AddFill(const std::vector<Id>& fill)
+  {
+    if (!this->Mesh.AddTriangles(fill.data(), fill.size() / 3, this->Added))
+    {
+      return false;
+    }
+    this->Origin.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 2);
+    return true;
+  }
+
+  // A loop that no fill closes below MaximumDihedral: where the front folded triangles over a
+  // small hole (wrong normals), the fill of the loop would fold onto them. The folded triangles
+  // across its edges are removed (PeelFolded) and the larger loop they leave is filled; this is
+  // kept only when it closes the loop's edges exactly (no more boundary than before), otherwise
+  // the mesh is put back as it was.
+  void CloseAfterPeel(const std::vector<Id>& loop)
+  {
+    const int64_t open = this->Mesh.GetNumberOfBoundaryHalfEdges();
+    std::vector<Id> peeled, larger, fill;
+    const bool closed = this->PeelFolded(loop, peeled) && this->LoopAround(peeled, larger) &&
+      this->Fill(larger, fill) && this->AddFill(fill);
+    if (closed &&
+      this->Mesh.GetNumberOfBoundaryHalfEdges() == open - static_cast<int64_t>(loop.size()))
+    {
+      return;
+    }
+    if (closed)
+    {
+      for (int64_t t : this->Added)
+      {
+        this->Mesh.RemoveTriangle(t);
+      }
+    }
+    this->Restore(peeled);
+  }
+
+  // The mesh triangles across the loop's edges that are folded over the hole (their normal
+  // against the loop's vector area, oriented like its fill) are removed, except one whose removal
+  // would leave a vertex with no triangle: no point leaves the mesh. Each removed triangle is
+  // appended to `peeled` (its 3 vertices and its origin); false when none is removed.
+  bool PeelFolded(const std::vector<Id>& loop, std::vector<Id>& peeled)
+  {
+    const size_t m = loop.size();
+    double area[3] = { 0, 0, 0 }; // twice the vector area of the fill's loop (walked backwards)
+    for (size_t i = 0; i < m; ++i)
+    {
+      double c[3];
+      vtkMath::Cross(this->P(loop[(i + 1) % m]), this->P(loop[i]), c);
+      vtkMath::Add(area, c, area);
+    }
+    std::vector<int64_t> folded;
+    for (size_t i = 0; i < m; ++i)
+    {
+      const int64_t t = this->Mesh.FindTriangle(loop[i], loop[(i + 1) % m]);
+      if (t < 0)
+      {
+        return false;
+      }
+      const int32_t* v = this->Mesh.GetTriangle(t);
+      double normal[3];
+      pcs::projected::TriangleNormal(this->P(v[0]), this->P(v[1]), this->P(v[2]), normal);
+      if (Dot(normal, area) < 0.0 && std::find(folded.begin(), folded.end(), t) == folded.end())
+      {
+        folded.push_back(t);
+      }
+    }
+    std::vector<int64_t> removable;
+    for (int64_t t : folded)
+    {
+      const int32_t* v = this->Mesh.GetTriangle(t);
+      if (this->KeepsATriangle(v[0], folded) && this->KeepsATriangle(v[1], folded) &&
+        this->KeepsATriangle(v[2], folded))
+      {
+        removable.push_back(t);
+      }
+    }
+    for (int64_t t : removable)
+    {
+      const int32_t* v = this->Mesh.GetTriangle(t);
+      peeled.insert(peeled.end(), v, v + 3);
+      peeled.push_back(this->Origin[static_cast<size_t>(t)]);
+      this->Mesh.RemoveTriangle(t);
+    }
+    return !removable.empty();
+  }
+
+  // Has v a triangle that is not one of `removed`?
+  bool KeepsATriangle(Id v, const std::vector<int64_t>& removed) const
+  {
+    constexpr int Capacity = 64;
+    int64_t around[Capacity];
+    const int n = this->Mesh.GetVertexTriangles(v, around, Capacity);
+    return n > Capacity ||
+      std::any_of(around,
+        around + n,
+        [&](int64_t t) { return std::find(removed.begin(), removed.end(), t) == removed.end(); });
+  }
+
+  // The boundary loop through a vertex of the last triangle of `peeled` that has one open fan,
+  // into `loop`; false when there is none or the loop is longer than MaximumLoopEdges.
+  bool LoopAround(const std::vector<Id>& peeled, std::vector<Id>& loop) const
+  {
+    Id start = None, out[2];
+    for (size_t k = peeled.size() - 4; k + 1 < peeled.size() && start == None; ++k)
+    {
+      if (this->Mesh.GetBoundaryOutVertices(peeled[k], out, 2) == 1)
+      {
+        start = peeled[k];
+      }
+    }
+    if (start == None)
+    {
+      return false;
+    }
+    loop.assign(1, start);
+    for (Id previous = start, current = out[0]; current != start;)
+    {
+      if (current < 0 || loop.size() > MaximumLoopEdges)
+      {
+        return false;
+      }
+      loop.push_back(current);
+      const Id next = this->Mesh.NextBoundaryVertex(previous, current);
+      previous = current;
+      current = next;
+    }
+    return true;
+  }
+
+  // The triangles of `peeled` put back (see PeelFolded).
+  void Restore(const std::vector<Id>& peeled)
+  {
+    for (size_t k = peeled.size(); k >= 4; k -= 4)
+    {
+      this->Mesh.AddTriangle(peeled[k - 4], peeled[k - 3], peeled[k - 2]);
+      this->Origin.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()),
+        static_cast<uint8_t>(peeled[k - 1]));
+    }
+  }
+
   // The least-dihedral triangulation is cubic in the loop's length. Loops of up to 400 edges
   // are tried (100 before; FillLoopNearSamples refuses a wide loop by its area before the
   // programme): the noisy clouds, with many long loops, took 0 to 5 % more CPU than with 100
@@ -1865,6 +2028,7 @@ private:
   const std::vector<uint8_t>& Status;
   const pcs::PointBins& Bins;
   std::vector<uint8_t>& Origin;
+  std::vector<int64_t> Added; // the triangles of the last AddFill
 };
 
 //------------------------------------------------------------------------------------------------

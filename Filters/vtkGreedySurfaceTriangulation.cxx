@@ -254,6 +254,18 @@ public:
     double Box[6];
   };
   std::vector<LongTriangle> LongTriangles; // FillMeetsMesh's triangles beyond its pad
+  // LongTriangles by the cells (of the pad's size) their boxes overlap, those over more than
+  // LongCellsLimit cells listed apart (Oversized): FillMeetsMesh tests only the long triangles
+  // whose cells a fill triangle's box overlaps (all of them grew with the cloud: quadratic).
+  std::unordered_map<int64_t, std::vector<int32_t>> LongCells;
+  std::vector<int32_t> OversizedLong;
+  mutable std::vector<int64_t> LongStamp; // per long triangle: the query that last tested it
+  mutable int64_t LongQuery = 0;
+  bool LongCellRange(const double box[6], int64_t range[6]) const;
+  static int64_t LongCellKey(int64_t i, int64_t j, int64_t k)
+  {
+    return (i & 0x1FFFFF) | ((j & 0x1FFFFF) << 21) | ((k & 0x1FFFFF) << 42);
+  }
   std::vector<char> OnRefusedLoop;         // per vertex: on a hole whose fill step 6 refused
   bool OnRefusedLoopAny(const std::vector<int32_t>& loop) const
   {
@@ -2526,6 +2538,9 @@ void Reconstruction::Step6FillHoles(double begin, double end)
 void Reconstruction::CollectLongTriangles()
 {
   this->LongTriangles.clear();
+  this->LongCells.clear();
+  this->OversizedLong.clear();
+  this->LongStamp.clear();
   const int64_t ids = this->Mesh.GetNumberOfTriangleIds();
   for (int64_t t = 0; t < ids; ++t)
   {
@@ -2550,9 +2565,50 @@ void Reconstruction::AccountForFill(const std::vector<int32_t>& triangles)
     {
       LongTriangle t = { { v[0], v[1], v[2] }, {} };
       BoundingBox(this->X.data(), v, 3, t.Box);
+      const int32_t index = static_cast<int32_t>(this->LongTriangles.size());
       this->LongTriangles.push_back(t);
+      this->LongStamp.push_back(-1);
+      int64_t range[6];
+      if (!this->LongCellRange(t.Box, range))
+      {
+        this->OversizedLong.push_back(index);
+        continue;
+      }
+      for (int64_t i = range[0]; i <= range[1]; ++i)
+      {
+        for (int64_t j = range[2]; j <= range[3]; ++j)
+        {
+          for (int64_t k = range[4]; k <= range[5]; ++k)
+          {
+            this->LongCells[LongCellKey(i, j, k)].push_back(index);
+          }
+        }
+      }
     }
   }
+}
+
+// The cells (cubes of the pad's size) that `box` overlaps; false when they are more than
+// LongCellsLimit or the box is not finite (the box is then handled apart). Cell keys wrap every
+// 2^21 cells along an axis: a shared key only adds candidates, each tested by its box.
+bool Reconstruction::LongCellRange(const double box[6], int64_t range[6]) const
+{
+  constexpr double LongCellsLimit = 64.0;
+  const double size = LongEdgeSpacings * this->Spacing;
+  double cells = 1.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double low = std::floor(box[2 * c] / size);
+    const double high = std::floor(box[2 * c + 1] / size);
+    if (!(size > 0.0) || !(std::fabs(low) < 1e15) || !(std::fabs(high) < 1e15))
+    {
+      return false;
+    }
+    cells *= high - low + 1.0;
+    range[2 * c] = static_cast<int64_t>(low);
+    range[2 * c + 1] = static_cast<int64_t>(high);
+  }
+  return cells <= LongCellsLimit;
 }
 
 // Two triangles (3 point ids each) whose vertices are all farther apart than MaximumBridgeLength
@@ -2594,11 +2650,57 @@ bool Reconstruction::FillMeetsMesh(const std::vector<int32_t>& fill) const
     const int32_t* f = &fill[t];
     double box[6];
     BoundingBox(this->X.data(), f, 3, box);
-    for (const auto& g : this->LongTriangles)
+    auto meetsLong = [&](int32_t index)
     {
-      if (BoxesOverlap(box, g.Box) && meet(f, g.Ids))
+      if (this->LongStamp[index] == this->LongQuery)
       {
-        return true;
+        return false; // (tested from another cell)
+      }
+      this->LongStamp[index] = this->LongQuery;
+      const LongTriangle& g = this->LongTriangles[index];
+      return BoxesOverlap(box, g.Box) && meet(f, g.Ids);
+    };
+    ++this->LongQuery;
+    int64_t range[6];
+    if (this->LongCellRange(box, range))
+    {
+      for (int32_t index : this->OversizedLong)
+      {
+        if (meetsLong(index))
+        {
+          return true;
+        }
+      }
+      for (int64_t i = range[0]; i <= range[1]; ++i)
+      {
+        for (int64_t j = range[2]; j <= range[3]; ++j)
+        {
+          for (int64_t k = range[4]; k <= range[5]; ++k)
+          {
+            const auto cell = this->LongCells.find(LongCellKey(i, j, k));
+            if (cell == this->LongCells.end())
+            {
+              continue;
+            }
+            for (int32_t index : cell->second)
+            {
+              if (meetsLong(index))
+              {
+                return true;
+              }
+            }
+          }
+        }
+      }
+    }
+    else
+    {
+      for (int32_t index = 0; index < static_cast<int32_t>(this->LongTriangles.size()); ++index)
+      {
+        if (meetsLong(index))
+        {
+          return true;
+        }
       }
     }
     // Every other triangle meeting f at a point x has a vertex within the pad of x, and x is

@@ -325,10 +325,12 @@
  *
  * Cost: the neighbour search and the uniformity factors are threaded; step 1 is a sort of about
  * K N / 2 candidate edges and a linear pass; steps 2 to 4 are linear in the mesh and the loops;
- * hole filling is quadratic in the size of each hole piece (bounded by MaximumHolePoints); the
- * fill fairing is two conjugate gradient solves over the new points, preconditioned by their
- * diagonal (at most 2,000 iterations each of a pass over them; the whole filter took 0.36 and
- * 0.54 CPU s on the benchmark's damaged bunny, seeds 7 and 8, with 608 and 3,104 points added).
+ * hole filling is quadratic in the size of each hole piece (bounded by MaximumHolePoints), and
+ * each fill is checked against the mesh triangles near it (the long ones looked up by cells of
+ * 4 mean spacings); the fill fairing is two conjugate gradient solves over the new points,
+ * preconditioned by their diagonal (at most 2,000 iterations each of a pass over them; the whole
+ * filter took 0.36 and 0.54 CPU s on the benchmark's damaged bunny, seeds 7 and 8, with 608 and
+ * 3,104 points added).
  * Memory about 40 K + 300 bytes per point.
  *
  * @warning

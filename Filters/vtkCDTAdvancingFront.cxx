@@ -1841,13 +1841,8 @@ private:
   bool PeelFolded(const std::vector<Id>& loop, std::vector<Id>& peeled)
   {
     const size_t m = loop.size();
-    double area[3] = { 0, 0, 0 }; // twice the vector area of the fill's loop (walked backwards)
-    for (size_t i = 0; i < m; ++i)
-    {
-      double c[3];
-      vtkMath::Cross(this->P(loop[(i + 1) % m]), this->P(loop[i]), c);
-      vtkMath::Add(area, c, area);
-    }
+    double area[3]; // the vector area of the fill's loop (walked backwards)
+    pcs::holes::LoopVectorArea(this->XYZ, std::vector<Id>(loop.rbegin(), loop.rend()), area);
     std::vector<int64_t> folded;
     for (size_t i = 0; i < m; ++i)
     {
@@ -1938,11 +1933,11 @@ private:
     }
   }
 
-  // The least-dihedral triangulation is cubic in the loop's length. Loops of up to 400 edges
-  // are tried (100 before; FillLoopNearSamples refuses a wide loop by its area before the
-  // programme): the noisy clouds, with many long loops, took 0 to 5 % more CPU than with 100
-  // (Benchmarks/results/cdt.md, "Loops of up to 400 edges").
-  static constexpr size_t MaximumLoopEdges = 400;
+  // The least-dihedral triangulation is cubic in the loop's length. Loops up to the kernel's
+  // limit (400 edges) are tried (100 before; FillLoopNearSamples refuses a wide loop by its area
+  // before the programme): the noisy clouds, with many long loops, took 0 to 5 % more CPU than
+  // with 100 (Benchmarks/results/cdt.md, "Loops of up to 400 edges").
+  static constexpr size_t MaximumLoopEdges = pcs::holes::MaximumFillLoopEdges;
   static constexpr double MaximumDihedral = 170.0 * 3.14159265358979323846 / 180.0;
 
   const double* P(Id i) const { return this->XYZ + 3 * static_cast<size_t>(i); }

@@ -1795,7 +1795,7 @@ void Grower::GatherAround(const std::vector<Id>& loop, std::vector<Id>& around)
 bool Grower::FillNarrowLoop(const std::vector<Id>& frontLoop)
 {
   const size_t m = frontLoop.size();
-  if (m > 400)
+  if (m > pcs::holes::MaximumFillLoopEdges)
   {
     return false; // the least-dihedral triangulation is cubic in the loop's length
   }

@@ -154,8 +154,9 @@
  *      in ways these moves do not reach (on noisy samples a fold-free surface over the Delaunay
  *      facets through every point may not exist). Cost: 10^5 random sphere points, the peel's
  *      processor time 0.33 -> 0.72 s (70,000 folds) when introduced; each trial is now evaluated
- *      without moving anything (one walk around each edge of the moved cells for both states):
- *      10^6 random sphere points, the peel 5.15 -> 4.08 s; field data NumberOfUnfoldingMoves.
+ *      without moving anything (a single cell from its four facets and at most one short walk
+ *      per edge, a fan by one walk around each edge of its cells for both states): 10^6 random
+ *      sphere points, the peel 5.15 -> 3.4 s; field data NumberOfUnfoldingMoves.
  *   7. Groups that keep the topology (during the peel, once it has converged): group removals
  *      also start at refused tetrahedra whose exterior facet is over twice the threshold (squared
  *      for AREA; a surface triangle of a uniform sample is about the mean), grow as in rule 3 but
@@ -280,7 +281,8 @@
  * @warning Cost (measured 2026-11-24, processor times, load 10-14 on 2 cores; issue 4 asks for
  * 0.5 times the tetrahedralization at 10^6 points): the peel takes 0.53 times the
  * tetrahedralization on 10^6 random sphere points and 0.60 on a torus without the unfolding pass
- * (rule 6), 0.93 on the sphere with it (1.16 before its trials were made local); on 10^5 points
+ * (rule 6), 0.80 on the sphere with it (idle, 2026-11-24; 1.16 before its trials were made
+ * local, 0.89 before the single-cell trials from facets and the skipped refusals); on 10^5 points
  * 0.73 (sphere) and 0.84 (torus). It works on a renumbered copy of the tetrahedralization
  * (vertices in insertion order, cells sorted by their newest vertex:
  * pcs::Delaunay3D::RenumberByInsertion; 36 bytes per cell more while the cells are copied), so that

@@ -1089,6 +1089,29 @@ bool HoleFiller::Fill(const double* xyz, const std::vector<int32_t>& loop,
 // returned, or a negative value when there is no triangulation (or the loop has more than 400
 // vertices: the cost is cubic). No sub-polygon's triangulation whose angle exceeds `maximumAngle`
 // (beyond the tie tolerance) is kept: the caller refuses such fills anyway.
+void LoopVectorArea(const double* xyz, const std::vector<int32_t>& loop, double area[3])
+{
+  area[0] = area[1] = area[2] = 0.0;
+  if (loop.empty())
+  {
+    return;
+  }
+  const double* origin = xyz + 3 * static_cast<size_t>(loop[0]);
+  for (size_t i = 1; i + 1 < loop.size(); ++i)
+  {
+    const double* p = xyz + 3 * static_cast<size_t>(loop[i]);
+    const double* q = xyz + 3 * static_cast<size_t>(loop[i + 1]);
+    const double u[3] = { p[0] - origin[0], p[1] - origin[1], p[2] - origin[2] };
+    const double v[3] = { q[0] - origin[0], q[1] - origin[1], q[2] - origin[2] };
+    double c[3];
+    vtkMath::Cross(u, v, c);
+    for (int k = 0; k < 3; ++k)
+    {
+      area[k] += 0.5 * c[k];
+    }
+  }
+}
+
 double LeastDihedralFill(const double* xyz,
   const std::vector<int32_t>& loop,
   const std::function<bool(int32_t, int32_t)>& edgeExists,
@@ -1097,7 +1120,7 @@ double LeastDihedralFill(const double* xyz,
   double maximumAngle)
 {
   const int n = static_cast<int>(loop.size());
-  if (n < 3 || n > 400)
+  if (n < 3 || n > static_cast<int>(MaximumFillLoopEdges))
   {
     return -1.0;
   }
@@ -1247,19 +1270,13 @@ bool FillLoopNearSamples(const double* xyz,
   }
   auto point = [xyz](int32_t v) { return xyz + 3 * static_cast<size_t>(v); };
   const std::vector<int32_t> loop(boundary.rbegin(), boundary.rend());
-  double perimeter = 0.0, area[3] = { 0, 0, 0 };
+  double perimeter = 0.0, area[3];
   for (size_t i = 0; i < m; ++i)
   {
-    const double* p = point(loop[i]);
-    const double* q = point(loop[(i + 1) % m]);
-    perimeter += std::sqrt(vtkMath::Distance2BetweenPoints(p, q));
-    double c[3];
-    vtkMath::Cross(p, q, c);
-    for (int k = 0; k < 3; ++k)
-    {
-      area[k] += 0.5 * c[k];
-    }
+    perimeter +=
+      std::sqrt(vtkMath::Distance2BetweenPoints(point(loop[i]), point(loop[(i + 1) % m])));
   }
+  LoopVectorArea(xyz, loop, area);
   if (!(std::sqrt(vtkMath::Dot(area, area)) <= 2.0 * perimeter * reach))
   {
     return false;

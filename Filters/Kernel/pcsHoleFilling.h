@@ -179,6 +179,16 @@ private:
     const std::vector<double>* uv, Piece& first, Piece& second) const;
 };
 
+/// The longest loop LeastDihedralFill triangulates (its cost is cubic in the loop's length); the
+/// callers that close loops with it (vtkLocalOptimumGrowth, vtkCDTAdvancingFront) refuse longer
+/// loops before any other work.
+constexpr size_t MaximumFillLoopEdges = 400;
+
+/// The vector area of a closed polygon (the loop's vertices in the given order; half the sum of
+/// the cross products of consecutive edges from loop[0], so that coordinates far from the origin
+/// do not cancel it).
+void LoopVectorArea(const double* xyz, const std::vector<int32_t>& loop, double area[3]);
+
 /// Triangulation of a loop by its own vertices (vtkGreedySurfaceTriangulation's fallback when the
 /// projected fill fails): the triangulation of the loop polygon (its vertices only) that minimises
 /// first the largest dihedral angle (between adjacent fill triangles, and between a fill triangle
@@ -187,8 +197,8 @@ private:
 /// edge of the mesh already and an exactly degenerate triangle are forbidden. `across(e)` gives the
 /// unit normal of the mesh triangle on the loop edge loop[e] -> loop[e + 1] (false when none).
 /// Triangles in loop order are appended to `triangles`; the largest dihedral angle (radians) is
-/// returned, or a negative value when there is no triangulation (or the loop has more than 400
-/// vertices: the cost is cubic). A caller that refuses fills whose angle exceeds `maximumAngle`
+/// returned, or a negative value when there is no triangulation (or the loop has more than
+/// MaximumFillLoopEdges vertices: the cost is cubic). A caller that refuses fills whose angle exceeds `maximumAngle`
 /// (radians) passes it: no sub-polygon's triangulation beyond it (and the 1e-9 tie tolerance)
 /// is kept, which prunes the programme; the result is then negative, or above `maximumAngle`,
 /// when every triangulation exceeds it. Splits that cannot be taken (their parts or their

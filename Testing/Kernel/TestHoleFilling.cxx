@@ -1096,6 +1096,28 @@ void TestTrianglesIntersect()
   CHECK(!TrianglesIntersect(flat[0], flat[1], flat[2], any[0], any[1], any[2]), "zero area");
 }
 
+// The vector area of a small non-convex loop far from the origin: the coordinates are exact
+// (a 2^-10 square grid at 2^20), so the area from loop[0] is exact too, 3 s^2 along +z; a sum of
+// the points' own cross products (terms of 2^40) loses it to rounding.
+void TestLoopVectorArea()
+{
+  const double s = std::ldexp(1.0, -10), o = std::ldexp(1.0, 20);
+  const double uv[5][2] = { { 0, 0 }, { 2, 0 }, { 2, 2 }, { 1, 1 }, { 0, 2 } };
+  std::vector<double> xyz;
+  for (const auto& p : uv)
+  {
+    xyz.insert(xyz.end(), { o + s * p[0], -o + s * p[1], 3.0 * o });
+  }
+  std::vector<int32_t> loop = { 0, 1, 2, 3, 4 };
+  double area[3];
+  pcs::holes::LoopVectorArea(xyz.data(), loop, area);
+  CHECK(area[0] == 0.0 && area[1] == 0.0 && area[2] == 3.0 * s * s,
+    "area (%g, %g, %g), expected (0, 0, %g)", area[0], area[1], area[2], 3.0 * s * s);
+  std::reverse(loop.begin(), loop.end());
+  pcs::holes::LoopVectorArea(xyz.data(), loop, area);
+  CHECK(area[2] == -3.0 * s * s, "reversed loop's area %g, expected %g", area[2], -3.0 * s * s);
+}
+
 int main()
 {
   TestPolygonPredicates();
@@ -1104,6 +1126,7 @@ int main()
   TestLeastDihedralFill();
   TestLeastDihedralFillSkipsOnlyUntakenSplits();
   TestFillLoopNearSamples();
+  TestLoopVectorArea();
   TestDegenerateFills();
   TestTrianglesIntersect();
   std::printf("%d failure(s)\n", Failures);

@@ -2452,13 +2452,26 @@ void Reconstruction::Step6FillHoles(double begin, double end)
     }
     Candidate& fill = fills[i];
     fill.MeetsMesh = this->FillMeetsMesh(fill.Result.Triangles);
-    for (size_t j = i + 1; j < fills.size(); ++j)
+  }
+  // The pairs of fills whose boxes overlap, each once: in order of their boxes' lower x, a fill
+  // meets only the next ones that start before its box ends (all pairs were compared: quadratic
+  // in the number of holes).
+  std::vector<size_t> byLowerX(fills.size());
+  std::iota(byLowerX.begin(), byLowerX.end(), 0);
+  std::sort(byLowerX.begin(),
+    byLowerX.end(),
+    [&fills](size_t a, size_t b) { return fills[a].Box[0] < fills[b].Box[0]; });
+  for (size_t s = 0; s < byLowerX.size(); ++s)
+  {
+    Candidate& fill = fills[byLowerX[s]];
+    for (size_t r = s + 1; r < byLowerX.size() && !(fills[byLowerX[r]].Box[0] > fill.Box[1]); ++r)
     {
-      if (BoxesOverlap(fill.Box, fills[j].Box) &&
-        this->FillsMeet(fill.Result.Triangles, fills[j].Result.Triangles))
+      Candidate& other = fills[byLowerX[r]];
+      if (BoxesOverlap(fill.Box, other.Box) &&
+        this->FillsMeet(fill.Result.Triangles, other.Result.Triangles))
       {
         fill.MeetsFill = true;
-        fills[j].MeetsFill = true;
+        other.MeetsFill = true;
       }
     }
   }

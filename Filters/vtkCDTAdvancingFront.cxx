@@ -1774,9 +1774,9 @@ public:
       {
         this->AddFill(fill);
       }
-      else
+      else if (IsFillable(loop))
       {
-        this->CloseAfterPeel(loop);
+        this->CloseAfterPeel(loop); // refused by its fills, not by its shape
       }
     }
     return static_cast<vtkIdType>(this->Mesh.GetNumberOfTriangles() - before);
@@ -1984,19 +1984,29 @@ private:
     return found;
   }
 
+  // Can the loop have a fill at all: 3 to MaximumLoopEdges edges, through no vertex twice?
+  static bool IsFillable(const std::vector<Id>& boundary)
+  {
+    const size_t m = boundary.size();
+    if (m < 3 || m > MaximumLoopEdges)
+    {
+      return false;
+    }
+    std::vector<Id> sorted(boundary);
+    std::sort(sorted.begin(), sorted.end());
+    return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+  }
+
   // The fill of `boundary` (a loop of boundary half-edges) into `fill`; true when it passes the
   // rules above.
   bool Fill(const std::vector<Id>& boundary, std::vector<Id>& fill) const
   {
     fill.clear();
-    const size_t m = boundary.size();
-    std::vector<Id> sorted(boundary);
-    std::sort(sorted.begin(), sorted.end());
-    if (m < 3 || m > MaximumLoopEdges ||
-      std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    if (!IsFillable(boundary))
     {
-      return false; // too long, or through a vertex twice
+      return false;
     }
+    const size_t m = boundary.size();
     // The loop as the fill walks it (backwards), the order of the sums below.
     const std::vector<Id> loop(boundary.rbegin(), boundary.rend());
     double spacing = 0.0;

@@ -117,12 +117,15 @@ def measure(name, cloud, key):
     algorithm.Update()
     mesh = algorithm.GetOutput()
     triangles = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    # The output's own points: greedy appends the points its hole filling adds.
+    vertices = vtk_to_numpy(mesh.GetPoints().GetData()).astype(float)
     spacing = cKDTree(cloud).query(cloud, 2)[0][:, 1].mean()
-    probes = np.einsum("bk,tkd->tbd", BARYCENTRIC, cloud[triangles]).reshape(-1, 3)
+    probes = np.einsum("bk,tkd->tbd", BARYCENTRIC, vertices[triangles]).reshape(-1, 3)
     far = np.abs(SHAPES[name][0](probes)).reshape(len(triangles), -1).max(axis=1) / spacing
     edges = np.sort(triangles[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1)
     _, counts = np.unique(edges, axis=0, return_counts=True)
     used = np.unique(triangles) if len(triangles) else np.array([], int)
+    used = used[used < len(cloud)]  # unused input points only
     return (len(triangles), int((far > 2.0).sum()), float(far.max()) if len(far) else 0.0,
             int((counts == 1).sum()), len(cloud) - len(used))
 

@@ -1,13 +1,17 @@
 #include "pcsNormalEstimation.h"
 
 #include "pcsNearestNeighbors.h"
+#include "pcsSpatialSort.h"
 
 #include "vtkMath.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <numeric>
 #include <queue>
 
 namespace pcs
@@ -345,6 +349,188 @@ void EstimatePlaneNormals(const double* pts,
     });
 }
 
+namespace
+{
+// A spanning forest in compressed rows: the tree neighbours of point i are
+// Adjacent[Start[i], Start[i + 1]), each with the key of its edge's cost.
+struct SpanningForest
+{
+  std::vector<int64_t> Start;
+  std::vector<KeyedId> Adjacent; // (cost key, other end)
+};
+
+// The minimum spanning forest of OrientNormals' graph (Kruskal). The edges, a pair of mutual
+// neighbours once (from the row of the smaller id), are keyed by the bits of their float cost,
+// mapped so that the keys sort as the floats do, and radix-sorted (11-bit digits: about 10 edges
+// per point); ties keep the order of the rows. An edge whose cost is not finite (NaN normals) is
+// left out: Prim's propagation never takes it either.
+SpanningForest MinimumSpanningForest(const double* pts,
+  Id count,
+  const std::vector<int32_t>& table,
+  int others,
+  const std::vector<double>& variation,
+  const std::vector<double>& normals)
+{
+  auto holds = [&](Id w, Id i)
+  {
+    const int32_t* row = &table[static_cast<size_t>(w) * others];
+    return std::find(row, row + others, i) != row + others;
+  };
+  std::vector<std::pair<Id, Id>> ends;
+  std::vector<KeyedId> keyed;
+  ends.reserve(static_cast<size_t>(count) * others);
+  keyed.reserve(static_cast<size_t>(count) * others);
+  for (Id i = 0; i < count; ++i)
+  {
+    const double* p = &pts[3 * static_cast<size_t>(i)];
+    const double* n = &normals[3 * static_cast<size_t>(i)];
+    for (int j = 0; j < others; ++j)
+    {
+      const Id w = table[static_cast<size_t>(i) * others + j];
+      if (w < 0 || w == i || (w < i && holds(w, i)))
+      {
+        continue;
+      }
+      const double agreement = ReflectedAgreement(
+        p, n, &pts[3 * static_cast<size_t>(w)], &normals[3 * static_cast<size_t>(w)]);
+      const float cost =
+        static_cast<float>(1.0 - std::fabs(agreement) + variation[i] + variation[w]);
+      if (!(cost < std::numeric_limits<float>::infinity()))
+      {
+        continue;
+      }
+      uint32_t bits;
+      std::memcpy(&bits, &cost, sizeof bits);
+      bits = (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);
+      keyed.emplace_back(bits, static_cast<int32_t>(ends.size()));
+      ends.emplace_back(i, w);
+    }
+  }
+  std::vector<KeyedId> scratch;
+  SortKeys(keyed.begin(), keyed.end(), 32, scratch, 11);
+  // Each edge that joins two trees is kept (union-find, the root the smaller id).
+  std::vector<Id> root(static_cast<size_t>(count));
+  std::iota(root.begin(), root.end(), 0);
+  auto find = [&](Id k)
+  {
+    while (root[k] != k)
+    {
+      k = root[k] = root[root[k]];
+    }
+    return k;
+  };
+  SpanningForest forest;
+  forest.Start.assign(static_cast<size_t>(count) + 1, 0);
+  std::vector<KeyedId> tree;
+  for (const KeyedId& edge : keyed)
+  {
+    const std::pair<Id, Id>& e = ends[edge.second];
+    const Id a = find(e.first), b = find(e.second);
+    if (a != b)
+    {
+      root[std::max(a, b)] = std::min(a, b);
+      tree.push_back(edge);
+      ++forest.Start[e.first + 1];
+      ++forest.Start[e.second + 1];
+      if (static_cast<Id>(tree.size()) == count - 1)
+      {
+        break;
+      }
+    }
+  }
+  std::partial_sum(forest.Start.begin(), forest.Start.end(), forest.Start.begin());
+  forest.Adjacent.resize(static_cast<size_t>(forest.Start[count]));
+  std::vector<int64_t> fill(forest.Start.begin(), forest.Start.end() - 1);
+  for (const KeyedId& edge : tree)
+  {
+    const std::pair<Id, Id>& e = ends[edge.second];
+    forest.Adjacent[fill[e.first]++] = { edge.first, e.second };
+    forest.Adjacent[fill[e.second]++] = { edge.first, e.first };
+  }
+  return forest;
+}
+
+// The extreme points of each tree along -x, +x, -y, +y, -z, +z (`part`: the tree of each point,
+// its smallest id), for OrientNormals' vote. Among points of equal coordinate the first reached
+// by Prim's propagation from the tree's smallest id counts (the order of the propagation before
+// it was made on Kruskal's tree, whose Prim order is the same: a minimum spanning tree holds the
+// cheapest edge out of every subtree); that order is found only for the trees that have such
+// ties (flat scans, quantized coordinates).
+std::vector<std::array<Id, 6>> ExtremePoints(const double* pts,
+  Id count,
+  const SpanningForest& forest,
+  const std::vector<Id>& part)
+{
+  auto point = [&](Id k) { return &pts[3 * static_cast<size_t>(k)]; };
+  std::vector<std::array<Id, 6>> extremes(static_cast<size_t>(count));
+  std::vector<uint8_t> tied(static_cast<size_t>(count), 0);
+  for (Id k = 0; k < count; ++k)
+  {
+    std::array<Id, 6>& extreme = extremes[part[k]];
+    if (part[k] == k)
+    {
+      extreme.fill(k);
+      continue;
+    }
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      Id& low = extreme[2 * axis];
+      Id& high = extreme[2 * axis + 1];
+      const double x = point(k)[axis];
+      tied[part[k]] |= (x == point(low)[axis] || x == point(high)[axis]) ? 1 : 0;
+      low = x < point(low)[axis] ? k : low;
+      high = x > point(high)[axis] ? k : high;
+    }
+  }
+  if (std::find(tied.begin(), tied.end(), 1) == tied.end())
+  {
+    return extremes;
+  }
+  std::vector<Id> rank(static_cast<size_t>(count), 0); // Prim order in the tied trees
+  std::priority_queue<KeyedId, std::vector<KeyedId>, std::greater<KeyedId>> steps;
+  for (Id seed = 0; seed < count; ++seed)
+  {
+    if (!tied[seed])
+    {
+      continue;
+    }
+    Id reached = 0;
+    steps.push({ 0, seed });
+    while (!steps.empty())
+    {
+      const Id from = steps.top().second;
+      steps.pop();
+      rank[from] = reached++;
+      for (int64_t a = forest.Start[from]; a < forest.Start[from + 1]; ++a)
+      {
+        const Id to = forest.Adjacent[a].second;
+        if (to != seed && rank[to] == 0)
+        {
+          steps.push(forest.Adjacent[a]);
+        }
+      }
+    }
+  }
+  for (Id k = 0; k < count; ++k)
+  {
+    if (!tied[part[k]])
+    {
+      continue;
+    }
+    std::array<Id, 6>& extreme = extremes[part[k]];
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      Id& low = extreme[2 * axis];
+      Id& high = extreme[2 * axis + 1];
+      const double x = point(k)[axis];
+      low = x < point(low)[axis] || (x == point(low)[axis] && rank[k] < rank[low]) ? k : low;
+      high = x > point(high)[axis] || (x == point(high)[axis] && rank[k] < rank[high]) ? k : high;
+    }
+  }
+  return extremes;
+}
+}
+
 bool OrientNormals(const double* pts,
   Id count,
   const std::vector<int32_t>& table,
@@ -353,62 +539,6 @@ bool OrientNormals(const double* pts,
   std::vector<double>& normals,
   const std::function<bool(double)>& progress)
 {
-  // The symmetric graph, compressed rows.
-  std::vector<int64_t> start(static_cast<size_t>(count) + 1, 0);
-  for (Id i = 0; i < count; ++i)
-  {
-    for (int j = 0; j < others; ++j)
-    {
-      const int32_t w = table[static_cast<size_t>(i) * others + j];
-      if (w >= 0)
-      {
-        ++start[i + 1];
-        ++start[w + 1];
-      }
-    }
-  }
-  for (Id i = 0; i < count; ++i)
-  {
-    start[i + 1] += start[i];
-  }
-  std::vector<Id> adjacent(static_cast<size_t>(start[count]));
-  {
-    std::vector<int64_t> fill(start.begin(), start.end() - 1);
-    for (Id i = 0; i < count; ++i)
-    {
-      for (int j = 0; j < others; ++j)
-      {
-        const int32_t w = table[static_cast<size_t>(i) * others + j];
-        if (w >= 0)
-        {
-          adjacent[fill[i]++] = w;
-          adjacent[fill[w]++] = i;
-        }
-      }
-    }
-  }
-  // A pair of mutual neighbours is one edge: each row sorted, its repeats left out (end[i]).
-  std::vector<int64_t> end(static_cast<size_t>(count));
-  vtkSMPTools::For(0,
-    count,
-    [&](Id begin, Id last)
-    {
-      for (Id i = begin; i < last; ++i)
-      {
-        auto first = adjacent.begin() + start[i];
-        std::sort(first, adjacent.begin() + start[i + 1]);
-        end[i] = std::unique(first, adjacent.begin() + start[i + 1]) - adjacent.begin();
-      }
-    });
-  struct Step
-  {
-    float Cost;
-    Id From;
-    Id To;
-    bool operator>(const Step& other) const { return this->Cost > other.Cost; }
-  };
-  std::priority_queue<Step, std::vector<Step>, std::greater<Step>> steps;
-  std::vector<uint8_t> reached(static_cast<size_t>(count), 0);
   auto point = [&](Id k) { return &pts[3 * static_cast<size_t>(k)]; };
   auto normal = [&](Id k) { return &normals[3 * static_cast<size_t>(k)]; };
   auto flip = [&](Id k)
@@ -418,76 +548,67 @@ bool OrientNormals(const double* pts,
     n[1] = -n[1];
     n[2] = -n[2];
   };
-  // The cheapest step found so far to each point not reached (Prim's key: a step is only queued
-  // when it is cheaper than the point's queued ones).
-  std::vector<float> cheapest(static_cast<size_t>(count), std::numeric_limits<float>::infinity());
-  auto leave = [&](Id i)
-  {
-    for (int64_t a = start[i]; a < end[i]; ++a)
-    {
-      const Id w = adjacent[a];
-      if (!reached[w])
-      {
-        const double agreement = ReflectedAgreement(point(i), normal(i), point(w), normal(w));
-        const float cost =
-          static_cast<float>(1.0 - std::fabs(agreement) + variation[i] + variation[w]);
-        if (cost < cheapest[w])
-        {
-          cheapest[w] = cost;
-          steps.push({ cost, i, w });
-        }
-      }
-    }
-  };
-  std::vector<Id> part; // the points of the connected part being oriented
+  const SpanningForest forest =
+    MinimumSpanningForest(pts, count, table, others, variation, normals);
+  // The propagation from the smallest id of each tree, breadth first: a point takes the side
+  // that agrees with its parent's normal (final when it is reached).
+  std::vector<Id> part(static_cast<size_t>(count), -1); // tree of each point: its smallest id
+  std::vector<Id> queue;
+  queue.reserve(static_cast<size_t>(count));
   Id done = 0;
   for (Id seed = 0; seed < count; ++seed)
   {
-    if (reached[seed])
+    if (part[seed] >= 0)
     {
       continue;
     }
-    reached[seed] = 1;
-    part.assign(1, seed);
-    leave(seed);
-    while (!steps.empty())
+    part[seed] = seed;
+    queue.assign(1, seed);
+    for (size_t head = 0; head < queue.size(); ++head)
     {
-      const Step step = steps.top();
-      steps.pop();
-      if (reached[step.To])
+      const Id from = queue[head];
+      for (int64_t a = forest.Start[from]; a < forest.Start[from + 1]; ++a)
       {
-        continue;
-      }
-      reached[step.To] = 1;
-      part.push_back(step.To);
-      if (ReflectedAgreement(point(step.From), normal(step.From), point(step.To), normal(step.To)) <
-        0.0)
-      {
-        flip(step.To);
-      }
-      leave(step.To);
-      if ((++done & 0xffff) == 0 && progress && !progress(static_cast<double>(done) / count))
-      {
-        return false;
+        const Id to = forest.Adjacent[a].second;
+        if (part[to] >= 0)
+        {
+          continue;
+        }
+        part[to] = seed;
+        if (ReflectedAgreement(point(from), normal(from), point(to), normal(to)) < 0.0)
+        {
+          flip(to);
+        }
+        queue.push_back(to);
+        if ((++done & 0xffff) == 0 && progress && !progress(static_cast<double>(done) / count))
+        {
+          return false;
+        }
       }
     }
-    double vote = 0.0;
-    for (int axis = 0; axis < 3; ++axis)
+  }
+  // Each tree turned outwards by a vote of its extreme points: flipped when the sum of n . d at
+  // the extreme points along d = +-x, +-y, +-z is negative.
+  const std::vector<std::array<Id, 6>> extremes = ExtremePoints(pts, count, forest, part);
+  std::vector<uint8_t> turned(static_cast<size_t>(count), 0);
+  for (Id k = 0; k < count; ++k)
+  {
+    if (part[k] == k)
     {
-      Id low = part[0], high = part[0];
-      for (Id k : part)
+      const std::array<Id, 6>& extreme = extremes[k];
+      double vote = 0.0;
+      for (int axis = 0; axis < 3; ++axis)
       {
-        low = point(k)[axis] < point(low)[axis] ? k : low;
-        high = point(k)[axis] > point(high)[axis] ? k : high;
+        vote += normal(extreme[2 * axis + 1])[axis] - normal(extreme[2 * axis])[axis];
       }
-      vote += normal(high)[axis] - normal(low)[axis];
+      turned[k] = vote < 0.0 ? 1 : 0;
     }
-    if (vote < 0.0)
+  }
+  for (Id k = 0; k < count; ++k)
+  {
+    if (turned[part[k]])
     {
-      for (Id k : part)
-      {
-        flip(k);
-      }
+      flip(k);
     }
   }
   return true;

@@ -67,8 +67,10 @@ void EstimatePlaneNormals(const double* xyz,
   std::vector<double>& variation);
 
 /// Consistent orientation of the unit normals `normals` (each kept or flipped): Hoppe et al.'s
-/// propagation along a minimum spanning tree (Prim) of the symmetric graph joining each point to
-/// its `k` nearest points (`neighbors`), the most certain edges first. Two points p, q with
+/// propagation along a minimum spanning tree of the symmetric graph joining each point to its `k`
+/// nearest points (`neighbors`), the most certain edges first (Kruskal's algorithm on the edges
+/// radix-sorted by cost, then the tree walked from its smallest id; the tree and the orientation
+/// are those of Prim's propagation). Two points p, q with
 /// normals n, m agree by the sign of (R n) . m, R the reflection through the plane bisecting p q
 /// (the normal carried along a circle through both; cf. Koenig and Gumhold, "Consistent
 /// propagation of normal orientations in point clouds", 2009): n . m with the chord in the

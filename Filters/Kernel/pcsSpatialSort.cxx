@@ -88,16 +88,17 @@ uint64_t HilbertKey(const uint32_t* input)
   }
   return key;
 }
+} // namespace
 
-using KeyedPoint = std::pair<uint64_t, int32_t>;
-
-// Sorts by key, then id: the order std::sort gives the pairs. Large ranges use a
-// least-significant-digit radix sort on the key bits in use (16-bit digits: three linear passes
-// for 48-bit keys, where a comparison sort needs about 20 passes' worth of comparisons); it is
-// stable, so a final scan only has to order the rare runs of equal keys (points in one grid
-// cell) by id.
-void SortKeys(std::vector<KeyedPoint>::iterator first, std::vector<KeyedPoint>::iterator last,
-  int keyBits, std::vector<KeyedPoint>& scratch)
+// Large ranges: a least-significant-digit radix sort on the key bits in use (16-bit digits:
+// three linear passes for 48-bit keys, where a comparison sort needs about 20 passes' worth of
+// comparisons); it is stable, so a final scan only has to order the rare runs of equal keys
+// (points in one grid cell) by id.
+void SortKeys(std::vector<KeyedId>::iterator first,
+  std::vector<KeyedId>::iterator last,
+  int keyBits,
+  std::vector<KeyedId>& scratch,
+  int digitBits)
 {
   const size_t n = static_cast<size_t>(last - first);
   if (n < 2048)
@@ -106,24 +107,26 @@ void SortKeys(std::vector<KeyedPoint>::iterator first, std::vector<KeyedPoint>::
     return;
   }
   scratch.resize(n);
-  KeyedPoint* source = &*first;
-  KeyedPoint* target = scratch.data();
-  std::vector<size_t> count(65536 + 1);
+  KeyedId* source = &*first;
+  KeyedId* target = scratch.data();
+  const size_t digits = size_t(1) << digitBits;
+  const uint64_t mask = digits - 1;
+  std::vector<size_t> count(digits + 1);
   int passes = 0;
-  for (int shift = 0; shift < keyBits; shift += 16, ++passes)
+  for (int shift = 0; shift < keyBits; shift += digitBits, ++passes)
   {
     std::fill(count.begin(), count.end(), 0);
     for (size_t i = 0; i < n; ++i)
     {
-      ++count[((source[i].first >> shift) & 0xffff) + 1];
+      ++count[((source[i].first >> shift) & mask) + 1];
     }
-    for (size_t d = 0; d < 65536; ++d)
+    for (size_t d = 0; d < digits; ++d)
     {
       count[d + 1] += count[d];
     }
     for (size_t i = 0; i < n; ++i)
     {
-      target[count[(source[i].first >> shift) & 0xffff]++] = source[i];
+      target[count[(source[i].first >> shift) & mask]++] = source[i];
     }
     std::swap(source, target);
   }
@@ -147,9 +150,14 @@ void SortKeys(std::vector<KeyedPoint>::iterator first, std::vector<KeyedPoint>::
   }
 }
 
+namespace
+{
 // Keys of the points `begin..end` (in that order) over their own bounding box.
-void ComputeKeys(const double* coords, int dim, const int32_t* begin, const int32_t* end,
-  std::vector<KeyedPoint>& keyed)
+void ComputeKeys(const double* coords,
+  int dim,
+  const int32_t* begin,
+  const int32_t* end,
+  std::vector<KeyedId>& keyed)
 {
   double lo[3] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
     std::numeric_limits<double>::max() };
@@ -200,7 +208,7 @@ void HilbertSort(const double* coords, int dim, int32_t* begin, int32_t* end)
   }
   std::vector<std::pair<uint64_t, int32_t>> keyed;
   ComputeKeys(coords, dim, begin, end, keyed);
-  std::vector<KeyedPoint> scratch;
+  std::vector<KeyedId> scratch;
   SortKeys(keyed.begin(), keyed.end(), dim * BitsPerAxis, scratch);
   for (const auto& k : keyed)
   {
@@ -223,7 +231,7 @@ void BRIOHilbertOrder(const double* coords, int dim, std::vector<int32_t>& ids, 
 
   std::mt19937_64 rng(seed);
   std::shuffle(keyed.begin(), keyed.end(), rng);
-  std::vector<KeyedPoint> scratch;
+  std::vector<KeyedId> scratch;
 
   // Rounds: [0, n0) [n0, n1) ... [n_k, n), each holding 7/8 of the points up to its end.
   const int64_t minimum = std::max<int64_t>(minimumRoundSize, 1);

@@ -10,6 +10,7 @@
 #define pcsSpatialSort_h
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace pcs
@@ -18,6 +19,20 @@ namespace pcs
 /// into a BRIO order with Hilbert-sorted rounds. Deterministic for a given seed.
 void BRIOHilbertOrder(const double* coords, int dim, std::vector<int32_t>& ids,
   unsigned int seed = 42, int32_t minimumRoundSize = 1000);
+
+/// A key and the id it belongs to.
+using KeyedId = std::pair<uint64_t, int32_t>;
+
+/// Sorts `first..last` by key, then id (the order std::sort gives the pairs), only the
+/// `keyBits` low bits of the keys being in use: a least-significant-digit radix sort (one
+/// linear pass per digit of `digitBits` bits, 1 to 16: 16 for millions of keys, fewer for tens
+/// of thousands, whose passes would otherwise be spent on the 2^16 counters) for large ranges,
+/// std::sort below 2048 pairs. `scratch`: reused buffer.
+void SortKeys(std::vector<KeyedId>::iterator first,
+  std::vector<KeyedId>::iterator last,
+  int keyBits,
+  std::vector<KeyedId>& scratch,
+  int digitBits = 16);
 
 /// Sort `ids` along a Hilbert curve through the bounding box of the referenced points.
 void HilbertSort(const double* coords, int dim, int32_t* begin, int32_t* end);

@@ -122,29 +122,267 @@ vtkSmartPointer<vtkStaticPointLocator> SurfaceSampleLocator(const double* xyz, i
   locator->BuildLocator();
   return locator;
 }
+
+// The distance between the points a and b of x (packed x, y, z).
+double PointDistance(const double* x, int32_t a, int32_t b)
+{
+  const double* p = &x[3 * static_cast<size_t>(a)];
+  const double* q = &x[3 * static_cast<size_t>(b)];
+  return std::sqrt(
+    (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
 }
 
-int64_t FlagOutliers(const double* x, int32_t n, const std::vector<int32_t>& knn, int width,
-  double factor, std::vector<uint8_t>& far)
+// The diagonal of a bounding box (xmin, xmax, ymin, ymax, zmin, zmax).
+double BoxDiagonal(const double* box)
 {
-  far.assign(static_cast<size_t>(std::max(n, 0)), 0);
-  const int k = OutlierNeighbors;
-  if (!(factor > 0.0) || n < 4 * k || width < k)
+  return std::sqrt((box[1] - box[0]) * (box[1] - box[0]) + (box[3] - box[2]) * (box[3] - box[2]) +
+    (box[5] - box[4]) * (box[5] - box[4]));
+}
+
+// Whether the table can show a pile (NearCoincidentGroups), by three conditions of which every
+// pile meets one (with d1 and dk a point's distances to the first and k-th point of its row):
+// a pile of at most k points, or one a member's row leaves, has a member with d1 under
+// OutlierPileRatio x dk (its row reaches a point outside, beyond the pile's diagonal / ratio);
+// a larger pile that only rows of outside points reach has a member m in the row of an outside
+// point r with dk(m) under OutlierPileRatio x dk(r); a pile no row reaches or leaves has dk
+// under OutlierPileRatio x the cloud's diagonal. O(n k) lookups; on clean samples none holds.
+bool MayHoldPiles(const double* x,
+  int32_t n,
+  const std::vector<int32_t>& knn,
+  int width,
+  int k,
+  double cloudDiagonal)
+{
+  std::vector<double> farthest(n);
+  std::vector<uint8_t> found(n, 0);
+  vtkSMPTools::For(0,
+    n,
+    [&](int32_t begin, int32_t end)
+    {
+      for (int32_t i = begin; i < end; ++i)
+      {
+        const int32_t* row = &knn[static_cast<size_t>(i) * width];
+        if (row[0] < 0 || row[k - 1] < 0)
+        {
+          farthest[i] = std::numeric_limits<double>::infinity(); // (an incomplete row)
+          continue;
+        }
+        farthest[i] = PointDistance(x, i, row[k - 1]);
+        found[i] = PointDistance(x, i, row[0]) < OutlierPileRatio * farthest[i] ||
+          farthest[i] < OutlierPileRatio * cloudDiagonal;
+      }
+    });
+  vtkSMPTools::For(0,
+    n,
+    [&](int32_t begin, int32_t end)
+    {
+      for (int32_t i = begin; i < end; ++i)
+      {
+        const int32_t* row = &knn[static_cast<size_t>(i) * width];
+        for (int j = 0; j < k && !found[i]; ++j)
+        {
+          found[i] = row[j] >= 0 && farthest[row[j]] < OutlierPileRatio * farthest[i];
+        }
+      }
+    });
+  return std::find(found.begin(), found.end(), 1) != found.end();
+}
+
+// Piles: groups of near-coincident points, each to count as one position (OutlierPileRatio).
+// Single linkage over the graph of the k nearest neighbours (the first k entries of each row of
+// `knn`), its edges taken shortest first: when an edge first leaves a group of two or more points
+// (its shortest edge to the rest), the group is a pile if the diagonal of its bounding box is
+// under OutlierPileRatio times that edge. A group no edge leaves (a separate part of the graph)
+// is a pile if no other point lies within its diagonal x (1 + 1 / OutlierPileRatio) of one of its
+// points. A point belongs to the largest pile that holds it. `groupOf` gets each point's group,
+// numbered in the order of their first points; returns the number of groups (n: no pile, and
+// `groupOf` is left empty). Cost: MayHoldPiles, and only when it holds, the edges gathered and
+// sorted, and a radius query per separate part of the graph whose diagonal is under
+// OutlierPileRatio times the cloud's.
+int32_t NearCoincidentGroups(const double* x,
+  int32_t n,
+  const std::vector<int32_t>& knn,
+  int width,
+  int k,
+  std::vector<int32_t>& groupOf)
+{
+  struct Edge
   {
-    return 0;
+    double Length;
+    int32_t A, B;
+  };
+  auto inRow = [&](int32_t row, int32_t id)
+  {
+    const int32_t* r = &knn[static_cast<size_t>(row) * width];
+    return std::find(r, r + k, id) != r + k;
+  };
+  double cloudBox[6];
+  {
+    vtkNew<vtkDoubleArray> coordinates;
+    coordinates->SetNumberOfComponents(3);
+    coordinates->SetArray(const_cast<double*>(x), 3 * static_cast<vtkIdType>(n), 1);
+    coordinates->GetRange(cloudBox, 0);
+    coordinates->GetRange(cloudBox + 2, 1);
+    coordinates->GetRange(cloudBox + 4, 2);
   }
+  const double cloudDiagonal = BoxDiagonal(cloudBox);
+  if (!MayHoldPiles(x, n, knn, width, k, cloudDiagonal))
+  {
+    groupOf.clear();
+    return n;
+  }
+  std::vector<Edge> edges;
+  edges.reserve(static_cast<size_t>(n) * k);
+  double shortest = std::numeric_limits<double>::infinity(), longest = 0.0;
+  for (int32_t i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < k; ++j)
+    {
+      const int32_t q = knn[static_cast<size_t>(i) * width + j];
+      if (q < 0 || q == i || (q < i && inRow(q, i)))
+      {
+        continue; // (an edge in both rows is taken once, from the row of its smaller end)
+      }
+      edges.push_back({ PointDistance(x, i, q), std::min(i, q), std::max(i, q) });
+      shortest = std::min(shortest, edges.back().Length);
+      longest = std::max(longest, edges.back().Length);
+    }
+  }
+  // A group an edge leaves has a diagonal of at least the shortest edge (two of its points are
+  // joined by one) and is left by an edge no longer than the longest: unless the shortest edge is
+  // under OutlierPileRatio x the longest no such group is a pile, and the order does not matter
+  // (only separate parts of the graph can be piles).
+  if (shortest < OutlierPileRatio * longest)
+  {
+    vtkSMPTools::Sort(edges.begin(),
+      edges.end(),
+      [](const Edge& a, const Edge& b)
+      {
+        return a.Length < b.Length ||
+          (a.Length == b.Length && (a.A < b.A || (a.A == b.A && a.B < b.B)));
+      });
+  }
+  // The merge tree: points 0..n-1, then one node per merge; `root` is the union-find over the
+  // points, `top` the tree node of each union-find root.
+  std::vector<int32_t> root(n), top(n), parent(n, -1);
+  std::iota(root.begin(), root.end(), 0);
+  std::iota(top.begin(), top.end(), 0);
+  std::vector<double> box(6 * static_cast<size_t>(n));
+  std::vector<int32_t> size(n, 1);
+  for (int32_t i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      box[6 * i + 2 * c] = box[6 * i + 2 * c + 1] = x[3 * static_cast<size_t>(i) + c];
+    }
+  }
+  auto findRoot = [&](int32_t i)
+  {
+    while (root[i] != i)
+    {
+      i = root[i] = root[root[i]];
+    }
+    return i;
+  };
+  auto diagonal = [&](int32_t r) { return BoxDiagonal(&box[6 * static_cast<size_t>(r)]); };
+  std::vector<uint8_t> pile(n, 0); // by tree node
+  for (const Edge& e : edges)
+  {
+    int32_t a = findRoot(e.A), b = findRoot(e.B);
+    if (a == b)
+    {
+      continue;
+    }
+    for (const int32_t r : { a, b })
+    {
+      pile[top[r]] = pile[top[r]] || (size[r] > 1 && diagonal(r) < OutlierPileRatio * e.Length);
+    }
+    if (size[a] < size[b])
+    {
+      std::swap(a, b);
+    }
+    root[b] = a;
+    size[a] += size[b];
+    for (int c = 0; c < 3; ++c)
+    {
+      box[6 * a + 2 * c] = std::min(box[6 * a + 2 * c], box[6 * b + 2 * c]);
+      box[6 * a + 2 * c + 1] = std::max(box[6 * a + 2 * c + 1], box[6 * b + 2 * c + 1]);
+    }
+    const int32_t node = static_cast<int32_t>(parent.size());
+    parent[top[a]] = parent[top[b]] = node;
+    parent.push_back(-1);
+    pile.push_back(0);
+    top[a] = node;
+  }
+  // Separate parts of the graph: their distance to the rest, by a radius query.
+  std::vector<int32_t> partRoots;
+  for (int32_t i = 0; i < n; ++i)
+  {
+    if (findRoot(i) == i)
+    {
+      partRoots.push_back(i);
+    }
+  }
+  if (partRoots.size() > 1)
+  {
+    vtkSmartPointer<vtkStaticPointLocator> locator = SurfaceSampleLocator(x, n);
+    vtkNew<vtkIdList> inside;
+    for (const int32_t r : partRoots)
+    {
+      const double d = diagonal(r);
+      if (size[r] > 1 && d < OutlierPileRatio * cloudDiagonal)
+      {
+        locator->FindPointsWithinRadius(
+          d * (1.0 + 1.0 / OutlierPileRatio), &x[3 * static_cast<size_t>(r)], inside);
+        pile[top[r]] = pile[top[r]] || inside->GetNumberOfIds() == size[r];
+      }
+    }
+  }
+  // Each point's largest pile (a node's parent is made after it: top-down from the last node).
+  std::vector<int32_t> pileOf(parent.size(), -1);
+  for (size_t node = parent.size(); node-- > 0;)
+  {
+    const int32_t up = parent[node] >= 0 ? pileOf[parent[node]] : -1;
+    pileOf[node] = up >= 0 ? up : (pile[node] ? static_cast<int32_t>(node) : -1);
+  }
+  groupOf.assign(n, -1);
+  std::vector<int32_t> groupOfPile(parent.size(), -1);
+  int32_t groups = 0;
+  for (int32_t i = 0; i < n; ++i)
+  {
+    if (pileOf[i] < 0)
+    {
+      groupOf[i] = groups++;
+    }
+    else
+    {
+      int32_t& g = groupOfPile[pileOf[i]];
+      g = g >= 0 ? g : groups++;
+      groupOf[i] = g;
+    }
+  }
+  return groups;
+}
+
+// The rule of FlagOutliers on points without piles.
+int64_t FlagOutliersOfPositions(const double* x,
+  int32_t n,
+  const std::vector<int32_t>& knn,
+  int width,
+  double factor,
+  std::vector<uint8_t>& far)
+{
+  far.assign(n, 0);
+  const int k = OutlierNeighbors;
   // Reach: mean distance to the k nearest distinct points.
   std::vector<double> reach(n);
   vtkSMPTools::For(0, n, [&](int32_t begin, int32_t end) {
     for (int32_t i = begin; i < end; ++i)
     {
-      const double* p = &x[3 * static_cast<size_t>(i)];
       double sum = 0.0;
       for (int j = 0; j < k; ++j)
       {
-        const double* q = &x[3 * static_cast<size_t>(knn[static_cast<size_t>(i) * width + j])];
-        sum += std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-          (p[2] - q[2]) * (p[2] - q[2]));
+        sum += PointDistance(x, i, knn[static_cast<size_t>(i) * width + j]);
       }
       reach[i] = sum / k;
     }
@@ -231,6 +469,53 @@ int64_t FlagOutliers(const double* x, int32_t n, const std::vector<int32_t>& knn
   int64_t count = 0;
   for (int32_t i = 0; i < n; ++i)
   {
+    count += far[i];
+  }
+  return count;
+}
+}
+
+int64_t FlagOutliers(const double* x,
+  int32_t n,
+  const std::vector<int32_t>& knn,
+  int width,
+  double factor,
+  std::vector<uint8_t>& far)
+{
+  far.assign(static_cast<size_t>(std::max(n, 0)), 0);
+  const int k = OutlierNeighbors;
+  if (!(factor > 0.0) || n < 4 * k || width < k)
+  {
+    return 0;
+  }
+  std::vector<int32_t> groupOf;
+  const int32_t groups = NearCoincidentGroups(x, n, knn, width, k, groupOf);
+  if (groups == n)
+  {
+    return FlagOutliersOfPositions(x, n, knn, width, factor, far);
+  }
+  // Each pile as one position (its first point), with the table made again over the positions.
+  if (groups < 4 * k)
+  {
+    return 0;
+  }
+  std::vector<double> positions(3 * static_cast<size_t>(groups));
+  for (int32_t i = n; i-- > 0;)
+  {
+    std::copy_n(&x[3 * static_cast<size_t>(i)], 3, &positions[3 * static_cast<size_t>(groupOf[i])]);
+  }
+  std::vector<int32_t> positionKnn;
+  std::vector<uint8_t> farPosition;
+  if (!FindNearestNeighbors(
+        SurfaceSampleLocator(positions.data(), groups), positions.data(), groups, k, positionKnn) ||
+    FlagOutliersOfPositions(positions.data(), groups, positionKnn, k, factor, farPosition) == 0)
+  {
+    return 0;
+  }
+  int64_t count = 0;
+  for (int32_t i = 0; i < n; ++i)
+  {
+    far[i] = farPosition[groupOf[i]];
     count += far[i];
   }
   return count;

@@ -12,7 +12,10 @@
 // - clean clouds flag nothing: a torus sampled 25 times more densely on one side, and a sphere
 //   with Gaussian noise of 0.4 mean spacings per coordinate;
 // - a sparse part of a surface next to a dense patch holding most of the points is not flagged
-//   (the flat-sample exemption of pcs::FindOutliers).
+//   (the flat-sample exemption of pcs::FindOutliers);
+// - piles of near-coincident points that outnumber the surface count once each
+//   (pcs::OutlierPileRatio): 1,000 sphere points plus 4 piles of 600 distinct points within 3e-9
+//   of 4 of them flag nothing; a fifth pile of 600 far from the sphere is flagged whole.
 #include "vtkGreedySurfaceTriangulation.h"
 #include "vtkLocalOptimumGrowth.h"
 #include "vtkPerimeterPeelSurface.h"
@@ -211,6 +214,51 @@ bool CheckDensePatch()
   }
   return true;
 }
+
+// Piles of near-coincident points count once each: 1,000 random points of the unit sphere and
+// 4 piles of 600 distinct points within 3e-9 of the sphere points 0, 250, 500 and 750 (most of
+// the cloud): every point lies on the sampled sphere, so none is an outlier (before, the median
+// reach was a pile's and 80 sphere points were flagged). With a fifth pile of 600 points within
+// 1e-9 of (3, 0, 0), two radii off the sphere, exactly those 600 are outliers (before, none:
+// each pile point's reach was tiny).
+bool CheckPiles()
+{
+  std::vector<double> xyz = SpherePoints(1000, 10);
+  for (int i = 0; i < 2400; ++i)
+  {
+    const double* center = &xyz[3 * 250 * (i % 4)];
+    const double step = 1e-12 * (i + 1);
+    const double p[3] = { center[0] + step, center[1] + 2 * step, center[2] + 3 * step };
+    xyz.insert(xyz.end(), p, p + 3);
+  }
+  std::vector<double> withFarPile = xyz;
+  for (int i = 0; i < 600; ++i)
+  {
+    const double step = 1e-12 * (i + 1);
+    const double p[3] = { 3.0 + step, -step, 2 * step };
+    withFarPile.insert(withFarPile.end(), p, p + 3);
+  }
+  vtkNew<vtkPerimeterPeelSurface> peel;
+  vtkNew<vtkLocalOptimumGrowth> growth;
+  vtkNew<vtkGreedySurfaceTriangulation> greedy;
+  for (vtkPolyDataAlgorithm* filter : { static_cast<vtkPolyDataAlgorithm*>(peel),
+         static_cast<vtkPolyDataAlgorithm*>(growth),
+         static_cast<vtkPolyDataAlgorithm*>(greedy) })
+  {
+    const std::string name = filter->GetClassName();
+    const vtkIdType onSphere = FieldCount(Run(filter, xyz), "NumberOfOutliers");
+    PCS_CHECK(onSphere == 0, name << ", piles on the sphere: " << onSphere << " outliers");
+    auto mesh = Run(filter, withFarPile);
+    const vtkIdType far = FieldCount(mesh, "NumberOfOutliers");
+    PCS_CHECK(far == 600, name << ", a far pile: " << far << " outliers, 600 added");
+    vtkDataArray* used = mesh->GetPointData()->GetArray("Used");
+    for (vtkIdType i = 3400; i < 4000; ++i)
+    {
+      PCS_CHECK(used->GetTuple1(i) == 0, name << ", a far pile: point " << i << " used");
+    }
+  }
+  return true;
+}
 } // namespace
 
 int TestOutliers(int, char*[])
@@ -221,5 +269,6 @@ int TestOutliers(int, char*[])
   ok = CheckFewNeighbors() && ok;
   ok = CheckCleanClouds() && ok;
   ok = CheckDensePatch() && ok;
+  ok = CheckPiles() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -320,6 +320,58 @@ void FindPointsWithinRadius(const pcs::PointBins& bins,
     });
 }
 
+// Near copies: points closer than NearCopyFraction times the spacing that a surface sample of
+// the same number of points would have over the cloud's extent (its bounding-box diagonal over
+// the square root of the number of points) are copies of one sample point, like exact
+// duplicates. A pile of near-coincident points (a scanner's repeated returns, points merged from
+// overlapping scans) is a blob at a scale the sampling cannot resolve: its PCA normals are
+// random, a triangle of its points has 1e-12 of a sample triangle's area, and a front inside it
+// examines the whole pile for every edge (a cloud of piles of 1,000 points took more than 100
+// times the clean surface's time; Benchmarks/results/cdt.md).
+constexpr double NearCopyFraction = 1e-6;
+
+// Links each group of copies (`firstCopy`, pcs::FindExactDuplicates' groups) to the group of
+// smallest first copy within `distance` of its first copy, if smaller: the groups linked so are
+// one (their point of smallest id first). Each link is shorter than `distance` (a chain of links
+// is as long as its number of links). Does not depend on the number of threads nor on the grid.
+void LinkNearCopies(const pcs::PointBins& bins,
+  const double* xyz,
+  Id n,
+  double distance,
+  std::vector<Id>& firstCopy)
+{
+  if (!(distance > 0.0))
+  {
+    return;
+  }
+  std::vector<Id> link(static_cast<size_t>(n));
+  vtkSMPTools::For(0,
+    n,
+    [&](Id begin, Id end)
+    {
+      for (Id k = begin; k < end; ++k)
+      {
+        Id smallest = firstCopy[k];
+        if (smallest == k)
+        {
+          bins.ForEachPointWithinRadius(distance,
+            xyz + 3 * static_cast<size_t>(k),
+            [&](Id j, double)
+            {
+              smallest = std::min(smallest, firstCopy[j]);
+              return true;
+            });
+        }
+        link[k] = smallest;
+      }
+    });
+  for (Id k = 0; k < n; ++k) // (firstCopy[k] <= k and link[k] <= k: the smaller ids are final)
+  {
+    const Id first = firstCopy[k];
+    firstCopy[k] = first != k ? firstCopy[first] : (link[k] == k ? k : firstCopy[link[k]]);
+  }
+}
+
 //------------------------------------------------------------------------------------------------
 // Where to look for the mesh edges that may cross a new triangle (rule II.D.2). An edge u w of
 // length L passing within `reach` of a point x has its end point nearer to its closest point f to
@@ -2305,10 +2357,19 @@ int vtkCDTAdvancingFront::RequestData(
     return finish();
   }
 
-  // Groups of exactly equal points (pcs::FindExactDuplicates; firstCopy[k]: the copy of smallest
-  // id at point k's position): for the estimated normals and the duplicates below.
+  // Groups of copies of a point (firstCopy[k]: the copy of smallest id of point k's group): for
+  // the estimated normals and the duplicates below. Exactly equal points
+  // (pcs::FindExactDuplicates), and near copies (LinkNearCopies).
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
   std::vector<Id> firstCopy;
   pcs::FindExactDuplicates(xyz.data(), 3, nullptr, local, firstCopy);
+  LinkNearCopies(bins,
+    xyz.data(),
+    local,
+    NearCopyFraction * diagonal / std::sqrt(static_cast<double>(local)),
+    firstCopy);
 
   // Normals: the input's, else estimated (vtkPCANormalEstimation, consistently oriented). Input
   // normals that are zero-length or not finite count as missing: those are estimated too.
@@ -2528,8 +2589,8 @@ int vtkCDTAdvancingFront::RequestData(
                                   "when estimated: too few distinct neighbours).");
   }
 
-  // Exact duplicates (firstCopy): in each group of equal points the usable point of smallest id
-  // is kept. Then the mean spacing: the mean distance from a point to its nearest distinct point.
+  // Duplicates (firstCopy): in each group of copies the usable point of smallest id is kept. Then
+  // the mean spacing: the mean distance from a point to its nearest point that is not a copy.
   {
     std::vector<Id> kept(local, None); // per group (indexed by its first copy): the kept point
     for (Id k = 0; k < local; ++k)
@@ -2555,7 +2616,10 @@ int vtkCDTAdvancingFront::RequestData(
   if (this->NumberOfDuplicatePoints > 0)
   {
     vtkWarningMacro("Ignored " << this->NumberOfDuplicatePoints
-                               << " exact duplicate point(s) (the copy of smallest id is meshed).");
+                               << " duplicate point(s): exact copies, or near copies (closer than "
+                               << NearCopyFraction
+                               << " times the spacing of a surface sample of "
+                                  "that many points); the copy of smallest id is meshed.");
   }
   // The table of nearest neighbours for the local spacing (the automatic NeighborhoodRadius and
   // MaximumRayDistance) and the noise band: LocalSpacingNeighbors per point (that of the normal
@@ -2596,13 +2660,10 @@ int vtkCDTAdvancingFront::RequestData(
   }
   std::vector<double> nearest(local, -1.0);
   {
-    // The smallest non-zero distance to another point: from the table of nearest neighbours
-    // (nearest first) when one of them is distinct, else among the points within a radius, the
-    // radius doubled from the width of a bin until one is found or the ball holds the whole
+    // The smallest distance to a point that is not a copy (firstCopy): from the table of nearest
+    // neighbours (nearest first) when one of them is not, else among the points within a radius,
+    // the radius doubled from the width of a bin until one is found or the ball holds the whole
     // cloud.
-    const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-      (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
-      (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
     const double widest =
       std::max({ bins.GetBucketWidth(0), bins.GetBucketWidth(1), bins.GetBucketWidth(2) });
     const double first = widest > 0.0 ? widest : diagonal;
@@ -2620,16 +2681,17 @@ int vtkCDTAdvancingFront::RequestData(
           for (int j = 0; j < knnOthers; ++j)
           {
             const Id w = knn[static_cast<size_t>(k) * knnOthers + j];
+            const bool other = w >= 0 && firstCopy[w] != firstCopy[k]; // (not a copy of k)
             const double d2 =
-              w >= 0 ? Distance2(&xyz[3 * static_cast<size_t>(w)], &xyz[3 * k]) : 0.0;
-            if (d2 > 0.0 && !stretch.empty())
+              other ? Distance2(&xyz[3 * static_cast<size_t>(w)], &xyz[3 * k]) : 0.0;
+            if (other && !stretch.empty())
             {
               // Scan lines: the nearest in the sampling's metric, about the spacing across
               // the lines.
               const double stretched = std::sqrt(StretchedDistance2(stretch, xyz.data(), k, w));
               nearest[k] = nearest[k] < 0.0 ? stretched : std::min(nearest[k], stretched);
             }
-            else if (d2 > 0.0)
+            else if (other)
             {
               nearest[k] = std::sqrt(d2);
               break;
@@ -2642,7 +2704,7 @@ int vtkCDTAdvancingFront::RequestData(
             for (Id j : ball)
             {
               const double d2 = Distance2(&xyz[3 * static_cast<size_t>(j)], &xyz[3 * k]);
-              if (d2 > 0.0 && (best < 0.0 || d2 < best))
+              if (firstCopy[j] != firstCopy[k] && (best < 0.0 || d2 < best))
               {
                 best = d2;
               }

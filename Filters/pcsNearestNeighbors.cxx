@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <numeric>
 #include <utility>
@@ -43,14 +44,6 @@ bool SpreadsAlongCurve(const double* xyz,
   {
     return false;
   }
-  double reach2 = 0.0;
-  for (int j = 0; j < k; ++j)
-  {
-    if (row[j] >= 0)
-    {
-      reach2 = std::max(reach2, Distance2(p, xyz + 3 * static_cast<size_t>(row[j])));
-    }
-  }
   // The covariance of the offsets from p to its nearest half (pcs::OffsetCovariance).
   const int nearest = std::max(2, k / 2);
   double covariance[3][3];
@@ -58,7 +51,6 @@ bool SpreadsAlongCurve(const double* xyz,
   {
     return false;
   }
-  reach = std::sqrt(reach2);
   // trace^2 - |C|_F^2 = 2 (l1 l2 + l1 l3 + l2 l3): no eigenvalue needed for the test.
   const double trace = covariance[0][0] + covariance[1][1] + covariance[2][2];
   double frobenius2 = 0.0;
@@ -91,6 +83,15 @@ bool SpreadsAlongCurve(const double* xyz,
       }
     }
   }
+  double reach2 = 0.0; // (the distances only for the points that pass: most do not)
+  for (int j = 0; j < k; ++j)
+  {
+    if (row[j] >= 0)
+    {
+      reach2 = std::max(reach2, Distance2(p, xyz + 3 * static_cast<size_t>(row[j])));
+    }
+  }
+  reach = std::sqrt(reach2);
   return reach > 0.0;
 }
 }
@@ -635,7 +636,24 @@ int32_t AddOffLineNeighborsIn(const std::function<const PointBins&()>& fileBins,
           {
             continue;
           }
-          std::sort(offLine.begin(), offLine.end());
+          // The nearest off-line point first, then the perSide - 1 nearest others on its side
+          // and the perSide nearest on the other side (what the first of each side in the
+          // order of distance, then id, are; the rest need no order).
+          std::iter_swap(offLine.begin(), std::min_element(offLine.begin(), offLine.end()));
+          const auto otherSide = std::partition(offLine.begin() + 1,
+            offLine.end(),
+            [&](const Candidate& candidate)
+            { return vtkMath::Dot(candidate.Across, offLine[0].Across) >= 0.0; });
+          auto nearestOf = [](std::vector<Candidate>::iterator first,
+                             std::vector<Candidate>::iterator last,
+                             int count)
+          {
+            const auto middle = first + std::min<std::ptrdiff_t>(count, last - first);
+            std::partial_sort(first, middle, last);
+            return middle;
+          };
+          const auto sameSideEnd = nearestOf(offLine.begin() + 1, otherSide, perSide - 1);
+          const auto otherSideEnd = nearestOf(otherSide, offLine.end(), perSide);
           const double nearest =
             table[0] >= 0 ? Distance2(p, xyz + 3 * static_cast<size_t>(table[0])) : 0.0;
           if (stretch && nearest > 0.0 && offLine[0].Distance2 > nearest)
@@ -648,29 +666,17 @@ int32_t AddOffLineNeighborsIn(const std::function<const PointBins&()>& fileBins,
           }
           // The nearest off-line points of each side (the side of the nearest one, the other).
           wanted.clear();
-          int taken[2] = { 0, 0 };
-          for (const Candidate& candidate : offLine)
+          row.clear();
+          for (auto range : { std::make_pair(offLine.begin(), sameSideEnd),
+                 std::make_pair(otherSide, otherSideEnd) })
           {
-            const int side = vtkMath::Dot(candidate.Across, offLine[0].Across) >= 0.0 ? 0 : 1;
-            if (taken[side] < perSide)
+            for (auto candidate = range.first; candidate != range.second; ++candidate)
             {
-              ++taken[side];
-              wanted.push_back(candidate.Id);
-            }
-            if (taken[0] == perSide && taken[1] == perSide)
-            {
-              break;
+              wanted.push_back(candidate->Id);
+              row.push_back(*candidate);
             }
           }
           // The row: the wanted points and the nearest of the others, k in all, nearest first.
-          row.clear();
-          for (const Candidate& candidate : offLine)
-          {
-            if (std::find(wanted.begin(), wanted.end(), candidate.Id) != wanted.end())
-            {
-              row.push_back(candidate);
-            }
-          }
           const size_t others = static_cast<size_t>(k) - row.size();
           size_t kept = 0;
           for (int j = 0; j < k && kept < others; ++j)

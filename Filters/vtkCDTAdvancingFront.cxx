@@ -1787,7 +1787,9 @@ bool Front::Seed(Id p, const Parameters& parameters)
 // fill on 33 of the cow's 37 loops): a smaller bound left most holes open, and removing every
 // steep triangle to fill the larger loop did not help (Benchmarks/results/cdt.md, "Holes left
 // with estimated normals"). Removing only the triangles folded over the hole (facing against its
-// fill) when no fill closes the loop does: CloseAfterPeel.
+// fill) when no fill closes the loop does: CloseAfterPeel; and, when that does not close it, all
+// the triangles across the loop's edges (a crack between the fans on either side of a dense row
+// of points, whose own points are nearly collinear: cdt.md, "Cracks along dense rows").
 class LoopCloser
 {
 public:
@@ -1862,40 +1864,47 @@ private:
 
   // A loop that no fill closes below MaximumDihedral: where the front folded triangles over a
   // small hole (wrong normals), the fill of the loop would fold onto them. The folded triangles
-  // across its edges are removed (PeelFolded) and the larger loop they leave is filled; this is
+  // across its edges are removed (PeelAcross) and the larger loop they leave is filled; this is
   // kept only when it closes the loop's edges exactly (no more boundary than before), otherwise
-  // the mesh is put back as it was.
+  // the mesh is put back as it was. Then the same with every triangle across the loop's edges:
+  // a loop along a dense row of points (a scan line, a ring of a vertex set) whose points are
+  // nearly collinear has only slivers as fills, standing across the surface; the larger loop
+  // through the apexes of the fans on either side has fills along it.
   void CloseAfterPeel(const std::vector<Id>& loop)
   {
     const int64_t open = this->Mesh.GetNumberOfBoundaryHalfEdges();
     std::vector<Id> peeled, larger, fill;
-    const bool closed = this->PeelFolded(loop, peeled) && this->LoopAround(peeled, larger) &&
-      this->Fill(larger, fill) && this->AddFill(fill);
-    if (closed &&
-      this->Mesh.GetNumberOfBoundaryHalfEdges() == open - static_cast<int64_t>(loop.size()))
+    for (bool onlyFolded : { true, false })
     {
-      return;
-    }
-    if (closed)
-    {
-      for (int64_t t : this->Added)
+      peeled.clear();
+      const bool closed = this->PeelAcross(loop, onlyFolded, peeled) &&
+        this->LoopAround(peeled, larger) && this->Fill(larger, fill) && this->AddFill(fill);
+      if (closed &&
+        this->Mesh.GetNumberOfBoundaryHalfEdges() == open - static_cast<int64_t>(loop.size()))
       {
-        this->Mesh.RemoveTriangle(t);
+        return;
       }
+      if (closed)
+      {
+        for (int64_t t : this->Added)
+        {
+          this->Mesh.RemoveTriangle(t);
+        }
+      }
+      this->Restore(peeled);
     }
-    this->Restore(peeled);
   }
 
-  // The mesh triangles across the loop's edges that are folded over the hole (their normal
-  // against the loop's vector area, oriented like its fill) are removed, except one whose removal
-  // would leave a vertex with no triangle: no point leaves the mesh. Each removed triangle is
-  // appended to `peeled` (its 3 vertices and its origin); false when none is removed.
-  bool PeelFolded(const std::vector<Id>& loop, std::vector<Id>& peeled)
+  // The mesh triangles across the loop's edges (onlyFolded: those folded over the hole, their
+  // normal against the loop's vector area, oriented like its fill) are removed, except one whose
+  // removal would leave a vertex with no triangle: no point leaves the mesh. Each removed triangle
+  // is appended to `peeled` (its 3 vertices and its origin); false when none is removed.
+  bool PeelAcross(const std::vector<Id>& loop, bool onlyFolded, std::vector<Id>& peeled)
   {
     const size_t m = loop.size();
     double area[3]; // the vector area of the fill's loop (walked backwards)
     pcs::holes::LoopVectorArea(this->XYZ, std::vector<Id>(loop.rbegin(), loop.rend()), area);
-    std::vector<int64_t> folded;
+    std::vector<int64_t> across; // the triangles to remove
     for (size_t i = 0; i < m; ++i)
     {
       const int64_t t = this->Mesh.FindTriangle(loop[i], loop[(i + 1) % m]);
@@ -1906,17 +1915,18 @@ private:
       const int32_t* v = this->Mesh.GetTriangle(t);
       double normal[3];
       pcs::projected::TriangleNormal(this->P(v[0]), this->P(v[1]), this->P(v[2]), normal);
-      if (Dot(normal, area) < 0.0 && std::find(folded.begin(), folded.end(), t) == folded.end())
+      if ((!onlyFolded || Dot(normal, area) < 0.0) &&
+        std::find(across.begin(), across.end(), t) == across.end())
       {
-        folded.push_back(t);
+        across.push_back(t);
       }
     }
     std::vector<int64_t> removable;
-    for (int64_t t : folded)
+    for (int64_t t : across)
     {
       const int32_t* v = this->Mesh.GetTriangle(t);
-      if (this->KeepsATriangle(v[0], folded) && this->KeepsATriangle(v[1], folded) &&
-        this->KeepsATriangle(v[2], folded))
+      if (this->KeepsATriangle(v[0], across) && this->KeepsATriangle(v[1], across) &&
+        this->KeepsATriangle(v[2], across))
       {
         removable.push_back(t);
       }
@@ -1974,7 +1984,7 @@ private:
     return true;
   }
 
-  // The triangles of `peeled` put back (see PeelFolded).
+  // The triangles of `peeled` put back (see PeelAcross).
   void Restore(const std::vector<Id>& peeled)
   {
     for (size_t k = peeled.size(); k >= 4; k -= 4)

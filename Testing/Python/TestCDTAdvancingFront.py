@@ -263,21 +263,10 @@ check(worst <= 1.0, "irregular ellipsoid: mesh within one cap spacing of the ell
 # peeling the folded triangles does not close a loop, peels every triangle across its edges and
 # fills the larger loop through the fans' apexes.
 # Closed, manifold, genus 0, every point used, 2V - 4 triangles.
-def sphere_with_arcs(count, arcs, per_arc, seed):
-    random = np.random.RandomState(seed)
-    points = random.normal(size=(count, 3))
-    points /= np.linalg.norm(points, axis=1)[:, None]
-    rows = [points]
-    for _ in range(arcs):
-        a = random.normal(size=3)
-        a /= np.linalg.norm(a)
-        b = random.normal(size=3)
-        b -= (b @ a) * a
-        b /= np.linalg.norm(b)
-        t = random.uniform(0, 2 * np.pi) + np.linspace(0, random.uniform(0.5, 2.0), per_arc)
-        rows.append(np.outer(np.cos(t), a) + np.outer(np.sin(t), b))
-    return np.vstack(rows)
-
+# (The clouds of Benchmarks/run_arc_spheres.py, which runs 40 of them.)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                "Benchmarks"))
+from run_arc_spheres import sphere_with_arcs  # noqa: E402
 
 for count, seed in ((400, 13), (800, 4), (400, 12), (800, 12)):
     arcs = sphere_with_arcs(count, 8, 60, seed)

@@ -139,6 +139,12 @@
  *   to flip is refused). Installing a bridge splices the loops at A and B (the paper's
  *   duplicated points A', B'); afterwards every loop made of original loops is classified again
  *   (step 3), a loop that contains a fragment of a hole is a hole.
+ *   Cost: the candidates search the loop points within MaximumBridgeLength of each island point
+ *   (pcs::PointBins), the separation test the admitted bridges whose midpoints are within the
+ *   candidate's length plus twice MinimumBridgeSeparation (admitted bridges are no longer),
+ *   whether two points are on one loop is a label lookup, and the reversals are applied once at
+ *   the end: linear in the loop points times the points within reach (a lattice volume, where
+ *   the step meets hundreds of small islands: 11.4 -> 1.7 s at 25^3 points, 153 -> 16 s at 46^3).
  *   Bands (ours, issue 7): a band of missing surface around a thin part (a ring of lost points
  *   around a leg, a band cut across a torus's tube) leaves two loops that each go once around
  *   the part; step 3 calls both islands (their votes are neutral, their triangle normals cancel)

@@ -486,7 +486,8 @@ int64_t SurfaceMesh::ReverseComponent(int64_t t)
   {
     return 0;
   }
-  std::vector<uint8_t> visited(static_cast<size_t>(this->GetNumberOfTriangleIds()), 0);
+  std::vector<uint8_t>& visited = this->ReverseVisited;
+  visited.resize(static_cast<size_t>(this->GetNumberOfTriangleIds()), 0);
   std::vector<int64_t> component{ t };
   visited[t] = 1;
   for (size_t i = 0; i < component.size(); ++i)
@@ -508,6 +509,7 @@ int64_t SurfaceMesh::ReverseComponent(int64_t t)
   std::vector<int32_t> touched;
   for (int64_t c : component)
   {
+    visited[c] = 0;
     int32_t* v = &this->Triangles[3 * c];
     touched.insert(touched.end(), v, v + 3);
     std::swap(v[1], v[2]);

@@ -278,6 +278,9 @@ private:
   std::vector<int32_t> FrontIn;
   std::vector<Block> Blocks;
   std::vector<int32_t> FreeBlocks;
+  // ReverseComponent's visited flags per triangle id, all 0 between calls (cleared over the
+  // component only, so that a small component does not cost a pass over every triangle id).
+  std::vector<uint8_t> ReverseVisited;
   int64_t NumberOfTriangles = 0;
   int64_t NumberOfBoundaryHalfEdges = 0;
 };

@@ -377,6 +377,12 @@ void TestReverseComponent()
   {
     EXPECT(mesh.GetNumberOfFans(v) == 1, "manifold vertex " << v);
   }
+  // Reversed again, from either square: each call finds the whole component (its visited flags
+  // are kept between calls and must be cleared after each).
+  EXPECT(mesh.ReverseComponent(second) == 6, "the merged strip has 6 triangles");
+  EXPECT(mesh.ReverseComponent(0) == 6, "all 6 again from the first square");
+  ExpectConsistent(mesh, "reversed twice");
+  EXPECT(mesh.GetTriangle(second)[1] == 5 && mesh.GetTriangle(second)[2] == 6, "as merged");
 }
 
 // AddTriangles: a fan added in an order that pinches its centre until the last triangle is

@@ -12,6 +12,7 @@
 #include "pcsPointInsertion.h"
 #include "pcsPredicates.h"
 #include "pcsProjectedTests.h"
+#include "pcsSpatialSort.h"
 #include "pcsSurfaceMesh.h"
 
 #include "vtkCellArray.h"
@@ -567,37 +568,68 @@ void Reconstruction::ComputeNormals(bool nearLost)
 
 //------------------------------------------------------------------------------------------------
 // Step 1: 3D greedy triangulation with the topological compatibility test.
+//
+// The step works on the points renumbered along a Hilbert curve (pcs::HilbertSort): the edges are
+// taken in order of length, from all over the cloud, and each test reads the lists and positions
+// of the points around its edge, which in the cloud's own order lie anywhere in memory (cache
+// misses made this step 47 % of the CPU on 10^6 random sphere points, against 10 % at 10^5). In
+// curve order they are near each other. Edges are sorted, ties broken, and triangles reported
+// with the cloud's ids, so the result does not depend on the renumbering.
 void Reconstruction::Step1GreedyEdges(double begin, double end)
 {
   const int k = this->K;
   struct Edge
   {
     float Length;
-    int32_t A, B;
+    int32_t A, B; // the cloud's ids, A < B
   };
-  // Candidate edges: each point to its neighbours, each pair once.
+  // Curve order: the cloud id of each position, the position of each cloud id.
+  std::vector<int32_t> cloudId(static_cast<size_t>(this->N));
+  std::iota(cloudId.begin(), cloudId.end(), 0);
+  pcs::HilbertSort(this->X.data(), 3, cloudId.data(), cloudId.data() + cloudId.size());
+  std::vector<int32_t> position(static_cast<size_t>(this->N));
+  std::vector<double> xyz(3 * static_cast<size_t>(this->N));
+  for (int32_t i = 0; i < this->N; ++i)
+  {
+    position[cloudId[i]] = i;
+    std::copy_n(this->P(cloudId[i]), 3, &xyz[3 * static_cast<size_t>(i)]);
+  }
+  std::vector<int32_t> neighbors(static_cast<size_t>(this->N) * k);
+  for (int32_t i = 0; i < this->N; ++i)
+  {
+    const int32_t* list = &this->Neighbors[static_cast<size_t>(cloudId[i]) * k];
+    for (int j = 0; j < k; ++j)
+    {
+      neighbors[static_cast<size_t>(i) * k + j] = list[j] < 0 ? -1 : position[list[j]];
+    }
+  }
+  auto at = [&xyz](int32_t i) { return &xyz[3 * static_cast<size_t>(i)]; };
+
+  // Candidate edges: each point to its neighbours, each pair once (a pair listed both ways from
+  // the smaller cloud id; the length measured from the point that lists the other).
   std::vector<int64_t> offsets(static_cast<size_t>(this->N) + 1, 0);
   std::vector<Edge> edges;
   edges.reserve(static_cast<size_t>(this->N) * k * 3 / 4);
   for (int32_t i = 0; i < this->N; ++i)
   {
-    const int32_t* mine = &this->Neighbors[static_cast<size_t>(i) * k];
+    const int32_t* mine = &neighbors[static_cast<size_t>(i) * k];
     for (int j = 0; j < k && mine[j] >= 0; ++j)
     {
       const int32_t q = mine[j];
-      bool keep = i < q;
-      if (!keep)
+      const int32_t ci = cloudId[i], cq = cloudId[q];
+      if (ci > cq)
       {
-        const int32_t* theirs = &this->Neighbors[static_cast<size_t>(q) * k];
-        keep = std::find(theirs, theirs + k, i) == theirs + k;
+        const int32_t* theirs = &neighbors[static_cast<size_t>(q) * k];
+        if (std::find(theirs, theirs + k, i) != theirs + k)
+        {
+          continue;
+        }
       }
-      if (keep)
-      {
-        edges.push_back(
-          { static_cast<float>(this->SamplingDistance(i, q)), std::min(i, q), std::max(i, q) });
-        ++offsets[i + 1];
-        ++offsets[q + 1];
-      }
+      const double length =
+        this->Stretch.empty() ? Distance(at(i), at(q)) : this->SamplingDistance(ci, cq);
+      edges.push_back({ static_cast<float>(length), std::min(ci, cq), std::max(ci, cq) });
+      ++offsets[i + 1];
+      ++offsets[q + 1];
     }
   }
   if (!this->Progress(begin + 0.1 * (end - begin)))
@@ -639,11 +671,22 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
   std::vector<int32_t> near;
   std::vector<double> nearUV;
   std::vector<uint32_t> mark(crossing ? this->N : 0, 0);
-  std::vector<int32_t> position(crossing ? this->N : 0, 0);
+  std::vector<int32_t> nearIndex(crossing ? this->N : 0, 0);
   uint32_t stamp = 0;
-  auto crosses = [&](int32_t a, int32_t b) {
-    const double* na = &this->Normals[3 * static_cast<size_t>(a)];
-    const double* nb = &this->Normals[3 * static_cast<size_t>(b)];
+  std::vector<double> normals(crossing ? 3 * static_cast<size_t>(this->N) : 0);
+  for (int32_t i = 0; crossing && i < this->N; ++i)
+  {
+    std::copy_n(
+      &this->Normals[3 * static_cast<size_t>(cloudId[i])], 3, &normals[3 * static_cast<size_t>(i)]);
+  }
+  // Every accepted edge is no longer than ab (edges by length; `reach` bounds their lengths,
+  // a hair above ab's), so only the points whose projections are within `reach` of ab's box can
+  // have an edge that crosses ab: the others' edges are not examined.
+  std::vector<char> nearReaches;
+  auto crosses = [&](int32_t a, int32_t b, double reach)
+  {
+    const double* na = &normals[3 * static_cast<size_t>(a)];
+    const double* nb = &normals[3 * static_cast<size_t>(b)];
     double n[3];
     const double s = vtkMath::Dot(na, nb) < 0 ? -1.0 : 1.0;
     for (int i = 0; i < 3; ++i)
@@ -656,10 +699,10 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
     }
     double u[3], w[3];
     vtkMath::Perpendiculars(n, u, w, 0.0);
-    const double* pa = this->P(a);
+    const double* pa = at(a);
     auto project = [&](int32_t x, double q[2]) {
       double d[3];
-      vtkMath::Subtract(this->P(x), pa, d);
+      vtkMath::Subtract(at(x), pa, d);
       q[0] = vtkMath::Dot(d, u);
       q[1] = vtkMath::Dot(d, w);
     };
@@ -675,21 +718,25 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
     }
     near.clear();
     nearUV.clear();
+    nearReaches.clear();
     auto add = [&](int32_t x) {
       if (x >= 0 && x != a && x != b && mark[x] != stamp)
       {
         mark[x] = stamp;
-        position[x] = static_cast<int32_t>(near.size());
+        nearIndex[x] = static_cast<int32_t>(near.size());
         near.push_back(x);
         double q[2];
         project(x, q);
         nearUV.push_back(q[0]);
         nearUV.push_back(q[1]);
+        const double dx = std::max({ lo[0] - q[0], 0.0, q[0] - hi[0] });
+        const double dy = std::max({ lo[1] - q[1], 0.0, q[1] - hi[1] });
+        nearReaches.push_back(dx * dx + dy * dy <= reach * reach ? 1 : 0);
       }
     };
     for (int32_t x : { a, b })
     {
-      const int32_t* list = &this->Neighbors[static_cast<size_t>(x) * k];
+      const int32_t* list = &neighbors[static_cast<size_t>(x) * k];
       for (int j = 0; j < k; ++j)
       {
         add(list[j]);
@@ -701,13 +748,17 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
     }
     for (size_t i = 0; i < near.size(); ++i)
     {
+      if (!nearReaches[i])
+      {
+        continue;
+      }
       const int32_t c = near[i];
       const double* qc = &nearUV[2 * i];
       for (int64_t s2 = offsets[c], e2 = offsets[c] + degree[c]; s2 < e2; ++s2)
       {
         const int32_t d = adjacent[s2];
         const bool marked = mark[d] == stamp;
-        if (d == a || d == b || (marked && d < c))
+        if (d == a || d == b || (marked && d < c && nearReaches[nearIndex[d]]))
         {
           continue; // shares an end point, or tested from d
         }
@@ -715,7 +766,7 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
         const double* qd = projected;
         if (marked)
         {
-          qd = &nearUV[2 * static_cast<size_t>(position[d])];
+          qd = &nearUV[2 * static_cast<size_t>(nearIndex[d])];
         }
         else
         {
@@ -746,7 +797,7 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
     {
       return;
     }
-    const int32_t a = edges[e].A, b = edges[e].B;
+    const int32_t a = position[edges[e].A], b = position[edges[e].B];
     // Common neighbours: the triangles the edge would close.
     int32_t common[3];
     int64_t commonSlotA[3];
@@ -786,17 +837,19 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
     for (int c = 0; c < numberOfCommon && !degenerate; ++c)
     {
       // Three points of one scan line: a sliver along it (pcs::OnOneScanLine).
-      degenerate = pcs::projected::Collinear(this->P(a), this->P(b), this->P(common[c])) ||
+      degenerate = pcs::projected::Collinear(at(a), at(b), at(common[c])) ||
         (!this->Stretch.empty() &&
-          pcs::OnOneScanLine(this->X.data(), this->Stretch.data(), a, b, common[c]));
+          pcs::OnOneScanLine(
+            this->X.data(), this->Stretch.data(), edges[e].A, edges[e].B, cloudId[common[c]]));
     }
     if (degenerate)
     {
       continue;
     }
     if (crossing &&
-      (this->CrossingPoints.empty() || this->CrossingPoints[a] || this->CrossingPoints[b]) &&
-      crosses(a, b))
+      (this->CrossingPoints.empty() || this->CrossingPoints[edges[e].A] ||
+        this->CrossingPoints[edges[e].B]) &&
+      crosses(a, b, edges[e].Length * (1.0 + 1e-6)))
     {
       continue;
     }
@@ -811,7 +864,7 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
       ++triangles[slot(v, a)];
       ++triangles[slot(b, v)];
       ++triangles[slot(v, b)];
-      result.insert(result.end(), { a, b, v });
+      result.insert(result.end(), { edges[e].A, edges[e].B, cloudId[v] });
     }
   }
 }

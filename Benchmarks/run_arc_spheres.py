@@ -12,21 +12,29 @@ With exact normals the arcs are a degenerate case of the paper's rule II.D.1: an
 normal lies in its arc's plane, so the point between two arc points projects onto the chord
 joining them, and a triangle on that chord is not blocked by it.
 
-Printed per cloud: boundary edges, unused points, non-manifold edges; then the number of clouds
-not closed and the total of boundary edges.
+Printed per cloud: boundary edges, unused points, non-manifold edges, and two counts of
+triangles that stand across the sphere: those whose three points lie on one arc (nearly collinear:
+a sliver in the arc's plane, which holds the sphere's centre, so it is never a face of the
+sphere's Delaunay triangulation) and those whose normal is more than 60 degrees from the
+sphere's; then totals. The other filters (--filters) read no normals: they run once, with
+"pca" in the table.
 
 Usage:
   PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 Benchmarks/run_arc_spheres.py \
-      [--normals pca exact] [--counts 400 800] [--seeds 1 2 ... 20]
+      [--filters cdt log greedy peel] [--normals pca exact] [--counts 400 800] [--seeds 1 2 ... 20]
 """
 import argparse
 
 import numpy as np
-from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 
-from pointcloudsurface import vtkCDTAdvancingFront, vtkReconstructionQuality
+import pointcloudsurface as pcs
+
+FILTERS = {"cdt": pcs.vtkCDTAdvancingFront, "log": pcs.vtkLocalOptimumGrowth,
+           "greedy": pcs.vtkGreedySurfaceTriangulation, "peel": pcs.vtkPerimeterPeelSurface}
+ARCS, PER_ARC = 8, 60
 
 
 def sphere_with_arcs(count, arcs, per_arc, seed):
@@ -58,35 +66,67 @@ def cloud(points, with_normals):
     return poly
 
 
+def standing_triangles(mesh, count):
+    """(triangles of three points of one arc, triangles over 60 degrees to the sphere)."""
+    points = vtk_to_numpy(mesh.GetPoints().GetData())
+    triangles = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    arc = np.where((triangles >= count) & (triangles < count + ARCS * PER_ARC),
+                   (triangles - count) // PER_ARC, -1 - triangles)  # distinct if not on an arc
+    one_arc = int(np.count_nonzero((arc[:, 0] == arc[:, 1]) & (arc[:, 1] == arc[:, 2])))
+    a, b, c = (points[triangles[:, k]] for k in range(3))
+    normal = np.cross(b - a, c - a)
+    centroid = (a + b + c) / 3.0
+    cosine = np.abs(np.einsum("ij,ij->i", normal, centroid)) / (
+        np.linalg.norm(normal, axis=1) * np.linalg.norm(centroid, axis=1))
+    return one_arc, int(np.count_nonzero(cosine < 0.5))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--filters", nargs="+", choices=sorted(FILTERS), default=["cdt"])
     parser.add_argument("--normals", nargs="+", choices=("pca", "exact"), default=["pca", "exact"])
     parser.add_argument("--counts", nargs="+", type=int, default=[400, 800])
     parser.add_argument("--seeds", nargs="+", type=int, default=list(range(1, 21)))
     args = parser.parse_args()
-    for mode in args.normals:
-        print("| normals | random points | seed | boundary edges | unused | non-manifold edges |")
-        print("|---|---:|---:|---:|---:|---:|")
-        open_clouds = total = 0
-        for count in args.counts:
-            for seed in args.seeds:
-                points = sphere_with_arcs(count, 8, 60, seed)
-                front = vtkCDTAdvancingFront()
-                front.SetInputData(cloud(points, mode == "exact"))
-                front.Update()
-                quality = vtkReconstructionQuality()
-                quality.SetInputData(front.GetOutput())
-                quality.Update()
-                fields = quality.GetOutput().GetFieldData()
-                boundary = int(fields.GetArray("NumberOfBoundaryEdges").GetTuple1(0))
-                nonmanifold = int(fields.GetArray("NumberOfNonManifoldEdges").GetTuple1(0))
-                unused = front.GetNumberOfUnusedPoints()
-                print("| %s | %d | %d | %d | %d | %d |" % (mode, count, seed, boundary, unused,
-                                                          nonmanifold))
-                open_clouds += 1 if boundary else 0
-                total += boundary
-        print("\n%s normals: %d of %d clouds not closed, %d boundary edges in all\n"
-              % (mode, open_clouds, len(args.counts) * len(args.seeds), total))
+    totals = []
+    for name in args.filters:
+        for mode in args.normals if name == "cdt" else ["pca"]:
+            print("| filter | normals | random points | seed | boundary edges | unused | "
+                  "non-manifold edges | one-arc triangles | over 60 degrees |")
+            print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
+            open_clouds = boundary_total = one_arc_total = standing_total = unused_total = 0
+            for count in args.counts:
+                for seed in args.seeds:
+                    points = sphere_with_arcs(count, ARCS, PER_ARC, seed)
+                    surface = FILTERS[name]()
+                    surface.SetInputData(cloud(points, mode == "exact"))
+                    surface.Update()
+                    quality = pcs.vtkReconstructionQuality()
+                    quality.SetInputData(surface.GetOutput())
+                    quality.Update()
+                    fields = quality.GetOutput().GetFieldData()
+                    boundary = int(fields.GetArray("NumberOfBoundaryEdges").GetTuple1(0))
+                    nonmanifold = int(fields.GetArray("NumberOfNonManifoldEdges").GetTuple1(0))
+                    unused_array = surface.GetOutput().GetFieldData().GetArray(
+                        "NumberOfUnusedPoints")
+                    unused = int(unused_array.GetTuple1(0))
+                    one_arc, standing = standing_triangles(surface.GetOutput(), count)
+                    print("| %s | %s | %d | %d | %d | %d | %d | %d | %d |" % (
+                        name, mode, count, seed, boundary, unused, nonmanifold, one_arc, standing))
+                    open_clouds += 1 if boundary else 0
+                    boundary_total += boundary
+                    one_arc_total += one_arc
+                    standing_total += standing
+                    unused_total += unused
+            totals.append((name, mode, open_clouds, len(args.counts) * len(args.seeds),
+                           boundary_total, unused_total, one_arc_total, standing_total))
+            print()
+    print("| filter | normals | clouds not closed | boundary edges | unused | one-arc triangles | "
+          "over 60 degrees |")
+    print("|---|---|---:|---:|---:|---:|---:|")
+    for name, mode, open_clouds, clouds, boundary, unused, one_arc, standing in totals:
+        print("| %s | %s | %d of %d | %d | %d | %d | %d |" % (
+            name, mode, open_clouds, clouds, boundary, unused, one_arc, standing))
 
 
 if __name__ == "__main__":

@@ -330,6 +330,16 @@ void FindPointsWithinRadius(const pcs::PointBins& bins,
 // times the clean surface's time; Benchmarks/results/cdt.md).
 constexpr double NearCopyFraction = 1e-6;
 
+// The bound on the work of the front (Front::Work: points gathered and mesh edges listed for the
+// candidates and the projection tests, over seeds, III.B and III.C): MaximumWorkPerPoint per
+// usable point, and at least MinimumWork (a small cloud's balls reach across much of it, so its
+// work per point is larger). A sampled surface takes 160-3,300 per point at 5,000 points and
+// more (the 10^5 sphere 162, CGAL's noisy sphere_20k 3,205), up to 10,054 on smaller clouds (CGAL's
+// circles, 1,101 points: 11 million); a volume has several times as many points in each ball and
+// took 22,558 per point on the 18^3 lattice, and its front ran away on the 30^3 lattice (310 s).
+constexpr double MaximumWorkPerPoint = 10000.0;
+constexpr double MinimumWork = 5e7;
+
 // Links each group of copies (`firstCopy`, pcs::FindExactDuplicates' groups) to the group of
 // smallest first copy within `distance` of its first copy, if smaller: the groups linked so are
 // one (their point of smallest id first). Each link is shorter than `distance` (a chain of links
@@ -650,6 +660,13 @@ public:
 
   // Accept triangles that pinch a front vertex (see CanAdd).
   bool AllowPinches = true;
+
+  // The work of the front: the points gathered for candidates and for the projection tests, and
+  // the mesh edges listed for the projection tests. Seed and Advance stop (OutOfWork) once it
+  // exceeds WorkBudget.
+  uint64_t Work = 0;
+  uint64_t WorkBudget = std::numeric_limits<uint64_t>::max();
+  bool OutOfWork = false;
 
   // To call when triangles were removed: triangles found blocked may no longer be, and the
   // edges of the removed triangles may be gone.
@@ -1309,6 +1326,7 @@ bool Front::PassesProjectionTests(Id e0,
       this->PointCandidates.resize(2 * inPiece);
     }
     size_t pointCandidates = 0;
+    this->Work += inPiece;
     for (size_t i = 0; i < inPiece; ++i)
     {
       const Id p = this->Ball[i].first;
@@ -1403,6 +1421,7 @@ bool Front::PassesProjectionTests(Id e0,
       ends = this->Neighbors.data();
       numberOfEnds = static_cast<int>(this->Neighbors.size());
     }
+    this->Work += static_cast<uint64_t>(numberOfEnds);
     if (this->EdgeCandidates.size() < edges + static_cast<size_t>(numberOfEnds))
     {
       this->EdgeCandidates.resize(2 * (edges + static_cast<size_t>(numberOfEnds)));
@@ -1518,6 +1537,7 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& global, bo
     // without a branch on each test (see PassesProjectionTests).
     const size_t inBall =
       this->Bins.GatherWithinRadius(std::min(radii[ring], this->Diagonal), midpoint, this->Ball);
+    this->Work += inBall;
     this->Candidates.resize(inBall); // (empty before: cleared above)
     size_t kept = 0;
     for (size_t i = 0; i < inBall; ++i)
@@ -1661,7 +1681,7 @@ bool Front::Advance(const Parameters& parameters, bool relaxed, uint8_t origin)
     this->ForgetWatches();
     this->WatchParameters = &parameters;
   }
-  while (!this->Edges.empty() && !this->Aborted)
+  while (!this->Edges.empty() && !this->Aborted && !this->OutOfWork)
   {
     const Id a = this->Edges.front().first;
     const Id b = this->Edges.front().second;
@@ -1678,6 +1698,7 @@ bool Front::Advance(const Parameters& parameters, bool relaxed, uint8_t origin)
     // The new triangle traverses the edge the other way: (b, a, x).
     const Id opposite = this->Mesh.OppositeVertex(a, b);
     const Id x = this->BestThirdPoint(b, a, opposite, parameters, relaxed);
+    this->OutOfWork = this->Work > this->WorkBudget;
     if (x != None)
     {
       this->Add(b, a, x, origin);
@@ -1727,6 +1748,7 @@ bool Front::Seed(Id p, const Parameters& parameters)
     const double *a = this->P(p), *b = this->P(q);
     const double midpoint[3] = { 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]) };
     this->FindPoints(atEdge.Radius, midpoint, this->Near);
+    this->Work += this->Near.size();
     this->Candidates.clear();
     for (vtkIdType k = 0; k < static_cast<vtkIdType>(this->Near.size()); ++k)
     {
@@ -2846,7 +2868,9 @@ int vtkCDTAdvancingFront::RequestData(
     bins,
     mesh);
   front.SetEdgeReachCellSize(2.0 * strict.Radius);
-  for (Id p = 0; p < local && !front.Aborted; ++p)
+  front.WorkBudget =
+    static_cast<uint64_t>(std::max(MinimumWork, MaximumWorkPerPoint * static_cast<double>(usable)));
+  for (Id p = 0; p < local && !front.Aborted && !front.OutOfWork; ++p)
   {
     if (status[p] != Usable || !mesh.IsFree(p))
     {
@@ -2897,7 +2921,16 @@ int vtkCDTAdvancingFront::RequestData(
       fillHoles();
     }
   }
-  if (this->HoleFilling && !front.Aborted)
+  if (front.OutOfWork && !front.Aborted)
+  {
+    vtkWarningMacro("The advancing front was stopped: its work (points and mesh edges examined) "
+                    "exceeded "
+      << front.WorkBudget
+      << ", the bound for a sampled surface of this size: the cloud does not look like a "
+         "surface (a volume, or clutter around one?). The triangles made so far are kept, "
+         "without pinches; the loops left are not closed.");
+  }
+  if (this->HoleFilling && !front.Aborted && !front.OutOfWork)
   {
     // The loops left, by the least-dihedral triangulation of their vertices (see LoopCloser).
     LoopCloser closer(mesh, xyz.data(), nearest, meanSpacing, status, bins, front.Origin);

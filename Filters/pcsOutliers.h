@@ -23,20 +23,17 @@ constexpr double OutlierSparseFactor = 4.0;
 constexpr double OutlierPlaneVariation = 0.02;
 constexpr double OutlierPlaneSpread = 0.1;
 constexpr double OutlierPlaneHeight = 0.1;
-/// Near-coincident points (a pile: repeated measurements, jittered copies) count as one position:
-/// a group of points whose extent (the diagonal of its bounding box) is under OutlierPileRatio
-/// times its distance to the rest of the cloud. The tolerance is relative: it scales with the
-/// gap around the group, i.e. with the sampling where the group lies, and no absolute distance
-/// enters. Seen from the rest of the cloud such a group is one point; without this, piles holding
-/// most of the points made the cloud's median reach a pile's and the surface "sparse".
-constexpr double OutlierPileRatio = 1e-4;
+/// Near-coincident points (a pile: repeated measurements, jittered copies; pcs::FindPiles, the
+/// definition vtkCDTAdvancingFront's duplicates share) count as one position. Seen from the rest
+/// of the cloud such a group is one point; without this, piles holding most of the points made
+/// the cloud's median reach a pile's and the surface "sparse".
 
 /// Flags the far outliers among the points `ids` of `xyz` (packed x, y, z): `outlier` gets one
 /// byte per entry of `ids` (1: outlier) and the function returns how many are flagged.
 ///
 /// A point's reach is the mean distance to its OutlierNeighbors nearest distinct positions
 /// (pcs::FindNearestNeighbors; exact copies of a point count as that point, and so do the points
-/// of a pile (OutlierPileRatio) as one position, with its first point's coordinates: they share
+/// of a pile (pcs::FindPiles) as one position, with its first point's coordinates: they share
 /// its verdict). A point is sparse when its reach exceeds OutlierSparseFactor times the median
 /// reach of the cloud, dense otherwise. A sparse point is an outlier when its reach also exceeds
 /// `factor` times the median reach of its OutlierNeighbors nearest dense points, unless it lies
@@ -50,10 +47,9 @@ constexpr double OutlierPileRatio = 1e-4;
 /// flagged). Clouds of fewer than 4 x OutlierNeighbors distinct points are too small to judge:
 /// nothing is flagged. The result does not depend on the order of `ids` nor on the number of
 /// threads (vtkSMPTools). Cost: one k-nearest-neighbour search (k = OutlierNeighbors), a locator
-/// over the dense points and one query per sparse point. The pile search costs O(n k) lookups
-/// in the table; only when the table shows a point whose nearest neighbour is under
-/// OutlierPileRatio times its k-th (or such a jump between neighbours), a sort of the table's
-/// edges; when there are piles, a second search over the positions. `progress` as for
+/// over the dense points and one query per sparse point. The pile search (pcs::FindPiles) costs
+/// O(n k) lookups in the table on clean samples; when there are piles, a second search over the
+/// positions. `progress` as for
 /// FindNearestNeighbors (false: stopped, nothing flagged).
 int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double factor,
   std::vector<uint8_t>& outlier, const std::function<bool(double)>& progress = nullptr);

@@ -7,6 +7,7 @@
 #include "pcsHoleFilling.h"
 #include "pcsNearestNeighbors.h"
 #include "pcsNormalEstimation.h"
+#include "pcsPiles.h"
 #include "pcsPointInsertion.h"
 #include "pcsProjectedTests.h"
 #include "pcsSurfaceMesh.h"
@@ -320,16 +321,6 @@ void FindPointsWithinRadius(const pcs::PointBins& bins,
     });
 }
 
-// Near copies: points closer than NearCopyFraction times the spacing that a surface sample of
-// the same number of points would have over the cloud's extent (its bounding-box diagonal over
-// the square root of the number of points) are copies of one sample point, like exact
-// duplicates. A pile of near-coincident points (a scanner's repeated returns, points merged from
-// overlapping scans) is a blob at a scale the sampling cannot resolve: its PCA normals are
-// random, a triangle of its points has 1e-12 of a sample triangle's area, and a front inside it
-// examines the whole pile for every edge (a cloud of piles of 1,000 points took more than 100
-// times the clean surface's time; Benchmarks/results/cdt.md).
-constexpr double NearCopyFraction = 1e-6;
-
 // The bound on the work of the front (Front::Work: points gathered and mesh edges listed for the
 // candidates and the projection tests, over seeds, III.B and III.C): MaximumWorkPerPoint per
 // usable point, and at least MinimumWork (a small cloud's balls reach across much of it, so its
@@ -340,46 +331,61 @@ constexpr double NearCopyFraction = 1e-6;
 constexpr double MaximumWorkPerPoint = 10000.0;
 constexpr double MinimumWork = 5e7;
 
-// Links each group of copies (`firstCopy`, pcs::FindExactDuplicates' groups) to the group of
-// smallest first copy within `distance` of its first copy, if smaller: the groups linked so are
-// one (their point of smallest id first). Each link is shorter than `distance` (a chain of links
-// is as long as its number of links). Does not depend on the number of threads nor on the grid.
-void LinkNearCopies(const pcs::PointBins& bins,
-  const double* xyz,
-  Id n,
-  double distance,
+// Piles of near-coincident points (a scanner's repeated returns at one spot, points merged from
+// overlapping scans) are copies of one sample point, like exact duplicates: pcs::FindPiles, the
+// definition shared with the far-outlier rule (a group whose extent is under pcs::PileRatio times
+// its distance to the rest of the cloud). A pile is a blob at a scale the sampling cannot
+// resolve: its PCA normals are random, a triangle of its points has 1e-12 of a sample triangle's
+// area, and a front inside it examines the whole pile for every edge (a cloud of piles of 1,000
+// points took more than 100 times the clean surface's time; Benchmarks/results/cdt.md).
+//
+// Merges the groups of copies (`firstCopy`: the copy of smallest id of each point's group) that
+// one pile holds. The piles are found among the `count` distinct positions `positionXYZ` (packed
+// x, y, z) on their table `table` (`others` nearest per position, nearest first; searched again
+// on `bins`, filed from exactly these positions, when narrower than pcs::PileNeighbors): position
+// d is the group of first copy `positionIds[d]` (increasing), or point d itself when
+// `positionIds` is empty (no exact duplicates). Returns whether some groups were merged.
+bool MergePiles(const double* positionXYZ,
+  Id count,
+  const std::vector<Id>& positionIds,
+  const pcs::PointBins& bins,
+  const std::vector<int32_t>& table,
+  int others,
   std::vector<Id>& firstCopy)
 {
-  if (!(distance > 0.0))
+  std::vector<int32_t> widerTable;
+  if (others < pcs::PileNeighbors)
   {
-    return;
-  }
-  std::vector<Id> link(static_cast<size_t>(n));
-  vtkSMPTools::For(0,
-    n,
-    [&](Id begin, Id end)
+    if (count <= pcs::PileNeighbors ||
+      !pcs::FindNearestNeighbors(
+        bins, positionXYZ, static_cast<int32_t>(count), pcs::PileNeighbors, widerTable))
     {
-      for (Id k = begin; k < end; ++k)
-      {
-        Id smallest = firstCopy[k];
-        if (smallest == k)
-        {
-          bins.ForEachPointWithinRadius(distance,
-            xyz + 3 * static_cast<size_t>(k),
-            [&](Id j, double)
-            {
-              smallest = std::min(smallest, firstCopy[j]);
-              return true;
-            });
-        }
-        link[k] = smallest;
-      }
-    });
-  for (Id k = 0; k < n; ++k) // (firstCopy[k] <= k and link[k] <= k: the smaller ids are final)
-  {
-    const Id first = firstCopy[k];
-    firstCopy[k] = first != k ? firstCopy[first] : (link[k] == k ? k : firstCopy[link[k]]);
+      return false;
+    }
   }
+  const std::vector<int32_t>& piles = others < pcs::PileNeighbors ? widerTable : table;
+  const int width = others < pcs::PileNeighbors ? pcs::PileNeighbors : others;
+  std::vector<int32_t> groupOf;
+  if (pcs::FindPiles(positionXYZ, static_cast<int32_t>(count), piles, width, groupOf) == count)
+  {
+    return false;
+  }
+  // The first copy of each pile: its position of smallest id (positions in increasing id), then
+  // each point's group replaced by its pile's.
+  std::vector<Id> pileFirst(static_cast<size_t>(count), None);
+  std::vector<Id> position(firstCopy.size(), None); // by first copy
+  for (Id d = 0; d < count; ++d)
+  {
+    const Id first = positionIds.empty() ? d : positionIds[d];
+    position[first] = d;
+    Id& pile = pileFirst[groupOf[d]];
+    pile = pile == None ? first : pile;
+  }
+  for (size_t k = 0; k < firstCopy.size(); ++k)
+  {
+    firstCopy[k] = pileFirst[groupOf[position[firstCopy[k]]]];
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------------------------
@@ -2391,17 +2397,14 @@ int vtkCDTAdvancingFront::RequestData(
 
   // Groups of copies of a point (firstCopy[k]: the copy of smallest id of point k's group): for
   // the estimated normals and the duplicates below. Exactly equal points
-  // (pcs::FindExactDuplicates), and near copies (LinkNearCopies).
+  // (pcs::FindExactDuplicates), and piles of near-coincident points (MergePiles, on the table of
+  // the normal estimation, else on the table for the local spacing below).
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
     (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
     (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
   std::vector<Id> firstCopy;
   pcs::FindExactDuplicates(xyz.data(), 3, nullptr, local, firstCopy);
-  LinkNearCopies(bins,
-    xyz.data(),
-    local,
-    NearCopyFraction * diagonal / std::sqrt(static_cast<double>(local)),
-    firstCopy);
+  bool pilesChecked = false;
 
   // Normals: the input's, else estimated (vtkPCANormalEstimation, consistently oriented). Input
   // normals that are zero-length or not finite count as missing: those are estimated too.
@@ -2467,58 +2470,111 @@ int vtkCDTAdvancingFront::RequestData(
       RowRadiusFactor,
       RowShare);
   };
-  // Exact duplicates would fill a neighbourhood with copies of one point (a zero covariance):
-  // with duplicates, the normals are estimated on the distinct points and copied to the others.
-  auto estimateNormals = [&](std::vector<double>& estimatedNormals)
+  // The distinct positions (one per group of copies, firstCopy), their coordinates and bins.
+  struct Positions
   {
-    std::vector<Id> distinct;
-    std::vector<Id> slot(static_cast<size_t>(local), None);
+    std::vector<Id> Ids;  // the first copy of each group, increasing
+    std::vector<Id> Slot; // per point: its group's position (None for none yet)
+    std::vector<double> XYZ;
+    pcs::PointBins Bins;
+  };
+  auto distinctPositions = [&](Positions& positions)
+  {
+    positions.Ids.clear();
+    positions.Slot.assign(static_cast<size_t>(local), None);
     for (Id k = 0; k < local; ++k)
     {
       if (firstCopy[k] == k)
       {
-        slot[k] = static_cast<Id>(distinct.size());
-        distinct.push_back(k);
+        positions.Slot[k] = static_cast<Id>(positions.Ids.size());
+        positions.Ids.push_back(k);
       }
     }
-    if (static_cast<Id>(distinct.size()) == local)
+    if (static_cast<Id>(positions.Ids.size()) == local)
     {
-      // The front's grid (the same bins): one grid for both.
-      estimateNormalsOn(xyz.data(), local, bins, estimatedNormals, knn, knnOthers, &stretch);
-      scanLinesChecked = knnOthers > 0;
       return;
     }
-    std::vector<double> distinctXYZ(3 * distinct.size());
-    for (size_t d = 0; d < distinct.size(); ++d)
+    positions.XYZ.resize(3 * positions.Ids.size());
+    for (size_t d = 0; d < positions.Ids.size(); ++d)
     {
-      std::copy_n(&xyz[3 * static_cast<size_t>(distinct[d])], 3, &distinctXYZ[3 * d]);
+      std::copy_n(&xyz[3 * static_cast<size_t>(positions.Ids[d])], 3, &positions.XYZ[3 * d]);
     }
-    const Id distinctCount = static_cast<Id>(distinct.size());
-    pcs::PointBins distinctBins;
-    double distinctBounds[6];
-    pcs::BuildSurfaceSampleBins(
-      distinctBins, distinctXYZ.data(), distinctCount, /*withCoordinates=*/false, distinctBounds);
-    std::vector<double> distinctNormals;
-    std::vector<int32_t> distinctTable; // not the table of all the points
-    int distinctOthers = 0;
-    std::vector<double> distinctStretch; // planes across scan lines; the stretch is found later
-    estimateNormalsOn(distinctXYZ.data(),
-      distinctCount,
-      distinctBins,
-      distinctNormals,
-      distinctTable,
-      distinctOthers,
-      &distinctStretch);
-    estimatedNormals.assign(3 * static_cast<size_t>(local), 0.0);
-    if (distinctNormals.size() != 3 * distinct.size())
+    double positionBounds[6];
+    pcs::BuildSurfaceSampleBins(positions.Bins,
+      positions.XYZ.data(),
+      static_cast<Id>(positions.Ids.size()),
+      /*withCoordinates=*/false,
+      positionBounds);
+  };
+  // Exact duplicates would fill a neighbourhood with copies of one point (a zero covariance):
+  // with duplicates, the normals are estimated on the distinct points and copied to the others.
+  // Piles are looked for on the estimation's table; when there are some, the normals are
+  // estimated again on one point per pile.
+  auto estimateNormals = [&](std::vector<double>& estimatedNormals)
+  {
+    for (;;)
     {
-      return; // aborted
-    }
-    for (Id k = 0; k < local; ++k)
-    {
-      const Id d = slot[firstCopy[k]];
-      std::copy_n(&distinctNormals[3 * static_cast<size_t>(d)], 3,
-        &estimatedNormals[3 * static_cast<size_t>(k)]);
+      Positions positions;
+      distinctPositions(positions);
+      if (static_cast<Id>(positions.Ids.size()) == local)
+      {
+        // The front's grid (the same bins): one grid for both.
+        estimateNormalsOn(xyz.data(), local, bins, estimatedNormals, knn, knnOthers, &stretch);
+        scanLinesChecked = knnOthers > 0;
+        if (pilesChecked || knnOthers == 0)
+        {
+          return;
+        }
+        pilesChecked = true;
+        if (!MergePiles(xyz.data(), local, {}, bins, knn, knnOthers, firstCopy))
+        {
+          return;
+        }
+        knn.clear(); // (not the table of the points to mesh)
+        knnOthers = 0;
+        stretch.clear();
+        scanLinesChecked = false;
+        continue;
+      }
+      const Id distinctCount = static_cast<Id>(positions.Ids.size());
+      std::vector<double> distinctNormals;
+      std::vector<int32_t> distinctTable; // not the table of all the points
+      int distinctOthers = 0;
+      std::vector<double> distinctStretch; // planes across scan lines; the stretch is found later
+      estimateNormalsOn(positions.XYZ.data(),
+        distinctCount,
+        positions.Bins,
+        distinctNormals,
+        distinctTable,
+        distinctOthers,
+        &distinctStretch);
+      estimatedNormals.assign(3 * static_cast<size_t>(local), 0.0);
+      if (distinctNormals.size() != 3 * positions.Ids.size())
+      {
+        return; // aborted
+      }
+      if (!pilesChecked)
+      {
+        pilesChecked = true;
+        if (MergePiles(positions.XYZ.data(),
+              distinctCount,
+              positions.Ids,
+              positions.Bins,
+              distinctTable,
+              distinctOthers,
+              firstCopy))
+        {
+          continue;
+        }
+      }
+      for (Id k = 0; k < local; ++k)
+      {
+        const Id d = positions.Slot[firstCopy[k]];
+        std::copy_n(&distinctNormals[3 * static_cast<size_t>(d)],
+          3,
+          &estimatedNormals[3 * static_cast<size_t>(k)]);
+      }
+      return;
     }
   };
   // The normals used, passed to the output when some were estimated ("Normals", or
@@ -2621,6 +2677,47 @@ int vtkCDTAdvancingFront::RequestData(
                                   "when estimated: too few distinct neighbours).");
   }
 
+  // The table of nearest neighbours for the local spacing (the automatic NeighborhoodRadius and
+  // MaximumRayDistance) and the noise band: LocalSpacingNeighbors per point (that of the normal
+  // estimation when it has that size). It is also the table on which scan-line sampling is looked
+  // for when the normals were not estimated on all the points (given, or estimated on the distinct
+  // points).
+  constexpr int LocalSpacingNeighbors = 9;
+  const bool localRay = this->MaximumRayDistance <= 0.0;
+  const bool localRadius = this->NeighborhoodRadius <= 0.0;
+  const bool noiseBand = this->NoiseBandFactor > 0.0;
+  const int localOthers = std::min<int>(LocalSpacingNeighbors, local - 1);
+  if ((localRay || localRadius || noiseBand || !scanLinesChecked) && knnOthers != localOthers)
+  {
+    knnOthers = 0;
+    if (!pcs::FindNearestNeighbors(bins,
+          xyz.data(),
+          static_cast<int32_t>(local),
+          localOthers,
+          knn,
+          [this](double) { return !this->GetAbortExecute(); }))
+    {
+      return finish();
+    }
+    knnOthers = localOthers;
+  }
+  // Piles when the normals were given (none estimated): on this table when the points are
+  // distinct (before its off-line neighbours), else on a table of the distinct positions.
+  if (!pilesChecked)
+  {
+    pilesChecked = true;
+    Positions positions;
+    distinctPositions(positions);
+    const Id count = static_cast<Id>(positions.Ids.size());
+    if (count == local)
+    {
+      MergePiles(xyz.data(), local, {}, bins, knn, knnOthers, firstCopy);
+    }
+    else
+    {
+      MergePiles(positions.XYZ.data(), count, positions.Ids, positions.Bins, {}, 0, firstCopy);
+    }
+  }
   // Duplicates (firstCopy): in each group of copies the usable point of smallest id is kept. Then
   // the mean spacing: the mean distance from a point to its nearest point that is not a copy.
   {
@@ -2648,34 +2745,11 @@ int vtkCDTAdvancingFront::RequestData(
   if (this->NumberOfDuplicatePoints > 0)
   {
     vtkWarningMacro("Ignored " << this->NumberOfDuplicatePoints
-                               << " duplicate point(s): exact copies, or near copies (closer than "
-                               << NearCopyFraction
-                               << " times the spacing of a surface sample of "
-                                  "that many points); the copy of smallest id is meshed.");
-  }
-  // The table of nearest neighbours for the local spacing (the automatic NeighborhoodRadius and
-  // MaximumRayDistance) and the noise band: LocalSpacingNeighbors per point (that of the normal
-  // estimation when it has that size). It is also the table on which scan-line sampling is looked
-  // for when the normals were not estimated on all the points (given, or estimated on the distinct
-  // points).
-  constexpr int LocalSpacingNeighbors = 9;
-  const bool localRay = this->MaximumRayDistance <= 0.0;
-  const bool localRadius = this->NeighborhoodRadius <= 0.0;
-  const bool noiseBand = this->NoiseBandFactor > 0.0;
-  const int localOthers = std::min<int>(LocalSpacingNeighbors, local - 1);
-  if ((localRay || localRadius || noiseBand || !scanLinesChecked) && knnOthers != localOthers)
-  {
-    knnOthers = 0;
-    if (!pcs::FindNearestNeighbors(bins,
-          xyz.data(),
-          static_cast<int32_t>(local),
-          localOthers,
-          knn,
-          [this](double) { return !this->GetAbortExecute(); }))
-    {
-      return finish();
-    }
-    knnOthers = localOthers;
+                               << " duplicate point(s): exact copies, or points of a pile (a group "
+                                  "whose extent is under "
+                               << pcs::PileRatio
+                               << " times its distance to the rest of the cloud); the copy of "
+                                  "smallest id is meshed.");
   }
   if (!scanLinesChecked && knnOthers > 0 &&
     pcs::AddOffLineNeighbors(bins,

@@ -256,13 +256,18 @@
  * The result depends on the normals: they must be consistently oriented (a flipped patch is
  * meshed separately, the II.C.1 rule stops the front at the flip). Duplicate points are meshed
  * once, the copy of smallest id (the other copies stay unused and are counted in
- * NumberOfDuplicatePoints, with a warning): exact copies, and near copies, points closer than
- * 1e-6 D / sqrt(N) to each other (D the diagonal of the points' bounding box, N their number:
- * a millionth of the spacing a surface sample of N points over that extent would have; ours,
- * beyond the paper). A pile of near-coincident points (a scanner's repeated returns at one spot)
- * is then one sample point: meshed as a blob of tiny triangles with random PCA normals, 4 piles
+ * NumberOfDuplicatePoints, with a warning): exact copies, and the points of a pile of
+ * near-coincident points (a scanner's repeated returns at one spot; ours, beyond the paper): a
+ * group whose extent is under 1/10,000 of its distance to the rest of the cloud, found on the
+ * table of the 8 nearest neighbours (pcs::FindPiles, the definition the far-outlier rule of the
+ * other filters shares; a separate part of the cloud also has to be under 1/10,000 of the
+ * cloud's sampling). The tolerance is relative to the sampling around the group, no absolute or
+ * global distance: a dense part of a cloud with a large bounding box keeps its distinct points.
+ * A pile meshed point by point made a blob of tiny triangles with random PCA normals: 4 piles
  * of 1,000 points on a 4,000-point sphere took 11 s and left holes, 50 piles of 1,000 on a
- * 5 x 10^4-point sphere more than 150 s (now 0.07 s and 1.1 s, closed; Benchmarks/results/cdt.md).
+ * 5 x 10^4-point sphere more than 150 s (now 0.07 s and about 1.2 s, closed; the normals are
+ * estimated again on one point per pile when piles are found; Benchmarks/results/cdt.md and
+ * robustness.md).
  * Points with non-finite
  * coordinates are skipped and counted, with a warning; zero-length or non-finite input normals are
  * estimated, with a warning (see Normals above). Fewer

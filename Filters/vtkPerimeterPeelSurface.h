@@ -210,7 +210,7 @@
  *   test; pcsOutliers.h), however much denser the rest of the cloud (a dense patch holding most
  *   of the points made the rest "outliers" before 2026-11-24). A pile of near-coincident
  *   points (a group whose extent is under 1/10,000 of its distance to the rest of the cloud,
- *   pcs::OutlierPileRatio) counts as one point with one verdict: piles holding most of the
+ *   pcs::FindPiles) counts as one point with one verdict: piles holding most of the
  *   points made the median reach a pile's and flagged 80 of 1,000 sphere points before
  *   2026-11-24 (now 0); a pile far off the surface is flagged whole. Points within about 8 surface
  *   reaches (some 20 mean spacings) of the surface are not far outliers (they may be a sparse

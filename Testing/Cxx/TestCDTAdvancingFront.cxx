@@ -44,6 +44,7 @@
 #include <cstdlib>
 #include <functional>
 #include <limits>
+#include <sstream>
 #include <string>
 
 namespace
@@ -551,14 +552,19 @@ bool TestSlit(double width)
 }
 
 // Piles of near-coincident points (a scanner's repeated returns at one spot): 4 piles of 250
-// points spread 1e-9 (Gaussian) about 4 points of the unit sphere, on a 2,000-point sample of it.
-// Each pile is one sample point (near copies, counted as duplicates): the sphere is closed with
-// one point of each pile, the other 996 are unused. Before, the front meshed each pile as a blob
-// of tiny triangles with random PCA normals, examining the whole pile for every edge (4 piles of
-// 1,000 points on 4,000 sphere points: 11 s, the clean sphere 0.07 s) and leaving holes.
-bool TestPiles(bool withNormals)
+// points spread `spread` (Gaussian) about 4 points of the unit sphere, on a 2,000-point sample of
+// it. Each pile is one sample point (pcs::FindPiles, counted as duplicates): the sphere is closed
+// with one point of each pile, the other 996 are unused. Before e20d16a, the front meshed each
+// pile as a blob of tiny triangles with random PCA normals, examining the whole pile for every
+// edge (4 piles of 1,000 points on 4,000 sphere points: 11 s, the clean sphere 0.07 s) and leaving
+// holes. A spread of 1e-7 (piles about 1e-6 wide, 1e-4 of the sphere's spacing) was missed by
+// e20d16a's global scale (points closer than 1e-6 D / sqrt(N), here 6e-8): 200 to 400 of the pile
+// points meshed, with holes.
+bool TestPiles(bool withNormals, double spread)
 {
-  const std::string label = withNormals ? "piles, input normals" : "piles, PCA normals";
+  std::ostringstream name;
+  name << (withNormals ? "piles, input normals" : "piles, PCA normals") << ", spread " << spread;
+  const std::string label = name.str();
   Cloud c = Sphere(2000, 8);
   std::mt19937_64 rng(9);
   std::normal_distribution<double> g(0.0, 1.0);
@@ -575,7 +581,7 @@ bool TestPiles(bool withNormals)
     for (int i = 0; i < perPile; ++i)
     {
       c.XYZ.insert(c.XYZ.end(),
-        { centre[0] + 1e-9 * g(rng), centre[1] + 1e-9 * g(rng), centre[2] + 1e-9 * g(rng) });
+        { centre[0] + spread * g(rng), centre[1] + spread * g(rng), centre[2] + spread * g(rng) });
       c.Normals.insert(c.Normals.end(), { centre[0], centre[1], centre[2] });
     }
   }
@@ -646,6 +652,38 @@ bool TestLatticeVolume()
   const vtkIdType n = m * m * m;
   PCS_CHECK(filter->GetNumberOfTriangles() <= 2 * n,
     label << ": " << filter->GetNumberOfTriangles() << " triangles for " << n << " points");
+  return CheckConsistentCounts(label, filter);
+}
+
+// Two samples of the unit sphere (2,000 points each) 10^7 apart: distinct points, no pile (each
+// sphere is a sampled surface: its extent is not under pcs::PileRatio times the other's
+// sampling, however far it is). e20d16a's global scale (1e-6 D / sqrt(N) = 0.16, more than the
+// spheres' spacing) made most points "near copies": 3,676 duplicates. Both
+// are closed now (2 V - 8 triangles), none duplicate.
+bool TestFarSpheres()
+{
+  const std::string label = "two spheres 1e7 apart";
+  Cloud c = Sphere(2000, 8);
+  const Cloud other = Sphere(2000, 11);
+  for (size_t i = 0; i < other.XYZ.size(); i += 3)
+  {
+    c.XYZ.insert(c.XYZ.end(), { other.XYZ[i] + 1e7, other.XYZ[i + 1], other.XYZ[i + 2] });
+    c.Normals.insert(
+      c.Normals.end(), { other.Normals[i], other.Normals[i + 1], other.Normals[i + 2] });
+  }
+  auto input = MakeInput(c, false);
+  vtkNew<vtkCDTAdvancingFront> filter;
+  const Messages messages = Run(filter, input);
+  PCS_CHECK(messages.Errors == 0, label << ": errors");
+  auto quality = Quality(filter->GetOutput());
+  PCS_CHECK(pcstest::FieldCount(quality, "NumberOfNonManifoldEdges") == 0 &&
+      pcstest::FieldCount(quality, "NumberOfBoundaryEdges") == 0,
+    label << ": " << pcstest::FieldCount(quality, "NumberOfBoundaryEdges")
+          << " boundary edges, not closed");
+  PCS_CHECK(filter->GetNumberOfDuplicatePoints() == 0,
+    label << ": " << filter->GetNumberOfDuplicatePoints() << " duplicates instead of 0");
+  PCS_CHECK(filter->GetNumberOfTriangles() == 2 * 4000 - 8,
+    label << ": " << filter->GetNumberOfTriangles() << " triangles for 4000 points");
   return CheckConsistentCounts(label, filter);
 }
 
@@ -774,8 +812,12 @@ int TestCDTAdvancingFront(int, char*[])
     failures += TestSlit(width) ? 0 : 1;
   }
   failures += TestBadInput() ? 0 : 1;
-  failures += TestPiles(true) ? 0 : 1;
-  failures += TestPiles(false) ? 0 : 1;
+  for (double spread : { 1e-9, 1e-7 })
+  {
+    failures += TestPiles(true, spread) ? 0 : 1;
+    failures += TestPiles(false, spread) ? 0 : 1;
+  }
+  failures += TestFarSpheres() ? 0 : 1;
   failures += TestLatticeVolume() ? 0 : 1;
   std::cout << failures << " failure(s)" << std::endl;
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -14,7 +14,7 @@
 // - a sparse part of a surface next to a dense patch holding most of the points is not flagged
 //   (the flat-sample exemption of pcs::FindOutliers);
 // - piles of near-coincident points that outnumber the surface count once each
-//   (pcs::OutlierPileRatio): 1,000 sphere points plus 4 piles of 600 distinct points within 3e-9
+//   (pcs::FindPiles): 1,000 sphere points plus 4 piles of 600 distinct points within 3e-9
 //   of 4 of them flag nothing; a fifth pile of 600 far from the sphere is flagged whole.
 #include "vtkGreedySurfaceTriangulation.h"
 #include "vtkLocalOptimumGrowth.h"

@@ -1,0 +1,308 @@
+#include "pcsPiles.h"
+
+#include "pcsNearestNeighbors.h"
+
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace pcs
+{
+namespace
+{
+// The diagonal of a bounding box (xmin, xmax, ymin, ymax, zmin, zmax).
+double BoxDiagonal(const double* box)
+{
+  return std::sqrt((box[1] - box[0]) * (box[1] - box[0]) + (box[3] - box[2]) * (box[3] - box[2]) +
+    (box[5] - box[4]) * (box[5] - box[4]));
+}
+
+// Whether the table can show a pile (FindPiles), by three conditions of which every
+// pile meets one (with d1 and dk a point's distances to the first and k-th point of its row):
+// a pile of at most k points, or one a member's row leaves, has a member with d1 under
+// PileRatio x dk (its row reaches a point outside, beyond the pile's diagonal / ratio);
+// a larger pile that only rows of outside points reach has a member m in the row of an outside
+// point r with dk(m) under PileRatio x dk(r); a pile no row reaches or leaves has dk
+// under PileRatio x the cloud's diagonal. O(n k) lookups; on clean samples none holds.
+bool MayHoldPiles(const double* x,
+  int32_t n,
+  const std::vector<int32_t>& knn,
+  int width,
+  int k,
+  double cloudDiagonal)
+{
+  std::vector<double> farthest(n);
+  std::vector<uint8_t> found(n, 0);
+  vtkSMPTools::For(0,
+    n,
+    [&](int32_t begin, int32_t end)
+    {
+      for (int32_t i = begin; i < end; ++i)
+      {
+        const int32_t* row = &knn[static_cast<size_t>(i) * width];
+        if (row[0] < 0 || row[k - 1] < 0)
+        {
+          farthest[i] = std::numeric_limits<double>::infinity(); // (an incomplete row)
+          continue;
+        }
+        farthest[i] = PointDistance(x, i, row[k - 1]);
+        found[i] = PointDistance(x, i, row[0]) < PileRatio * farthest[i] ||
+          farthest[i] < PileRatio * cloudDiagonal;
+      }
+    });
+  vtkSMPTools::For(0,
+    n,
+    [&](int32_t begin, int32_t end)
+    {
+      for (int32_t i = begin; i < end; ++i)
+      {
+        const int32_t* row = &knn[static_cast<size_t>(i) * width];
+        for (int j = 0; j < k && !found[i]; ++j)
+        {
+          found[i] = row[j] >= 0 && farthest[row[j]] < PileRatio * farthest[i];
+        }
+      }
+    });
+  return std::find(found.begin(), found.end(), 1) != found.end();
+}
+
+}
+
+int32_t FindPiles(const double* x,
+  int32_t n,
+  const std::vector<int32_t>& knn,
+  int width,
+  std::vector<int32_t>& groupOf,
+  int k)
+{
+  if (n < 2 || k < 1 || width < k)
+  {
+    groupOf.clear();
+    return n;
+  }
+  struct Edge
+  {
+    double Length;
+    int32_t A, B;
+  };
+  auto inRow = [&](int32_t row, int32_t id)
+  {
+    const int32_t* r = &knn[static_cast<size_t>(row) * width];
+    return std::find(r, r + k, id) != r + k;
+  };
+  double cloudBox[6];
+  for (int c = 0; c < 3; ++c)
+  {
+    cloudBox[2 * c] = cloudBox[2 * c + 1] = x[c];
+  }
+  for (int32_t i = 1; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      cloudBox[2 * c] = std::min(cloudBox[2 * c], x[3 * static_cast<size_t>(i) + c]);
+      cloudBox[2 * c + 1] = std::max(cloudBox[2 * c + 1], x[3 * static_cast<size_t>(i) + c]);
+    }
+  }
+  const double cloudDiagonal = BoxDiagonal(cloudBox);
+  if (!MayHoldPiles(x, n, knn, width, k, cloudDiagonal))
+  {
+    groupOf.clear();
+    return n;
+  }
+  std::vector<Edge> edges;
+  edges.reserve(static_cast<size_t>(n) * k);
+  double shortest = std::numeric_limits<double>::infinity(), longest = 0.0;
+  for (int32_t i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < k; ++j)
+    {
+      const int32_t q = knn[static_cast<size_t>(i) * width + j];
+      if (q < 0 || q == i || (q < i && inRow(q, i)))
+      {
+        continue; // (an edge in both rows is taken once, from the row of its smaller end)
+      }
+      edges.push_back({ PointDistance(x, i, q), std::min(i, q), std::max(i, q) });
+      shortest = std::min(shortest, edges.back().Length);
+      longest = std::max(longest, edges.back().Length);
+    }
+  }
+  // A group an edge leaves has a diagonal of at least the shortest edge (two of its points are
+  // joined by one) and is left by an edge no longer than the longest: unless the shortest edge is
+  // under PileRatio x the longest no such group is a pile, and the order does not matter
+  // (only separate parts of the graph can be piles).
+  if (shortest < PileRatio * longest)
+  {
+    vtkSMPTools::Sort(edges.begin(),
+      edges.end(),
+      [](const Edge& a, const Edge& b)
+      {
+        return a.Length < b.Length ||
+          (a.Length == b.Length && (a.A < b.A || (a.A == b.A && a.B < b.B)));
+      });
+  }
+  // The merge tree: points 0..n-1, then one node per merge; `root` is the union-find over the
+  // points, `top` the tree node of each union-find root.
+  std::vector<int32_t> root(n), top(n), parent(n, -1);
+  std::iota(root.begin(), root.end(), 0);
+  std::iota(top.begin(), top.end(), 0);
+  std::vector<double> box(6 * static_cast<size_t>(n));
+  std::vector<int32_t> size(n, 1);
+  for (int32_t i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      box[6 * i + 2 * c] = box[6 * i + 2 * c + 1] = x[3 * static_cast<size_t>(i) + c];
+    }
+  }
+  auto findRoot = [&](int32_t i)
+  {
+    while (root[i] != i)
+    {
+      i = root[i] = root[root[i]];
+    }
+    return i;
+  };
+  auto diagonal = [&](int32_t r) { return BoxDiagonal(&box[6 * static_cast<size_t>(r)]); };
+  std::vector<uint8_t> pile(n, 0); // by tree node
+  for (const Edge& e : edges)
+  {
+    int32_t a = findRoot(e.A), b = findRoot(e.B);
+    if (a == b)
+    {
+      continue;
+    }
+    for (const int32_t r : { a, b })
+    {
+      pile[top[r]] = pile[top[r]] || (size[r] > 1 && diagonal(r) < PileRatio * e.Length);
+    }
+    if (size[a] < size[b])
+    {
+      std::swap(a, b);
+    }
+    root[b] = a;
+    size[a] += size[b];
+    for (int c = 0; c < 3; ++c)
+    {
+      box[6 * a + 2 * c] = std::min(box[6 * a + 2 * c], box[6 * b + 2 * c]);
+      box[6 * a + 2 * c + 1] = std::max(box[6 * a + 2 * c + 1], box[6 * b + 2 * c + 1]);
+    }
+    const int32_t node = static_cast<int32_t>(parent.size());
+    parent[top[a]] = parent[top[b]] = node;
+    parent.push_back(-1);
+    pile.push_back(0);
+    top[a] = node;
+  }
+  // Each point's largest pile (a node's parent is made after it: top-down from the last node).
+  std::vector<int32_t> pileOf(parent.size(), -1);
+  auto findLargestPiles = [&]()
+  {
+    for (size_t node = parent.size(); node-- > 0;)
+    {
+      const int32_t up = parent[node] >= 0 ? pileOf[parent[node]] : -1;
+      pileOf[node] = up >= 0 ? up : (pile[node] ? static_cast<int32_t>(node) : -1);
+    }
+  };
+  findLargestPiles();
+  // Separate parts of the graph: a pile if its diagonal is under PileRatio times both its
+  // distance to the rest (a radius query) and the sampling of the rest (the median, over the
+  // points outside the part and in no pile, of the distance to the k-th point of their row).
+  // Without the second condition a separately sampled object far from the rest (two scanned
+  // objects 10^4 of their size apart) would be one "pile": a gap alone does not make a sampled
+  // surface unresolvable. A cloud made of such parts only is judged by the gaps.
+  std::vector<int32_t> partRoots;
+  for (int32_t i = 0; i < n; ++i)
+  {
+    if (findRoot(i) == i && size[i] > 1 && size[i] < n && diagonal(i) < PileRatio * cloudDiagonal)
+    {
+      partRoots.push_back(i);
+    }
+  }
+  if (!partRoots.empty())
+  {
+    // The reach (k-th distance) of the points in no pile: all sorted, and by part.
+    std::vector<double> all;
+    std::vector<std::vector<double>> byPart(partRoots.size());
+    std::vector<int32_t> partOf(n, -1); // by union-find root
+    for (size_t p = 0; p < partRoots.size(); ++p)
+    {
+      partOf[partRoots[p]] = static_cast<int32_t>(p);
+    }
+    for (int32_t i = 0; i < n; ++i)
+    {
+      const int32_t last = knn[static_cast<size_t>(i) * width + k - 1];
+      if (pileOf[i] < 0 && last >= 0)
+      {
+        all.push_back(PointDistance(x, i, last));
+        const int32_t p = partOf[findRoot(i)];
+        if (p >= 0)
+        {
+          byPart[p].push_back(all.back());
+        }
+      }
+    }
+    std::sort(all.begin(), all.end());
+    PointBins bins;
+    double bounds[6];
+    BuildSurfaceSampleBins(bins, x, n, /*withCoordinates=*/true, bounds);
+    for (size_t p = 0; p < partRoots.size(); ++p)
+    {
+      // The median of `all` without the part's values: the first entry of `all` with more than
+      // half of the others' count at or below it, not counting the part's.
+      std::vector<double>& own = byPart[p];
+      std::sort(own.begin(), own.end());
+      const size_t others = all.size() - own.size();
+      double sampling = std::numeric_limits<double>::infinity();
+      if (others > 0)
+      {
+        size_t low = 0, high = all.size() - 1;
+        while (low < high)
+        {
+          const size_t mid = (low + high) / 2;
+          const size_t ownAtOrBelow =
+            std::upper_bound(own.begin(), own.end(), all[mid]) - own.begin();
+          if (mid + 1 - std::min(mid + 1, ownAtOrBelow) > others / 2)
+          {
+            high = mid;
+          }
+          else
+          {
+            low = mid + 1;
+          }
+        }
+        sampling = all[low];
+      }
+      const int32_t r = partRoots[p];
+      const double d = diagonal(r);
+      if (d < PileRatio * sampling)
+      {
+        int32_t inside = 0; // (the walk stops at the first point beyond the part's own)
+        bins.ForEachPointWithinRadius(d * (1.0 + 1.0 / PileRatio),
+          &x[3 * static_cast<size_t>(r)],
+          [&](int32_t, double) { return ++inside <= size[r]; });
+        pile[top[r]] = pile[top[r]] || inside == size[r];
+      }
+    }
+    findLargestPiles();
+  }
+  groupOf.assign(n, -1);
+  std::vector<int32_t> groupOfPile(parent.size(), -1);
+  int32_t groups = 0;
+  for (int32_t i = 0; i < n; ++i)
+  {
+    if (pileOf[i] < 0)
+    {
+      groupOf[i] = groups++;
+    }
+    else
+    {
+      int32_t& g = groupOfPile[pileOf[i]];
+      g = g >= 0 ? g : groups++;
+      groupOf[i] = g;
+    }
+  }
+  return groups;
+}
+}

@@ -5,8 +5,10 @@ A check on data no test and no other benchmark reads: the clouds are the vertex 
 Debian's libcgal-demo data (irregular sampling, thin features, open borders, CAD parts), the
 reference surface is the mesh itself. For each mesh and filter it prints the triangles, the
 points left unused (negative when a filter adds points), boundary edges, non-manifold edges, the
-Hausdorff distance and both one-sided maxima over the reference's mean spacing
-(vtkReconstructionQuality) and the filter's CPU time. No normals are given (CDT estimates them).
+Hausdorff distance and both one-sided maxima over the reference's mean spacing, the triangles
+standing across the reference (normal more than 60 degrees from the reference's, in % of the
+triangles) and the unweighted and area-weighted mean of that angle (vtkReconstructionQuality) and
+the filter's CPU time. No normals are given (CDT estimates them).
 
 Usage:
   PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 \
@@ -79,8 +81,9 @@ def main():
     parser.add_argument("--filters", nargs="+", default=list(FILTERS), choices=list(FILTERS))
     args = parser.parse_args()
     print("| mesh | filter | points | triangles | unused | boundary edges | non-manifold edges "
-          "| Hausdorff | accuracy max | completeness max | CPU s |")
-    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+          "| Hausdorff | accuracy max | completeness max | standing % | mean angle "
+          "| area-weighted angle | CPU s |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for name in args.meshes:
         path = os.path.join(args.data, "meshes", name + ".off")
         try:
@@ -99,11 +102,15 @@ def main():
             quality.Update()
             fields = quality.GetOutput().GetFieldData()
             value = lambda k: fields.GetArray(k).GetValue(0)
-            print("| %s | %s | %d | %d | %d | %d | %d | %.2f | %.2f | %.2f | %.2f |" % (
-                name, key, len(points), len(cells) // 3, len(points) - used,
-                value("NumberOfBoundaryEdges"), value("NumberOfNonManifoldEdges"),
-                value("HausdorffOverSpacing"), value("AccuracyMaxOverSpacing"),
-                value("CompletenessMaxOverSpacing"), seconds), flush=True)
+            standing = 100.0 * value("NumberOfStandingTriangles") / max(1, len(cells) // 3)
+            print("| %s | %s | %d | %d | %d | %d | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f "
+                  "| %.2f |" % (
+                      name, key, len(points), len(cells) // 3, len(points) - used,
+                      value("NumberOfBoundaryEdges"), value("NumberOfNonManifoldEdges"),
+                      value("HausdorffOverSpacing"), value("AccuracyMaxOverSpacing"),
+                      value("CompletenessMaxOverSpacing"), standing,
+                      value("MeanReferenceNormalAngle"),
+                      value("AreaWeightedMeanReferenceNormalAngle"), seconds), flush=True)
 
 
 if __name__ == "__main__":

@@ -207,6 +207,62 @@ double MinimumAngle(const double a[3], const double b[3], const double c[3])
   return smallest;
 }
 
+// Unit normal of the triangle a, b, c from the cross product of the two edges at the vertex
+// opposite its longest edge (the shorter edges: the smallest rounding error on slivers), on the
+// points scaled as SafelyScaled; false (normal untouched) when the product is zero or not finite.
+bool UnitNormal(const double a[3], const double b[3], const double c[3], double normal[3])
+{
+  const auto scaled = SafelyScaled(a, b, c);
+  const double* p[3] = { scaled[0].data(), scaled[1].data(), scaled[2].data() };
+  int apex = 0;
+  double longest = -1.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double opposite = vtkMath::Distance2BetweenPoints(p[(i + 1) % 3], p[(i + 2) % 3]);
+    if (opposite > longest)
+    {
+      longest = opposite;
+      apex = i;
+    }
+  }
+  double u[3], v[3], w[3];
+  vtkMath::Subtract(p[(apex + 1) % 3], p[apex], u);
+  vtkMath::Subtract(p[(apex + 2) % 3], p[apex], v);
+  vtkMath::Cross(u, v, w);
+  const double length = vtkMath::Normalize(w);
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    return false;
+  }
+  std::copy(w, w + 3, normal);
+  return true;
+}
+
+// Unoriented angle between two unit normals in degrees, in [0, 90]: atan2(|m x n|, |m . n|),
+// accurate near 0 and 90 alike.
+double AcuteAngle(const double m[3], const double n[3])
+{
+  double w[3];
+  vtkMath::Cross(m, n, w);
+  return vtkMath::DegreesFromRadians(std::atan2(vtkMath::Norm(w), std::abs(vtkMath::Dot(m, n))));
+}
+
+// Twice the area of the triangle a, b, c (on the points scaled as SafelyScaled, then unscaled in
+// long double, whose range holds the squares of any double coordinates).
+long double TwiceArea(const double a[3], const double b[3], const double c[3])
+{
+  double magnitude = pcs::LargestFiniteMagnitude(a, 3);
+  magnitude = pcs::LargestFiniteMagnitude(b, 3, magnitude);
+  magnitude = pcs::LargestFiniteMagnitude(c, 3, magnitude);
+  const int exponent = pcs::PredicateSafeExponent(magnitude);
+  const auto scaled = SafelyScaled(a, b, c);
+  double u[3], v[3], w[3];
+  vtkMath::Subtract(scaled[1].data(), scaled[0].data(), u);
+  vtkMath::Subtract(scaled[2].data(), scaled[0].data(), v);
+  vtkMath::Cross(u, v, w);
+  return std::ldexp(static_cast<long double>(vtkMath::Norm(w)), -2 * exponent);
+}
+
 struct DisjointSets
 {
   std::vector<vtkIdType> Parent;
@@ -941,7 +997,8 @@ struct TriangleSearch
     const double x[3],
     const vtkIdType* candidates,
     size_t count,
-    double& best2) const
+    double& best2,
+    vtkIdType& which) const
   {
     bool found = false;
     double reach = this->Widen(std::sqrt(best2));
@@ -954,6 +1011,7 @@ struct TriangleSearch
         if (dist2 < best2)
         {
           best2 = dist2;
+          which = t;
           found = true;
         }
         continue;
@@ -972,6 +1030,7 @@ struct TriangleSearch
       if (Evaluate(cell, x, c, dist2) && dist2 < best2)
       {
         best2 = dist2;
+        which = t;
         reach = this->Widen(std::sqrt(best2));
         found = true;
       }
@@ -1004,6 +1063,7 @@ struct TriangleQueries
   const TriangleSearch& Search;
   const double* Points; // 3 per query
   double* Distances;    // result: the distance, NaN when no triangle can be evaluated
+  vtkIdType* Closest;   // optional result: the index of the closest triangle, -1 when none
   std::vector<vtkIdType> Order;
 
   static constexpr vtkIdType LeafQueries = 8;
@@ -1026,10 +1086,12 @@ struct TriangleQueries
   TriangleQueries(const TriangleSearch& search,
     const double* points,
     double* distances,
-    vtkIdType count)
+    vtkIdType count,
+    vtkIdType* closest = nullptr)
     : Search(search)
     , Points(points)
     , Distances(distances)
+    , Closest(closest)
   {
     // Queries with a NaN or infinite coordinate have no distance (and no place in the tree).
     for (vtkIdType q = 0; q < count; ++q)
@@ -1169,14 +1231,20 @@ struct TriangleQueries
       const vtkIdType q = this->Order[k];
       const double* x = this->Points + 3 * q;
       double best2 = std::isnan(reach) ? std::numeric_limits<double>::infinity() : reach * reach;
-      bool found = this->Search.Nearest(cell, x, candidates.data(), candidates.size(), best2);
+      vtkIdType which = -1;
+      bool found =
+        this->Search.Nearest(cell, x, candidates.data(), candidates.size(), best2, which);
       if (!found && !std::isinf(reach))
       {
         best2 = std::numeric_limits<double>::infinity();
-        found =
-          this->Search.Nearest(cell, x, nullptr, static_cast<size_t>(this->Search.Size()), best2);
+        found = this->Search.Nearest(
+          cell, x, nullptr, static_cast<size_t>(this->Search.Size()), best2, which);
       }
       this->Distances[q] = found ? std::sqrt(best2) : NaN;
+      if (this->Closest)
+      {
+        this->Closest[q] = found ? which : -1;
+      }
     }
   }
 
@@ -1346,8 +1414,14 @@ struct SampleFunctor
 // largest coordinate magnitude into [2^-60, 2^60] (pcs::PredicateSafeExponent; none for most
 // data): EvaluatePosition's products then neither overflow nor underflow, and as the scaling is
 // exact the distances are those of the unscaled computation, where it does not overflow.
+// With `normalSamples`, `normals` receives for each of these samples the unit normal of the
+// target triangle closest to it (3 values; NaN when the target is a cloud or none was found).
 // Returns the number of triangles of the target left out as numerically flat.
-vtkIdType MeasureDistances(const SurfaceSamples& samples, const DistanceTarget& target, double* out)
+vtkIdType MeasureDistances(const SurfaceSamples& samples,
+  const DistanceTarget& target,
+  double* out,
+  const std::vector<vtkIdType>* normalSamples = nullptr,
+  double* normals = nullptr)
 {
   const vtkIdType n = samples.Size();
   std::vector<double> xyz(3 * static_cast<size_t>(n));
@@ -1371,13 +1445,27 @@ vtkIdType MeasureDistances(const SurfaceSamples& samples, const DistanceTarget& 
   const vtkIdType flat = target.Triangles.empty()
     ? search.BuildPoints(target.Points, target.Cloud, exponent)
     : search.Build(target.Points, target.Triangles, exponent);
+  std::vector<vtkIdType> closest(normalSamples ? static_cast<size_t>(n) : 0, -1);
   if (search.Size() > 0)
   {
-    TriangleQueries queries(search, xyz.data(), out, n);
+    TriangleQueries queries(search, xyz.data(), out, n, normalSamples ? closest.data() : nullptr);
     TriangleQueryFunctor run(queries);
     vtkSMPTools::For(0, static_cast<vtkIdType>(run.Tasks.size()), 1, run);
   }
   pcs::ScaleInPlace(out, static_cast<size_t>(n), -exponent);
+  if (normalSamples)
+  {
+    // The normal's direction does not depend on the scaling by 2^exponent.
+    for (size_t i = 0; i < normalSamples->size(); ++i)
+    {
+      const vtkIdType t = closest[(*normalSamples)[i]];
+      const double* c = t >= 0 ? &search.Corners[9 * t] : nullptr;
+      if (!(c && !search.PointsOnly && UnitNormal(c, c + 3, c + 6, normals + 3 * i)))
+      {
+        std::fill(normals + 3 * i, normals + 3 * i + 3, NaN);
+      }
+    }
+  }
   return flat;
 }
 
@@ -1478,6 +1566,60 @@ void MeanAndMax(const double* begin, const double* end, double& mean, double& ma
     }
   }
   mean = std::isnan(maximum) ? NaN : sum / static_cast<double>(end - begin);
+}
+
+// Cell data ReferenceNormalAngle and field data MeanReferenceNormalAngle,
+// AreaWeightedMeanReferenceNormalAngle, NumberOfStandingTriangles (angle above standingAngle) from
+// the unit normals of the reference triangles closest to the mesh triangles' centroids (3 per
+// triangle, NaN where none); without them (no reference surface) NaN and -1.
+void AddReferenceNormalAngles(vtkPolyData* output,
+  vtkPoints* points,
+  const std::vector<Triangle>& triangles,
+  const std::vector<vtkIdType>& cellIds,
+  const std::vector<char>& zeroArea,
+  const double* referenceNormals,
+  double standingAngle)
+{
+  vtkNew<vtkDoubleArray> angles;
+  angles->SetName("ReferenceNormalAngle");
+  angles->SetNumberOfValues(output->GetNumberOfCells());
+  angles->FillValue(NaN);
+  double mean = NaN, areaWeightedMean = NaN;
+  vtkIdType standing = -1;
+  if (referenceNormals)
+  {
+    double sum = 0.0;
+    long double weightedSum = 0.0L, totalWeight = 0.0L;
+    vtkIdType measured = 0;
+    standing = 0;
+    for (size_t t = 0; t < triangles.size(); ++t)
+    {
+      const double* reference = referenceNormals + 3 * t;
+      double a[3], b[3], c[3], normal[3];
+      points->GetPoint(triangles[t][0], a);
+      points->GetPoint(triangles[t][1], b);
+      points->GetPoint(triangles[t][2], c);
+      if (zeroArea[t] || std::isnan(reference[0]) || !UnitNormal(a, b, c, normal))
+      {
+        continue;
+      }
+      const double angle = AcuteAngle(normal, reference);
+      angles->SetValue(cellIds[t], angle);
+      sum += angle;
+      ++measured;
+      standing += angle > standingAngle ? 1 : 0;
+      const long double weight = TwiceArea(a, b, c);
+      weightedSum += weight * angle;
+      totalWeight += weight;
+    }
+    mean = measured > 0 ? sum / measured : NaN;
+    areaWeightedMean = totalWeight > 0.0L ? static_cast<double>(weightedSum / totalWeight) : NaN;
+  }
+  output->GetCellData()->AddArray(angles);
+  vtkFieldData* fd = output->GetFieldData();
+  pcs::AddFieldValue(fd, "MeanReferenceNormalAngle", mean);
+  pcs::AddFieldValue(fd, "AreaWeightedMeanReferenceNormalAngle", areaWeightedMean);
+  pcs::AddFieldCount(fd, "NumberOfStandingTriangles", standing);
 }
 
 } // namespace
@@ -1882,6 +2024,26 @@ int vtkReconstructionQuality::RequestData(
   meshSamples.Vertices = usedVertices(numberOfPoints, triangles);
   meshSamples.Triangles = &triangles;
   meshSamples.PerTriangle = perTriangle;
+  // The reference normal angles query the mesh triangles' centroids, the first sample of each
+  // triangle: without samples (SamplesPerTriangle 0) the centroids are added as queries, left out
+  // of the accuracy (which then stays on the vertices, the first `accuracySamples` samples).
+  const vtkIdType accuracySamples = meshSamples.Size();
+  if (referenceIsSurface && meshSamples.PerTriangle.empty())
+  {
+    meshSamples.PerTriangle = BarycentricSamples(1);
+  }
+  std::vector<vtkIdType> centroidSamples;
+  if (referenceIsSurface)
+  {
+    const vtkIdType first = static_cast<vtkIdType>(meshSamples.Vertices.size());
+    const vtkIdType stride = static_cast<vtkIdType>(meshSamples.PerTriangle.size());
+    centroidSamples.resize(triangles.size());
+    for (vtkIdType t = 0; t < numberOfTriangles; ++t)
+    {
+      centroidSamples[t] = first + t * stride;
+    }
+  }
+  std::vector<double> referenceNormals(3 * centroidSamples.size(), NaN);
 
   SurfaceSamples referenceSamples;
   referenceSamples.Points = referencePoints;
@@ -1930,7 +2092,11 @@ int vtkReconstructionQuality::RequestData(
   vtkIdType flat = 0;
   if (!referenceTarget.IsEmpty())
   {
-    flat += MeasureDistances(meshSamples, referenceTarget, accuracy.data());
+    flat += MeasureDistances(meshSamples,
+      referenceTarget,
+      accuracy.data(),
+      referenceIsSurface ? &centroidSamples : nullptr,
+      referenceNormals.data());
   }
   this->UpdateProgress(0.7);
   // Completeness: reference samples -> mesh.
@@ -1948,8 +2114,9 @@ int vtkReconstructionQuality::RequestData(
   }
   if (!referenceTarget.IsEmpty() && !meshTarget.IsEmpty())
   {
-    const auto unmeasured =
-      std::count_if(accuracy.begin(), accuracy.end(), [](double d) { return std::isnan(d); }) +
+    const auto unmeasured = std::count_if(accuracy.begin(),
+                              accuracy.begin() + accuracySamples,
+                              [](double d) { return std::isnan(d); }) +
       std::count_if(
         completeness.begin(), completeness.end(), [](double d) { return std::isnan(d); });
     if (unmeasured > 0)
@@ -1972,7 +2139,7 @@ int vtkReconstructionQuality::RequestData(
   output->GetPointData()->AddArray(distanceToReference);
 
   double accuracyMean, accuracyMax, completenessMean, completenessMax;
-  MeanAndMax(accuracy.data(), accuracy.data() + accuracy.size(), accuracyMean, accuracyMax);
+  MeanAndMax(accuracy.data(), accuracy.data() + accuracySamples, accuracyMean, accuracyMax);
   MeanAndMax(completeness.data(), completeness.data() + completeness.size(), completenessMean,
     completenessMax);
   const double hausdorff = (std::isnan(accuracyMax) || std::isnan(completenessMax))
@@ -2043,6 +2210,13 @@ int vtkReconstructionQuality::RequestData(
   pcs::AddFieldValue(fd, "CompletenessMeanOverSpacing", overSpacing(completenessMean));
   pcs::AddFieldValue(fd, "CompletenessMaxOverSpacing", overSpacing(completenessMax));
   pcs::AddFieldValue(fd, "HausdorffOverSpacing", overSpacing(hausdorff));
+  AddReferenceNormalAngles(output,
+    points,
+    triangles,
+    cells.CellIds,
+    zeroArea,
+    referenceIsSurface ? referenceNormals.data() : nullptr,
+    this->StandingAngle);
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -2051,6 +2225,7 @@ int vtkReconstructionQuality::RequestData(
 void vtkReconstructionQuality::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "StandingAngle: " << this->StandingAngle << "\n";
   os << indent << "SamplesPerTriangle: " << this->SamplesPerTriangle << "\n";
   os << indent << "ComputeDistances: " << (this->ComputeDistances ? "On" : "Off") << "\n";
 }

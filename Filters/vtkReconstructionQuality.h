@@ -95,6 +95,25 @@
  *   (NaN when the spacing is 0 or undefined).
  * When one side is empty the distances are NaN (with a warning).
  *
+ * Reference normal angles (a reference surface connected, ComputeDistances on). They show
+ * triangles standing across the surface -- slivers of tiny area that the distances do not see
+ * but shading and curvature do.
+ * - `ReferenceNormalAngle` (cell data): the angle in degrees, 0 to 90, between the triangle's
+ *   normal and the normal of the reference triangle closest to the triangle's centroid (found by
+ *   the accuracy search above: the centroid is the first sample of every triangle; with
+ *   SamplesPerTriangle 0 the centroids are queried as well and left out of the accuracy).
+ *   Unoriented (the acute angle, atan2(|m x n|, |m . n|)), since the reference's orientation may
+ *   differ from the mesh's or be missing. Normals come from the two shorter edges of the
+ *   triangle (on coordinates scaled as for the distances). NaN for degenerate triangles (repeated
+ *   id or zero area), cells that are not analysed, and when the reference is a cloud.
+ * - `MeanReferenceNormalAngle`: the unweighted mean over the triangles with an angle: every
+ *   triangle counts once, so slivers standing across the surface raise it however small they
+ *   are. `AreaWeightedMeanReferenceNormalAngle`: the mean weighted by triangle area: the share of
+ *   the surface's area that is tilted, as the shading of large faces shows it. NaN with a
+ *   reference cloud or without such triangles.
+ * - `NumberOfStandingTriangles`: triangles whose angle is above StandingAngle; -1 with a
+ *   reference cloud.
+ *
  * Cost: the topology is O(T log T) for T triangles (one sort of the 3T half-edges), the fans
  * O(sum of point degrees); peak memory about 250 bytes per triangle. The distances cost about
  * (samples + triangles near them) x log(samples); memory about 40 bytes per sample and 260 per
@@ -158,12 +177,23 @@ public:
   ///@{
   /**
    * Compute the distances to the reference (point data DistanceToReference, field data
-   * Accuracy*, Completeness*, Hausdorff*, MeanSpacing). Default on. Only matters when a
-   * reference is connected to input port 1.
+   * Accuracy*, Completeness*, Hausdorff*, MeanSpacing) and, with a reference surface, the
+   * reference normal angles. Default on. Only matters when a reference is connected to input
+   * port 1.
    */
   vtkSetMacro(ComputeDistances, bool);
   vtkGetMacro(ComputeDistances, bool);
   vtkBooleanMacro(ComputeDistances, bool);
+  ///@}
+
+  ///@{
+  /**
+   * A triangle whose ReferenceNormalAngle is above this angle (degrees) counts in
+   * NumberOfStandingTriangles: it stands across the reference surface rather than along it.
+   * Default 60; range [0, 90]. Only matters with a reference surface and ComputeDistances on.
+   */
+  vtkSetClampMacro(StandingAngle, double, 0.0, 90.0);
+  vtkGetMacro(StandingAngle, double);
   ///@}
 
 protected:
@@ -175,6 +205,7 @@ protected:
 
   int SamplesPerTriangle = 3;
   bool ComputeDistances = true;
+  double StandingAngle = 60.0;
 
 private:
   vtkReconstructionQuality(const vtkReconstructionQuality&) = delete;

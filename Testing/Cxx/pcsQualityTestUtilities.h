@@ -67,7 +67,8 @@ using Counter = pcstest::MessageCounter;
 inline vtkSmartPointer<vtkPolyData> Run(vtkPolyData* mesh,
   vtkDataObject* reference = nullptr,
   int samples = 3,
-  Counter* counter = nullptr)
+  Counter* counter = nullptr,
+  double standingAngle = 60.0)
 {
   vtkNew<vtkReconstructionQuality> quality;
   Counter local;
@@ -84,6 +85,7 @@ inline vtkSmartPointer<vtkPolyData> Run(vtkPolyData* mesh,
   quality->SetInputData(mesh);
   quality->SetReferenceData(reference);
   quality->SetSamplesPerTriangle(samples);
+  quality->SetStandingAngle(standingAngle);
   quality->Update();
   auto output = vtkSmartPointer<vtkPolyData>::New();
   output->ShallowCopy(quality->GetOutput());

@@ -1747,6 +1747,11 @@ bool Front::Seed(Id p, const Parameters& parameters)
     {
       break;
     }
+    this->OutOfWork = this->Work > this->WorkBudget; // (the seeds' work counts too)
+    if (this->OutOfWork)
+    {
+      return false;
+    }
     const Id q = first.second;
     const Parameters atEdge = this->AtEdge(parameters, p, q);
     // Orientation from the normals: try (p, q, x); IsValid rejects the reversed orientation, so
@@ -1902,10 +1907,15 @@ private:
   {
     const int64_t open = this->Mesh.GetNumberOfBoundaryHalfEdges();
     std::vector<Id> peeled, larger, fill;
+    bool unfolded = true; // a triangle across the loop that the fold peel left
     for (bool onlyFolded : { true, false })
     {
+      if (!unfolded)
+      {
+        return; // the second peel would repeat the first
+      }
       peeled.clear();
-      const bool closed = this->PeelAcross(loop, onlyFolded, peeled) &&
+      const bool closed = this->PeelAcross(loop, onlyFolded, peeled, unfolded) &&
         this->LoopAround(peeled, larger) && this->Fill(larger, fill) && this->AddFill(fill);
       if (closed &&
         this->Mesh.GetNumberOfBoundaryHalfEdges() == open - static_cast<int64_t>(loop.size()))
@@ -1927,8 +1937,10 @@ private:
   // normal against the loop's vector area, oriented like its fill) are removed, except one whose
   // removal would leave a vertex with no triangle: no point leaves the mesh. Each removed triangle
   // is appended to `peeled` (its 3 vertices and its origin); false when none is removed.
-  bool PeelAcross(const std::vector<Id>& loop, bool onlyFolded, std::vector<Id>& peeled)
+  bool PeelAcross(
+    const std::vector<Id>& loop, bool onlyFolded, std::vector<Id>& peeled, bool& unfolded)
   {
+    unfolded = false;
     const size_t m = loop.size();
     double area[3]; // the vector area of the fill's loop (walked backwards)
     pcs::holes::LoopVectorArea(this->XYZ, std::vector<Id>(loop.rbegin(), loop.rend()), area);
@@ -1943,8 +1955,9 @@ private:
       const int32_t* v = this->Mesh.GetTriangle(t);
       double normal[3];
       pcs::projected::TriangleNormal(this->P(v[0]), this->P(v[1]), this->P(v[2]), normal);
-      if ((!onlyFolded || Dot(normal, area) < 0.0) &&
-        std::find(across.begin(), across.end(), t) == across.end())
+      const bool folded = Dot(normal, area) < 0.0;
+      unfolded = unfolded || !folded;
+      if ((!onlyFolded || folded) && std::find(across.begin(), across.end(), t) == across.end())
       {
         across.push_back(t);
       }

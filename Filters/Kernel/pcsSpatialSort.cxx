@@ -142,7 +142,7 @@ void SortKeys(std::vector<KeyedId>::iterator first,
     {
       ++end;
     }
-    if (end - run > 1)
+    if (end - run > 1 && !std::is_sorted(run, end)) // (ids given in order stay in order)
     {
       std::sort(run, end);
     }

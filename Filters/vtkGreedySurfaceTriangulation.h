@@ -415,7 +415,8 @@ public:
    * reach (mean distance to its 8 nearest points) is over 4 times the cloud's median reach and
    * over OutlierFactor times the median reach of its 8 nearest points that are not, unless it
    * lies on a sparse part of the surface (its 8 nearest sparse too and flat around it: see the
-   * peel's docs). With NumberOfNeighbors >= 8 the rule reads the filter's own nearest-neighbour
+   * peel's docs). A pile of near-coincident points (pcs::FindPiles) counts as one point with
+   * one verdict (see the peel's docs). With NumberOfNeighbors >= 8 the rule reads the filter's own nearest-neighbour
    * table (pcs::FlagOutliers; the table is then made again without the outliers), as
    * vtkLocalOptimumGrowth does; with fewer, its own search (pcs::RemoveOutliers). Default 8.0;
    * range [0, 1000]; 0: off.

@@ -354,7 +354,8 @@ public:
    * reach (mean distance to its 8 nearest points) is over 4 times the cloud's median reach and
    * over OutlierFactor times the median reach of its 8 nearest points that are not, unless it
    * lies on a sparse part of the surface (its 8 nearest sparse too and flat around it: see the
-   * peel's docs). Default 8.0;
+   * peel's docs). A pile of near-coincident points (pcs::FindPiles) counts as one point with
+   * one verdict (see the peel's docs). Default 8.0;
    * range [0, 1000]; 0: off. With NumberOfNeighbors >= 8 the rule reads the first 8 columns of
    * the K-neighbour table (no search of its own; the table is searched again without the
    * outliers when there are any).

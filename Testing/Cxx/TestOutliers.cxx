@@ -259,6 +259,50 @@ bool CheckPiles()
   }
   return true;
 }
+
+// Small piles (2 to 8 near-coincident points, as repeated returns of a scanner give): every third
+// point of a 1,000-point sphere repeated m - 1 more times within 1e-8 gives no outlier, and a
+// pile of m points far off the sphere is flagged whole (m outliers; before the piles counted
+// once, a far pile's reach was its own 1e-9 and it was never flagged).
+bool CheckSmallPiles()
+{
+  const std::vector<double> sphere = SpherePoints(1000, 10);
+  vtkNew<vtkPerimeterPeelSurface> peel;
+  vtkNew<vtkLocalOptimumGrowth> growth;
+  vtkNew<vtkGreedySurfaceTriangulation> greedy;
+  for (int m : { 2, 8 })
+  {
+    std::vector<double> xyz = sphere;
+    for (int i = 0; i < 1000; i += 3)
+    {
+      for (int j = 1; j < m; ++j)
+      {
+        const double step = 1e-9 * j;
+        const double p[3] = { sphere[3 * i] + step, sphere[3 * i + 1] + 2 * step,
+          sphere[3 * i + 2] - step };
+        xyz.insert(xyz.end(), p, p + 3);
+      }
+    }
+    std::vector<double> withFarPile = xyz;
+    for (int j = 0; j < m; ++j)
+    {
+      const double p[3] = { 3.0 + 1e-9 * j, -1e-9 * j, 2e-9 * j };
+      withFarPile.insert(withFarPile.end(), p, p + 3);
+    }
+    for (vtkPolyDataAlgorithm* filter : { static_cast<vtkPolyDataAlgorithm*>(peel),
+           static_cast<vtkPolyDataAlgorithm*>(growth),
+           static_cast<vtkPolyDataAlgorithm*>(greedy) })
+    {
+      const std::string name = filter->GetClassName();
+      const vtkIdType onSphere = FieldCount(Run(filter, xyz), "NumberOfOutliers");
+      PCS_CHECK(onSphere == 0,
+        name << ", piles of " << m << " on the sphere: " << onSphere << " outliers");
+      const vtkIdType far = FieldCount(Run(filter, withFarPile), "NumberOfOutliers");
+      PCS_CHECK(far == m, name << ", a far pile of " << m << ": " << far << " outliers");
+    }
+  }
+  return true;
+}
 } // namespace
 
 int TestOutliers(int, char*[])
@@ -270,5 +314,6 @@ int TestOutliers(int, char*[])
   ok = CheckCleanClouds() && ok;
   ok = CheckDensePatch() && ok;
   ok = CheckPiles() && ok;
+  ok = CheckSmallPiles() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

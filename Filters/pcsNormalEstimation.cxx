@@ -1,5 +1,6 @@
 #include "pcsNormalEstimation.h"
 
+#include "pcsDisjointSets.h"
 #include "pcsNearestNeighbors.h"
 #include "pcsSpatialSort.h"
 
@@ -408,27 +409,16 @@ SpanningForest MinimumSpanningForest(const double* pts,
   }
   std::vector<KeyedId> scratch;
   SortKeys(keyed.begin(), keyed.end(), 32, scratch, 11);
-  // Each edge that joins two trees is kept (union-find, the root the smaller id).
-  std::vector<Id> root(static_cast<size_t>(count));
-  std::iota(root.begin(), root.end(), 0);
-  auto find = [&](Id k)
-  {
-    while (root[k] != k)
-    {
-      k = root[k] = root[root[k]];
-    }
-    return k;
-  };
+  // Each edge that joins two trees is kept (union-find).
+  DisjointSets<Id> trees(count);
   SpanningForest forest;
   forest.Start.assign(static_cast<size_t>(count) + 1, 0);
   std::vector<KeyedId> tree;
   for (const KeyedId& edge : keyed)
   {
     const std::pair<Id, Id>& e = ends[edge.second];
-    const Id a = find(e.first), b = find(e.second);
-    if (a != b)
+    if (trees.Union(e.first, e.second))
     {
-      root[std::max(a, b)] = std::min(a, b);
       tree.push_back(edge);
       ++forest.Start[e.first + 1];
       ++forest.Start[e.second + 1];

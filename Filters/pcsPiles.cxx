@@ -1,5 +1,6 @@
 #include "pcsPiles.h"
 
+#include "pcsDisjointSets.h"
 #include "pcsNearestNeighbors.h"
 
 #include "vtkSMPTools.h"
@@ -143,13 +144,12 @@ int32_t FindPiles(const double* x,
           (a.Length == b.Length && (a.A < b.A || (a.A == b.A && a.B < b.B)));
       });
   }
-  // The merge tree: points 0..n-1, then one node per merge; `root` is the union-find over the
+  // The merge tree: points 0..n-1, then one node per merge; `sets` is the union-find over the
   // points, `top` the tree node of each union-find root.
-  std::vector<int32_t> root(n), top(n), parent(n, -1);
-  std::iota(root.begin(), root.end(), 0);
+  DisjointSets<int32_t> sets(n);
+  std::vector<int32_t> top(n), parent(n, -1);
   std::iota(top.begin(), top.end(), 0);
   std::vector<double> box(6 * static_cast<size_t>(n));
-  std::vector<int32_t> size(n, 1);
   for (int32_t i = 0; i < n; ++i)
   {
     for (int c = 0; c < 3; ++c)
@@ -157,43 +157,32 @@ int32_t FindPiles(const double* x,
       box[6 * i + 2 * c] = box[6 * i + 2 * c + 1] = x[3 * static_cast<size_t>(i) + c];
     }
   }
-  auto findRoot = [&](int32_t i)
-  {
-    while (root[i] != i)
-    {
-      i = root[i] = root[root[i]];
-    }
-    return i;
-  };
   auto diagonal = [&](int32_t r) { return BoxDiagonal(&box[6 * static_cast<size_t>(r)]); };
   std::vector<uint8_t> pile(n, 0); // by tree node
   for (const Edge& e : edges)
   {
-    int32_t a = findRoot(e.A), b = findRoot(e.B);
+    const int32_t a = sets.Find(e.A), b = sets.Find(e.B);
     if (a == b)
     {
       continue;
     }
     for (const int32_t r : { a, b })
     {
-      pile[top[r]] = pile[top[r]] || (size[r] > 1 && diagonal(r) < PileRatio * e.Length);
+      pile[top[r]] = pile[top[r]] || (sets.GetSize(r) > 1 && diagonal(r) < PileRatio * e.Length);
     }
-    if (size[a] < size[b])
-    {
-      std::swap(a, b);
-    }
-    root[b] = a;
-    size[a] += size[b];
+    const int32_t kept = sets.Link(a, b);
+    const int32_t absorbed = kept == a ? b : a;
     for (int c = 0; c < 3; ++c)
     {
-      box[6 * a + 2 * c] = std::min(box[6 * a + 2 * c], box[6 * b + 2 * c]);
-      box[6 * a + 2 * c + 1] = std::max(box[6 * a + 2 * c + 1], box[6 * b + 2 * c + 1]);
+      box[6 * kept + 2 * c] = std::min(box[6 * kept + 2 * c], box[6 * absorbed + 2 * c]);
+      box[6 * kept + 2 * c + 1] =
+        std::max(box[6 * kept + 2 * c + 1], box[6 * absorbed + 2 * c + 1]);
     }
     const int32_t node = static_cast<int32_t>(parent.size());
     parent[top[a]] = parent[top[b]] = node;
     parent.push_back(-1);
     pile.push_back(0);
-    top[a] = node;
+    top[kept] = node;
   }
   // Each point's largest pile (a node's parent is made after it: top-down from the last node).
   std::vector<int32_t> pileOf(parent.size(), -1);
@@ -215,7 +204,8 @@ int32_t FindPiles(const double* x,
   std::vector<int32_t> partRoots;
   for (int32_t i = 0; i < n; ++i)
   {
-    if (findRoot(i) == i && size[i] > 1 && size[i] < n && diagonal(i) < PileRatio * cloudDiagonal)
+    if (sets.Find(i) == i && sets.GetSize(i) > 1 && sets.GetSize(i) < n &&
+      diagonal(i) < PileRatio * cloudDiagonal)
     {
       partRoots.push_back(i);
     }
@@ -236,7 +226,7 @@ int32_t FindPiles(const double* x,
       if (pileOf[i] < 0 && last >= 0)
       {
         all.push_back(PointDistance(x, i, last));
-        const int32_t p = partOf[findRoot(i)];
+        const int32_t p = partOf[sets.Find(i)];
         if (p >= 0)
         {
           byPart[p].push_back(all.back());
@@ -281,8 +271,8 @@ int32_t FindPiles(const double* x,
         int32_t inside = 0; // (the walk stops at the first point beyond the part's own)
         bins.ForEachPointWithinRadius(d * (1.0 + 1.0 / PileRatio),
           &x[3 * static_cast<size_t>(r)],
-          [&](int32_t, double) { return ++inside <= size[r]; });
-        pile[top[r]] = pile[top[r]] || inside == size[r];
+          [&](int32_t, double) { return ++inside <= sets.GetSize(r); });
+        pile[top[r]] = pile[top[r]] || inside == sets.GetSize(r);
       }
     }
     findLargestPiles();

@@ -1,6 +1,7 @@
 #include "vtkGreedySurfaceTriangulation.h"
 
 #include "pcsCoordinateScaling.h"
+#include "pcsDisjointSets.h"
 #include "pcsDuplicatePoints.h"
 #include "pcsFieldData.h"
 #include "pcsFrontGrowth.h"
@@ -1527,31 +1528,23 @@ void Reconstruction::RemoveHandleStrips()
 // the id of a vertex of its piece (the vertex itself when it has no triangle).
 std::vector<int32_t> Reconstruction::VertexPieces() const
 {
-  std::vector<int32_t> parent(static_cast<size_t>(this->N));
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&parent](int32_t x) {
-    while (parent[x] != x)
-    {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  };
+  pcs::DisjointSets<int32_t> pieces(this->N);
   const int64_t ids = this->Mesh.GetNumberOfTriangleIds();
   for (int64_t t = 0; t < ids; ++t)
   {
     if (!this->Mesh.IsTriangleRemoved(t))
     {
       const int32_t* tri = this->Mesh.GetTriangle(t);
-      parent[find(tri[1])] = find(tri[0]);
-      parent[find(tri[2])] = find(tri[0]);
+      pieces.Union(tri[0], tri[1]);
+      pieces.Union(tri[0], tri[2]);
     }
   }
+  std::vector<int32_t> piece(static_cast<size_t>(this->N));
   for (int32_t v = 0; v < this->N; ++v)
   {
-    parent[v] = find(v);
+    piece[v] = pieces.Find(v);
   }
-  return parent;
+  return piece;
 }
 
 // Connected components of the mesh triangles (through shared edges), per vertex.
@@ -2054,16 +2047,15 @@ public:
   {
     const int32_t components =
       1 + (component.empty() ? -1 : *std::max_element(component.begin(), component.end()));
-    this->Parent.resize(std::max(components, 0));
-    std::iota(this->Parent.begin(), this->Parent.end(), 0);
-    this->Members.resize(this->Parent.size());
+    this->Groups.Reset(std::max(components, 0));
+    this->Members.resize(this->Groups.GetNumberOfIds());
     for (int32_t c = 0; c < components; ++c)
     {
       this->Members[c].push_back(c);
     }
-    this->Reversed.assign(this->Parent.size(), 0);
-    this->GroupReversed.assign(this->Parent.size(), 0);
-    this->NodesOfComponent.resize(this->Parent.size());
+    this->Reversed.assign(this->Members.size(), 0);
+    this->GroupReversed.assign(this->Members.size(), 0);
+    this->NodesOfComponent.resize(this->Members.size());
     this->Size.assign(loops, 0);
     for (int32_t n = 0; n < static_cast<int32_t>(nodes.size()); ++n)
     {
@@ -2074,25 +2066,20 @@ public:
   }
 
   // The group of component c.
-  int32_t Find(int32_t c)
-  {
-    while (this->Parent[c] != c)
-    {
-      c = this->Parent[c] = this->Parent[this->Parent[c]];
-    }
-    return c;
-  }
-  // Group gb joins group ga; its components keep their orientation.
+  int32_t Find(int32_t c) { return this->Groups.Find(c); }
+  // Groups ga and gb (distinct) become one; every component keeps its orientation (those of the
+  // smaller group are moved into the larger).
   void Join(int32_t ga, int32_t gb)
   {
-    this->Parent[gb] = ga;
-    for (int32_t c : this->Members[gb])
+    const int32_t kept = this->Groups.Link(ga, gb);
+    const int32_t moved = kept == ga ? gb : ga;
+    for (int32_t c : this->Members[moved])
     {
-      this->Reversed[c] ^= this->GroupReversed[ga] ^ this->GroupReversed[gb];
+      this->Reversed[c] ^= this->GroupReversed[kept] ^ this->GroupReversed[moved];
     }
-    this->Members[ga].insert(
-      this->Members[ga].end(), this->Members[gb].begin(), this->Members[gb].end());
-    this->Members[gb].clear();
+    this->Members[kept].insert(
+      this->Members[kept].end(), this->Members[moved].begin(), this->Members[moved].end());
+    this->Members[moved].clear();
   }
   void Reverse(int32_t g) { this->GroupReversed[g] ^= 1; }
 
@@ -2156,7 +2143,7 @@ public:
   // and the links of its nodes.
   void Finish(pcs::SurfaceMesh& mesh, const std::vector<int64_t>& seeds)
   {
-    for (int32_t c = 0; c < static_cast<int32_t>(this->Parent.size()); ++c)
+    for (int32_t c = 0; c < static_cast<int32_t>(this->Members.size()); ++c)
     {
       if (this->Reversed[c] ^ this->GroupReversed[this->Find(c)])
       {
@@ -2210,8 +2197,8 @@ private:
 
   std::vector<Node>& Nodes;
   const std::vector<int32_t>& Component; // per vertex
-  std::vector<int32_t> Parent;           // per component
-  std::vector<std::vector<int32_t>> Members;
+  pcs::DisjointSets<int32_t> Groups;     // of components
+  std::vector<std::vector<int32_t>> Members; // per group root: its components
   std::vector<uint8_t> Reversed;      // per component, relative to its group
   std::vector<uint8_t> GroupReversed; // per group root
   std::vector<std::vector<int32_t>> NodesOfComponent;
@@ -3992,26 +3979,18 @@ void Reconstruction::RefineAndFairFills(std::vector<int32_t>& triangles,
   std::vector<int64_t> fill; // fill index -> triangle index in `triangles`
   {
     std::vector<int64_t> all;
-    std::unordered_map<uint64_t, int64_t> firstOnEdge;
-    std::vector<int64_t> parent;
-    std::function<int64_t(int64_t)> find = [&](int64_t x) {
-      while (parent[x] != x)
-      {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-      }
-      return x;
-    };
     for (size_t t = 0; t < count; ++t)
     {
-      if (!isFill(t))
+      if (isFill(t))
       {
-        continue;
+        all.push_back(static_cast<int64_t>(t));
       }
-      const int64_t f = static_cast<int64_t>(all.size());
-      all.push_back(static_cast<int64_t>(t));
-      parent.push_back(f);
-      const int32_t* tri = &triangles[3 * t];
+    }
+    std::unordered_map<uint64_t, int64_t> firstOnEdge;
+    pcs::DisjointSets<int64_t> patches(static_cast<int64_t>(all.size()));
+    for (int64_t f = 0; f < static_cast<int64_t>(all.size()); ++f)
+    {
+      const int32_t* tri = &triangles[3 * all[f]];
       for (int j = 0; j < 3; ++j)
       {
         const int32_t a = tri[j], b = tri[(j + 1) % 3];
@@ -4020,7 +3999,7 @@ void Reconstruction::RefineAndFairFills(std::vector<int32_t>& triangles,
         auto it = firstOnEdge.emplace(k, f);
         if (!it.second)
         {
-          parent[find(f)] = find(it.first->second);
+          patches.Union(f, it.first->second);
         }
       }
     }
@@ -4045,12 +4024,12 @@ void Reconstruction::RefineAndFairFills(std::vector<int32_t>& triangles,
       const double d = nearest >= 0 ? Distance(c, this->P(static_cast<int32_t>(nearest))) : 0.0;
       if (d > emptyFactor * sc)
       {
-        empty[find(static_cast<int64_t>(f))] = 1;
+        empty[patches.Find(static_cast<int64_t>(f))] = 1;
       }
     }
     for (size_t f = 0; f < all.size(); ++f)
     {
-      if (empty[find(static_cast<int64_t>(f))])
+      if (empty[patches.Find(static_cast<int64_t>(f))])
       {
         fill.push_back(all[f]);
       }

@@ -1,6 +1,7 @@
 #include "vtkLocalOptimumGrowth.h"
 
 #include "pcsCoordinateScaling.h"
+#include "pcsDisjointSets.h"
 #include "pcsDuplicatePoints.h"
 #include "pcsFieldData.h"
 #include "pcsFrontGrowth.h"
@@ -364,18 +365,10 @@ private:
       this->TouchedSinceRetry.push_back(v);
     }
   }
-  int32_t FindLabel(int32_t label)
-  {
-    while (this->LabelParent[label] != label)
-    {
-      label = this->LabelParent[label] = this->LabelParent[this->LabelParent[label]];
-    }
-    return label;
-  }
   int32_t TriangleLabel(int64_t t)
   {
     return t >= 0 && t < static_cast<int64_t>(this->Labels.size())
-      ? this->FindLabel(this->Labels[t])
+      ? this->LabelSets.Find(this->Labels[t])
       : -1;
   }
 
@@ -409,7 +402,7 @@ private:
   std::vector<uint64_t> Touched;
   uint64_t Clock = 1;
   std::vector<int32_t> Labels;      // per triangle id: seed label
-  std::vector<int32_t> LabelParent; // union-find over the seed labels
+  pcs::DisjointSets<int32_t> LabelSets; // union-find over the seed labels
   std::vector<char> LabelReversed;  // per root label: its part was reversed once already
   std::vector<char> SeedFailed;
   size_t SeedCursor = 0;
@@ -849,14 +842,14 @@ void Grower::Register(int64_t t)
     }
     else if (other != label)
     {
-      this->LabelParent[other] = label;
-      this->LabelReversed[label] = this->LabelReversed[label] | this->LabelReversed[other];
+      const char reversed = this->LabelReversed[label] | this->LabelReversed[other];
+      label = this->LabelSets.Link(label, other);
+      this->LabelReversed[label] = reversed;
     }
   }
   if (label < 0)
   {
-    label = static_cast<int32_t>(this->LabelParent.size());
-    this->LabelParent.push_back(label);
+    label = this->LabelSets.Add();
     this->LabelReversed.push_back(0);
   }
   if (static_cast<int64_t>(this->Labels.size()) <= t)

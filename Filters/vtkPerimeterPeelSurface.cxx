@@ -2,6 +2,7 @@
 
 #include "pcsCoordinateScaling.h"
 #include "pcsDelaunay3D.h"
+#include "pcsDisjointSets.h"
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 #include "pcsOutliers.h"
@@ -1096,16 +1097,8 @@ private:
     {
       this->Label.resize(this->Stamp.size());
     }
-    std::vector<int64_t> root, pending;
-    auto find = [&root](int64_t i)
-    {
-      while (root[i] != i)
-      {
-        root[i] = root[root[i]];
-        i = root[i];
-      }
-      return i;
-    };
+    this->Searches.Reset(0);
+    std::vector<int64_t> pending; // per search root: its cells still to visit
     for (int64_t g : this->Group)
     {
       for (int k = 0; k < 4; ++k)
@@ -1114,18 +1107,17 @@ private:
         if (this->Solid.IsInside(n) == inside && this->Stamp[n] != this->Generation)
         {
           this->Stamp[n] = this->Generation;
-          this->Label[n] = static_cast<int32_t>(root.size());
-          root.push_back(static_cast<int64_t>(root.size()));
+          this->Label[n] = static_cast<int32_t>(this->Searches.Add());
           pending.push_back(1);
           this->Fill.push_back(n);
         }
       }
     }
-    int64_t components = static_cast<int64_t>(root.size());
+    int64_t components = this->Searches.GetNumberOfIds();
     for (size_t head = 0; head < this->Fill.size() && components > 1; ++head)
     {
       const int64_t c = this->Fill[head];
-      int64_t r = find(this->Label[c]);
+      int64_t r = this->Searches.Find(this->Label[c]);
       for (int k = 0; k < 4; ++k)
       {
         const int64_t n = this->DT.Neighbor(c, k);
@@ -1142,11 +1134,12 @@ private:
         }
         else
         {
-          const int64_t other = find(this->Label[n]);
+          const int64_t other = this->Searches.Find(this->Label[n]);
           if (other != r)
           {
-            root[other] = r;
-            pending[r] += pending[other];
+            const int64_t merged = pending[r] + pending[other];
+            r = this->Searches.Link(r, other);
+            pending[r] = merged;
             --components;
           }
         }
@@ -1450,8 +1443,10 @@ private:
   int64_t BadCount = 0;      // vertices of the group found non-manifold when last checked
   int64_t DirtyBadCount = 0; // those of them whose cells changed since
   std::vector<int64_t> Stack, Fill;
-  // Search of each cell stamped in StaysConnected (sized to the cells at its first call).
+  // Search of each cell stamped in StaysConnected (sized to the cells at its first call), and the
+  // searches that met (union-find).
   std::vector<int32_t> Label;
+  pcs::DisjointSets<int64_t> Searches;
   std::vector<int32_t> EdgeEnds;
   std::vector<std::pair<int32_t, int64_t>> VertexCells;
   // A group may leave a point in no cell when the point's last cell holds it by facets over

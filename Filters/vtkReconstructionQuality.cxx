@@ -4,6 +4,7 @@
 #include "pcsGatherInput.h"
 
 #include "pcsCoordinateScaling.h"
+#include "pcsDisjointSets.h"
 #include "pcsDuplicatePoints.h"
 #include "pcsProjectedTests.h"
 
@@ -263,35 +264,6 @@ long double TwiceArea(const double a[3], const double b[3], const double c[3])
   return std::ldexp(static_cast<long double>(vtkMath::Norm(w)), -2 * exponent);
 }
 
-struct DisjointSets
-{
-  std::vector<vtkIdType> Parent;
-
-  void Reset(vtkIdType n)
-  {
-    this->Parent.resize(n);
-    std::iota(this->Parent.begin(), this->Parent.end(), vtkIdType(0));
-  }
-  vtkIdType Find(vtkIdType i)
-  {
-    while (this->Parent[i] != i)
-    {
-      this->Parent[i] = this->Parent[this->Parent[i]]; // path halving
-      i = this->Parent[i];
-    }
-    return i;
-  }
-  void Union(vtkIdType a, vtkIdType b)
-  {
-    a = this->Find(a);
-    b = this->Find(b);
-    if (a != b)
-    {
-      this->Parent[std::max(a, b)] = std::min(a, b);
-    }
-  }
-};
-
 //------------------------------------------------------------------------------------------------
 // Edge topology of the non-collapsed triangles.
 struct HalfEdge
@@ -518,7 +490,7 @@ struct FanFunctor
   struct Scratch
   {
     std::vector<std::pair<vtkIdType, vtkIdType>> EdgeTriangle; // (edge, local triangle)
-    DisjointSets Sets;
+    pcs::DisjointSets<vtkIdType> Sets;
   };
   vtkSMPThreadLocal<Scratch> Local;
 
@@ -1817,8 +1789,7 @@ int vtkReconstructionQuality::RequestData(
   }
 
   // Connected components through shared edges.
-  DisjointSets components;
-  components.Reset(numberOfTriangles);
+  pcs::DisjointSets<vtkIdType> components(numberOfTriangles);
   for (vtkIdType e = 0; e < numberOfEdges; ++e)
   {
     for (vtkIdType h = topology.EdgeOffsets[e] + 1; h < topology.EdgeOffsets[e + 1]; ++h)

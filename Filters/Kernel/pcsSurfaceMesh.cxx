@@ -1,9 +1,9 @@
 #include "pcsSurfaceMesh.h"
 
+#include "pcsDisjointSets.h"
+
 #include <algorithm>
-#include <functional>
 #include <map>
-#include <numeric>
 #include <sstream>
 #include <utility>
 
@@ -926,11 +926,7 @@ bool SurfaceMesh::CheckConsistency(std::string* why) const
       }
     }
     // Fans: triangles at v linked when they share an edge {v, x}.
-    std::vector<size_t> parent(tris.size());
-    std::iota(parent.begin(), parent.end(), size_t(0));
-    std::function<size_t(size_t)> root = [&](size_t i) {
-      return parent[i] == i ? i : (parent[i] = root(parent[i]));
-    };
+    DisjointSets<int64_t> fansAt(static_cast<int64_t>(tris.size()));
     bool open = false;
     for (size_t i = 0; i < tris.size(); ++i)
     {
@@ -952,7 +948,7 @@ bool SurfaceMesh::CheckConsistency(std::string* why) const
           const int32_t* u = this->GetTriangle(tris[k]);
           if (u[0] == w[j] || u[1] == w[j] || u[2] == w[j])
           {
-            parent[root(i)] = root(k);
+            fansAt.Union(static_cast<int64_t>(i), static_cast<int64_t>(k));
             shared = true;
           }
         }
@@ -962,7 +958,7 @@ bool SurfaceMesh::CheckConsistency(std::string* why) const
     int fans = 0;
     for (size_t i = 0; i < tris.size(); ++i)
     {
-      fans += root(i) == i ? 1 : 0;
+      fans += fansAt.Find(static_cast<int64_t>(i)) == static_cast<int64_t>(i) ? 1 : 0;
     }
     const VertexState expected =
       tris.empty() ? VertexState::Free : (open ? VertexState::Boundary : VertexState::Interior);

@@ -9,6 +9,31 @@ namespace pcs
 {
 namespace projected
 {
+namespace
+{
+// The second point q = p + s d of the line through p along d, with s a power of two (exact) that
+// makes s d about as large as p's largest coordinate when d is shorter than that. The rounding of
+// the sum then tilts the line by a few units in the last place, however short d is: a short
+// direction added to large coordinates (a small object far from the origin, a cross product of
+// short edges) would otherwise be rounded away or turned.
+void PointAlong(const double* p, const double* d, double* q)
+{
+  const double largestP = std::max({ std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
+  const double largestD = std::max({ std::fabs(d[0]), std::fabs(d[1]), std::fabs(d[2]) });
+  int shift = 0;
+  if (largestD > 0.0 && largestD < largestP && std::isfinite(largestP))
+  {
+    int exponentP, exponentD;
+    std::frexp(largestP, &exponentP);
+    std::frexp(largestD, &exponentD);
+    shift = exponentP - exponentD;
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    q[c] = p[c] + std::ldexp(d[c], shift);
+  }
+}
+} // namespace
 
 bool Collinear(const double* a, const double* b, const double* c)
 {
@@ -42,7 +67,8 @@ bool OnOpenSegment3D(const double* a, const double* b, const double* p)
 bool LineCrossesTriangle(
   const double* p, const double* n, const double* a, const double* b, const double* c)
 {
-  const double q[3] = { p[0] + n[0], p[1] + n[1], p[2] + n[2] };
+  double q[3];
+  PointAlong(p, n, q);
   if (q[0] == p[0] && q[1] == p[1] && q[2] == p[2])
   {
     return false; // no direction
@@ -62,7 +88,8 @@ bool LineCrossesTriangle(
 
 int EdgePlaneSide(const double* a, const double* b, const double* normal, const double* x)
 {
-  const double m[3] = { a[0] + normal[0], a[1] + normal[1], a[2] + normal[2] };
+  double m[3];
+  PointAlong(a, normal, m);
   return predicates::Orient3D(a, b, m, x);
 }
 

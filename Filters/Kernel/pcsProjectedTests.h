@@ -30,8 +30,9 @@ bool OnOpenSegment3D(const double* a, const double* b, const double* p);
 
 /// Paper 003, section II.D.1, as a crossing test: the projection of p along the direction n (or
 /// its reverse) onto the plane of the triangle abc falls strictly inside the triangle. This is
-/// the crossing of the open triangle by the line through p and q = p + n (q rounded once),
-/// decided exactly: the three orientations (p, q, a, b), (p, q, b, c), (p, q, c, a) have the
+/// the crossing of the open triangle by the line through p and q = p + 2^k n (q rounded once;
+/// 2^k makes 2^k n about as large as p's largest coordinate when n is shorter, so that a short n
+/// far from the origin is not rounded away), decided exactly: the three orientations (p, q, a, b), (p, q, b, c), (p, q, c, a) have the
 /// same non-zero sign. A line parallel to the plane, or through an edge or a vertex, does not
 /// cross.
 bool LineCrossesTriangle(
@@ -65,7 +66,8 @@ inline bool RayParameter(const double* p,
 
 /// Paper 003, section II.C.3: side of x with respect to the edge plane of the edge ab, the plane
 /// through a and b perpendicular to the plane of a triangle with normal `normal` (the plane
-/// through a, b and a + normal, that point rounded once): +1, -1, or 0 on the plane. Exact for
+/// through a, b and a + 2^k normal, that point rounded once, 2^k as in LineCrossesTriangle): +1,
+/// -1, or 0 on the plane. Exact for
 /// that plane. Two points are on different sides when the product of their sides is negative.
 int EdgePlaneSide(const double* a, const double* b, const double* normal, const double* x);
 

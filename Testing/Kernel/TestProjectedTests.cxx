@@ -15,6 +15,10 @@
 //      crosses the open triangle, against the exact intersection of CGAL's Line_3 and Triangle_3;
 //    - EdgePlaneSide against CGAL's exact orientation with the same plane point a + normal;
 //    - Collinear against CGAL::collinear.
+// 3. A small configuration far from the origin (spacing 10^-9 of the coordinates) with directions
+//    far shorter than the coordinates (a cross product of short edges, a tiny normal): the
+//    constructed second point must not round them away (EdgePlaneSide against CGAL with the
+//    exact point a + normal, LineCrossesTriangle on lines that clearly cross or miss).
 #include "pcsKernelTest.h"
 #include "pcsProjectedTests.h"
 
@@ -346,6 +350,53 @@ void TestEdgePlaneAndCollinear(unsigned seed, int rounds)
   c[2] = std::nextafter(c[2], 10.0);
   EXPECT(!T::Collinear(a.data(), b.data(), c.data()), "one ulp off the line is not collinear");
 }
+
+void TestFarFromOrigin(unsigned seed, int rounds)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const Vec3 centre{ 10.0, -20.0, 5.0 };
+  const double h = 1e-8;
+  auto near = [&]() {
+    return Vec3{ centre[0] + h * unit(rng), centre[1] + h * unit(rng), centre[2] + h * unit(rng) };
+  };
+  int compared = 0;
+  for (int round = 0; round < rounds; ++round)
+  {
+    const Vec3 a = near(), b = near(), x = near();
+    const Vec3 u{ b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const Vec3 w{ h * unit(rng), h * unit(rng), h * unit(rng) };
+    const Vec3 normal{ u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+      u[0] * w[1] - u[1] * w[0] }; // about 10^-16: below the coordinates' last place
+    const K::Point_3 m(K::Point_3(a[0], a[1], a[2]) + K::Vector_3(normal[0], normal[1], normal[2]));
+    // The exact plane through a, b, a + normal; skip points within 10^-6 h of it (where the
+    // rounding of the constructed point may decide).
+    const K::Plane_3 plane(P3(a), P3(b), m);
+    const K::Vector_3 perpendicular = plane.orthogonal_vector();
+    const double distance = CGAL::to_double((P3(x) - P3(a)) * perpendicular) /
+      std::sqrt(CGAL::to_double(perpendicular.squared_length()));
+    if (!(std::fabs(distance) > 1e-6 * h))
+    {
+      continue;
+    }
+    ++compared;
+    const int expected = static_cast<int>(CGAL::orientation(P3(a), P3(b), m, P3(x)));
+    const int got = T::EdgePlaneSide(a.data(), b.data(), normal.data(), x.data());
+    EXPECT(got == -expected, "far EdgePlaneSide " << got << " vs CGAL " << expected);
+  }
+  EXPECT(compared > rounds / 2, "too few far configurations compared: " << compared);
+  // A line along a tiny direction through a point above the centre of a small far triangle
+  // crosses it; one beside the triangle does not.
+  const Vec3 t0{ centre[0], centre[1], centre[2] }, t1{ centre[0] + h, centre[1], centre[2] },
+    t2{ centre[0], centre[1] + h, centre[2] };
+  const Vec3 tiny{ 1e-18, -2e-18, -1e-17 };
+  const Vec3 above{ centre[0] + 0.3 * h, centre[1] + 0.3 * h, centre[2] + 0.5 * h };
+  const Vec3 beside{ centre[0] + 2 * h, centre[1] + 2 * h, centre[2] + 0.5 * h };
+  EXPECT(T::LineCrossesTriangle(above.data(), tiny.data(), t0.data(), t1.data(), t2.data()),
+    "a tiny direction far from the origin: the line through the triangle does not cross it");
+  EXPECT(!T::LineCrossesTriangle(beside.data(), tiny.data(), t0.data(), t1.data(), t2.data()),
+    "a tiny direction far from the origin: the line beside the triangle crosses it");
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -356,6 +407,7 @@ int main(int argc, char* argv[])
   TestTiltedPlane(2, rounds);
   TestLinesRandom(3, rounds);
   TestEdgePlaneAndCollinear(4, rounds);
+  TestFarFromOrigin(5, rounds / 10);
   std::cout << Checks << " checks, " << Failures << " failure(s)" << std::endl;
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -2,11 +2,13 @@
 
 #include "pcsDisjointSets.h"
 #include "pcsNearestNeighbors.h"
+#include "pcsSpatialSort.h"
 
 #include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 
@@ -70,6 +72,56 @@ bool MayHoldPiles(const double* x,
   return std::find(found.begin(), found.end(), 1) != found.end();
 }
 
+// An edge of the table's graph: its ends A < B.
+struct Edge
+{
+  double Length;
+  int32_t A, B;
+};
+
+// Sorts the edges by length, then A, then B: radix-sorted by the bits of their lengths (SortKeys;
+// non-negative doubles order as their bits do), then each run of equal lengths by its ends.
+void SortByLength(std::vector<Edge>& edges)
+{
+  auto shorter = [](const Edge& a, const Edge& b)
+  {
+    return a.Length < b.Length ||
+      (a.Length == b.Length && (a.A < b.A || (a.A == b.A && a.B < b.B)));
+  };
+  if (edges.size() > static_cast<size_t>(std::numeric_limits<int32_t>::max()))
+  {
+    std::sort(edges.begin(), edges.end(), shorter); // (more edges than SortKeys' ids hold)
+    return;
+  }
+  std::vector<KeyedId> keyed(edges.size());
+  for (size_t e = 0; e < edges.size(); ++e)
+  {
+    uint64_t bits;
+    std::memcpy(&bits, &edges[e].Length, sizeof bits);
+    keyed[e] = { bits, static_cast<int32_t>(e) };
+  }
+  std::vector<KeyedId> scratch;
+  SortKeys(keyed.begin(), keyed.end(), 64, scratch);
+  std::vector<Edge> sorted(edges.size());
+  for (size_t e = 0; e < edges.size(); ++e)
+  {
+    sorted[e] = edges[keyed[e].second];
+  }
+  for (auto run = sorted.begin(); run != sorted.end();)
+  {
+    auto end = run + 1;
+    while (end != sorted.end() && end->Length == run->Length)
+    {
+      ++end;
+    }
+    if (end - run > 1)
+    {
+      std::sort(run, end, shorter);
+    }
+    run = end;
+  }
+  edges.swap(sorted);
+}
 }
 
 int32_t FindPiles(const double* x,
@@ -84,11 +136,6 @@ int32_t FindPiles(const double* x,
     groupOf.clear();
     return n;
   }
-  struct Edge
-  {
-    double Length;
-    int32_t A, B;
-  };
   auto inRow = [&](int32_t row, int32_t id)
   {
     const int32_t* r = &knn[static_cast<size_t>(row) * width];
@@ -136,13 +183,7 @@ int32_t FindPiles(const double* x,
   // (only separate parts of the graph can be piles).
   if (shortest < PileRatio * longest)
   {
-    vtkSMPTools::Sort(edges.begin(),
-      edges.end(),
-      [](const Edge& a, const Edge& b)
-      {
-        return a.Length < b.Length ||
-          (a.Length == b.Length && (a.A < b.A || (a.A == b.A && a.B < b.B)));
-      });
+    SortByLength(edges);
   }
   // The merge tree: points 0..n-1, then one node per merge; `sets` is the union-find over the
   // points, `top` the tree node of each union-find root.

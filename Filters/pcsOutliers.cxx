@@ -124,7 +124,7 @@ vtkSmartPointer<vtkStaticPointLocator> SurfaceSampleLocator(const double* xyz, i
   return locator;
 }
 
-// The rule of FlagOutliers on points without piles.
+// The rule of FlagOutliersAndPiles on points without piles.
 int64_t FlagOutliersOfPositions(const double* x,
   int32_t n,
   const std::vector<int32_t>& knn,
@@ -235,58 +235,84 @@ int64_t FlagOutliersOfPositions(const double* x,
 }
 }
 
-int64_t FlagOutliers(const double* x,
+int64_t FlagOutliersAndPiles(const double* x,
   int32_t n,
   const std::vector<int32_t>& knn,
   int width,
   double factor,
-  std::vector<uint8_t>& far)
+  std::vector<uint8_t>& far,
+  std::vector<int32_t>& firstOf,
+  int64_t& copies)
 {
   far.assign(static_cast<size_t>(std::max(n, 0)), 0);
+  firstOf.clear();
+  copies = 0;
   const int k = OutlierNeighbors;
+  static_assert(PileNeighbors <= OutlierNeighbors, "the table holds the piles' neighbours");
+  std::vector<int32_t> groupOf;
+  const int32_t groups = n > PileNeighbors ? FindPiles(x, n, knn, width, groupOf) : n;
+  int64_t count = 0;
   if (!(factor > 0.0) || n < 4 * k || width < k)
   {
-    return 0;
+    // (no outlier rule)
   }
-  std::vector<int32_t> groupOf;
-  static_assert(PileNeighbors <= OutlierNeighbors, "the table holds the piles' neighbours");
-  const int32_t groups = FindPiles(x, n, knn, width, groupOf);
-  if (groups == n)
+  else if (groups == n)
   {
-    return FlagOutliersOfPositions(x, n, knn, width, factor, far);
+    count = FlagOutliersOfPositions(x, n, knn, width, factor, far);
   }
-  // Each pile as one position (its first point), with the table made again over the positions.
-  if (groups < 4 * k)
+  else if (groups >= 4 * k)
   {
-    return 0;
+    // Each pile as one position (its first point), with the table made again over the positions.
+    std::vector<double> positions(3 * static_cast<size_t>(groups));
+    for (int32_t i = n; i-- > 0;)
+    {
+      std::copy_n(
+        &x[3 * static_cast<size_t>(i)], 3, &positions[3 * static_cast<size_t>(groupOf[i])]);
+    }
+    std::vector<int32_t> positionKnn;
+    std::vector<uint8_t> farPosition;
+    if (FindNearestNeighbors(SurfaceSampleLocator(positions.data(), groups),
+          positions.data(),
+          groups,
+          k,
+          positionKnn) &&
+      FlagOutliersOfPositions(positions.data(), groups, positionKnn, k, factor, farPosition) > 0)
+    {
+      for (int32_t i = 0; i < n; ++i)
+      {
+        far[i] = farPosition[groupOf[i]];
+        count += far[i];
+      }
+    }
   }
-  std::vector<double> positions(3 * static_cast<size_t>(groups));
-  for (int32_t i = n; i-- > 0;)
+  // The piles that are not outliers, as duplicates (a far pile is flagged whole).
+  if (groups < n && FirstOfPiles(groupOf, firstOf) > 0)
   {
-    std::copy_n(&x[3 * static_cast<size_t>(i)], 3, &positions[3 * static_cast<size_t>(groupOf[i])]);
-  }
-  std::vector<int32_t> positionKnn;
-  std::vector<uint8_t> farPosition;
-  if (!FindNearestNeighbors(
-        SurfaceSampleLocator(positions.data(), groups), positions.data(), groups, k, positionKnn) ||
-    FlagOutliersOfPositions(positions.data(), groups, positionKnn, k, factor, farPosition) == 0)
-  {
-    return 0;
-  }
-  int64_t count = 0;
-  for (int32_t i = 0; i < n; ++i)
-  {
-    far[i] = farPosition[groupOf[i]];
-    count += far[i];
+    for (int32_t i = 0; i < n; ++i)
+    {
+      firstOf[i] = far[i] ? i : firstOf[i];
+      copies += firstOf[i] != i ? 1 : 0;
+    }
+    if (copies == 0)
+    {
+      firstOf.clear();
+    }
   }
   return count;
 }
 
-int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double factor,
-  std::vector<uint8_t>& outlier, const std::function<bool(double)>& progress)
+int64_t FindOutliersAndPiles(const double* xyz,
+  const std::vector<int32_t>& ids,
+  double factor,
+  std::vector<uint8_t>& outlier,
+  std::vector<int32_t>& firstOf,
+  int64_t& copies,
+  const std::function<bool(double)>& progress)
 {
   outlier.assign(ids.size(), 0);
-  if (!(factor > 0.0) || ids.size() < 4 * static_cast<size_t>(OutlierNeighbors))
+  firstOf.clear();
+  copies = 0;
+  if (ids.size() <= static_cast<size_t>(PileNeighbors))
   {
     return 0;
   }
@@ -294,7 +320,7 @@ int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double 
   std::vector<int32_t> positionOf;
   DistinctPositions(xyz, ids, x, positionOf);
   const int32_t n = static_cast<int32_t>(x.size() / 3);
-  if (n < 4 * OutlierNeighbors)
+  if (n <= PileNeighbors)
   {
     return 0;
   }
@@ -307,30 +333,67 @@ int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double 
   }
 
   std::vector<uint8_t> far;
-  if (FlagOutliers(x.data(), n, knn, k, factor, far) == 0)
-  {
-    return 0;
-  }
+  std::vector<int32_t> firstPosition;
+  int64_t positionCopies = 0;
+  const int64_t flagged =
+    FlagOutliersAndPiles(x.data(), n, knn, k, factor, far, firstPosition, positionCopies);
   int64_t count = 0;
-  for (size_t j = 0; j < ids.size(); ++j)
+  if (flagged > 0)
   {
-    outlier[j] = far[positionOf[j]];
-    count += outlier[j];
+    for (size_t j = 0; j < ids.size(); ++j)
+    {
+      outlier[j] = far[positionOf[j]];
+      count += outlier[j];
+    }
+  }
+  if (positionCopies > 0)
+  {
+    // The positions in a pile, and the first entry of each pile (indexed by its first position):
+    // the first entry that holds one of its positions.
+    std::vector<uint8_t> inPile(n, 0);
+    for (int32_t p = 0; p < n; ++p)
+    {
+      if (firstPosition[p] != p)
+      {
+        inPile[p] = inPile[firstPosition[p]] = 1;
+      }
+    }
+    const int32_t entries = static_cast<int32_t>(ids.size());
+    std::vector<int32_t> firstEntry(n, -1);
+    firstOf.resize(entries);
+    for (int32_t j = 0; j < entries; ++j)
+    {
+      const int32_t p = positionOf[j];
+      int32_t& first = firstEntry[firstPosition[p]];
+      first = first >= 0 ? first : j;
+      firstOf[j] = inPile[p] ? first : j;
+      copies += firstOf[j] != j ? 1 : 0;
+    }
   }
   return count;
 }
 
-int64_t RemoveOutliers(const double* xyz, std::vector<int32_t>& ids, double factor,
+int64_t RemoveOutliersAndPiles(const double* xyz,
+  std::vector<int32_t>& ids,
+  double factor,
+  std::vector<std::pair<int32_t, int32_t>>& pileCopies,
   const std::function<bool(double)>& progress)
 {
   std::vector<uint8_t> outlier;
-  const int64_t count = FindOutliers(xyz, ids, factor, outlier, progress);
-  if (count > 0)
+  std::vector<int32_t> firstOf;
+  int64_t copies = 0;
+  pileCopies.clear();
+  const int64_t count = FindOutliersAndPiles(xyz, ids, factor, outlier, firstOf, copies, progress);
+  if (count > 0 || copies > 0)
   {
     size_t kept = 0;
     for (size_t j = 0; j < ids.size(); ++j)
     {
-      if (!outlier[j])
+      if (copies > 0 && firstOf[j] != static_cast<int32_t>(j))
+      {
+        pileCopies.emplace_back(ids[j], ids[firstOf[j]]);
+      }
+      else if (!outlier[j])
       {
         ids[kept++] = ids[j];
       }

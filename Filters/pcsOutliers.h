@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace pcs
@@ -24,9 +25,11 @@ constexpr double OutlierPlaneVariation = 0.02;
 constexpr double OutlierPlaneSpread = 0.1;
 constexpr double OutlierPlaneHeight = 0.1;
 /// Near-coincident points (a pile: repeated measurements, jittered copies; pcs::FindPiles, the
-/// definition vtkCDTAdvancingFront's duplicates share) count as one position. Seen from the rest
-/// of the cloud such a group is one point; without this, piles holding most of the points made
-/// the cloud's median reach a pile's and the surface "sparse".
+/// definition of the duplicates of every surface filter) count as one position. Seen from the
+/// rest of the cloud such a group is one point; without this, piles holding most of the points
+/// made the cloud's median reach a pile's and the surface "sparse". The piles are found on the
+/// rule's table once and also returned to the filters, which mesh one point per pile (the
+/// others are duplicates, like exact copies).
 
 /// Flags the far outliers among the points `ids` of `xyz` (packed x, y, z): `outlier` gets one
 /// byte per entry of `ids` (1: outlier) and the function returns how many are flagged.
@@ -49,40 +52,70 @@ constexpr double OutlierPlaneHeight = 0.1;
 /// threads (vtkSMPTools). Cost: one k-nearest-neighbour search (k = OutlierNeighbors), a locator
 /// over the dense points and one query per sparse point. The pile search (pcs::FindPiles) costs
 /// O(n k) lookups in the table on clean samples; when there are piles, a second search over the
-/// positions. `progress` as for
-/// FindNearestNeighbors (false: stopped, nothing flagged).
-int64_t FindOutliers(const double* xyz, const std::vector<int32_t>& ids, double factor,
-  std::vector<uint8_t>& outlier, const std::function<bool(double)>& progress = nullptr);
+/// positions. `progress` as for FindNearestNeighbors (false: stopped, nothing flagged).
+///
+/// Piles as duplicates: the same table gives the piles the filters mesh once. `firstOf` gets,
+/// per entry of `ids`, the first entry (in the order of `ids`) holding a point of the entry's
+/// pile, for the entries of the piles that are not outliers (a far pile is flagged whole), the
+/// entry itself otherwise (exact copies of a position in no pile included: they are the
+/// caller's exact duplicates); `copies` gets the number of entries whose first is another entry
+/// (0: `firstOf` left empty). The table is searched for the piles also when `factor` <= 0 or the
+/// cloud is too small for the outlier rule (more than PileNeighbors distinct points).
+int64_t FindOutliersAndPiles(const double* xyz,
+  const std::vector<int32_t>& ids,
+  double factor,
+  std::vector<uint8_t>& outlier,
+  std::vector<int32_t>& firstOf,
+  int64_t& copies,
+  const std::function<bool(double)>& progress = nullptr);
 
-/// The rule of FindOutliers on `n` distinct points `x` (packed x, y, z) whose nearest
+/// The rule of FindOutliersAndPiles on `n` distinct points `x` (packed x, y, z) whose nearest
 /// neighbours are known: `knn` holds `width` >= OutlierNeighbors ids per point, nearest first
 /// (pcs::FindNearestNeighbors), of which the first OutlierNeighbors are used. `far` gets one byte
 /// per point (1: outlier); returns their number (0 when `width` is too small). Piles are found
-/// from the table; when there are some, the rule runs on a table searched again over the
-/// positions.
-int64_t FlagOutliers(const double* x, int32_t n, const std::vector<int32_t>& knn, int width,
-  double factor, std::vector<uint8_t>& far);
+/// from the table once (pcs::FindPiles); when there are some, the outlier rule runs on a table
+/// searched again over the positions. `firstOf` and `copies`: as pcs::FirstOfPiles over the
+/// points, for the piles that are not outliers (the first point of a pile: its smallest index).
+int64_t FlagOutliersAndPiles(const double* x,
+  int32_t n,
+  const std::vector<int32_t>& knn,
+  int width,
+  double factor,
+  std::vector<uint8_t>& far,
+  std::vector<int32_t>& firstOf,
+  int64_t& copies);
 
-/// FlagOutliers on the table of the points `x` (packed x, y, z, one per entry of `ids`), then
-/// the flagged points removed from `ids` and `x` (order kept): the caller then searches its
-/// table again without them (vtkGreedySurfaceTriangulation, vtkLocalOptimumGrowth). `far` keeps
-/// the flags by the old index. Returns their number.
+/// FlagOutliersAndPiles on the table of the points `x` (packed x, y, z, one per entry of `ids`),
+/// then the flagged points and the pile copies (the points of a pile but its first) removed from
+/// `ids` and `x` (order kept): the caller then searches its table again without them
+/// (vtkGreedySurfaceTriangulation, vtkLocalOptimumGrowth). `far` keeps the flags by the old
+/// index; `pileCopies` gets, for each removed pile copy in the order of `ids`, the pair (its id,
+/// the id of its pile's first point), the form of pcs::MergeExactDuplicates (cleared first).
+/// Returns the number of outliers.
 template<typename IdType>
-int64_t DropOutliersByTable(std::vector<double>& x,
+int64_t DropOutliersAndPilesByTable(std::vector<double>& x,
   std::vector<IdType>& ids,
   const std::vector<int32_t>& knn,
   int width,
   double factor,
-  std::vector<uint8_t>& far)
+  std::vector<uint8_t>& far,
+  std::vector<std::pair<IdType, IdType>>& pileCopies)
 {
   const int32_t n = static_cast<int32_t>(ids.size());
-  const int64_t count = FlagOutliers(x.data(), n, knn, width, factor, far);
-  if (count > 0)
+  std::vector<int32_t> firstOf;
+  int64_t copies = 0;
+  const int64_t count = FlagOutliersAndPiles(x.data(), n, knn, width, factor, far, firstOf, copies);
+  pileCopies.clear();
+  if (count > 0 || copies > 0)
   {
     int32_t kept = 0;
     for (int32_t i = 0; i < n; ++i)
     {
-      if (!far[i])
+      if (copies > 0 && firstOf[i] != i)
+      {
+        pileCopies.emplace_back(ids[i], ids[firstOf[i]]);
+      }
+      else if (!far[i])
       {
         std::copy_n(&x[3 * static_cast<size_t>(i)], 3, &x[3 * static_cast<size_t>(kept)]);
         ids[kept++] = ids[i];
@@ -94,9 +127,15 @@ int64_t DropOutliersByTable(std::vector<double>& x,
   return count;
 }
 
-/// FindOutliers, then the flagged points are removed from `ids` (order kept); returns their
-/// number. The filters' OutlierFactor.
-int64_t RemoveOutliers(const double* xyz, std::vector<int32_t>& ids, double factor,
+/// FindOutliersAndPiles, then the flagged points and the pile copies (the entries of a pile but
+/// its first) are removed from `ids` (order kept); `pileCopies` gets, for each removed pile copy
+/// in the order of `ids`, the pair (its id, the id of its pile's first entry), the form of
+/// pcs::MergeExactDuplicates (cleared first). Returns the number of outliers. The filters'
+/// OutlierFactor.
+int64_t RemoveOutliersAndPiles(const double* xyz,
+  std::vector<int32_t>& ids,
+  double factor,
+  std::vector<std::pair<int32_t, int32_t>>& pileCopies,
   const std::function<bool(double)>& progress = nullptr);
 }
 

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <sstream>
 
 namespace pcs
 {
@@ -335,5 +336,38 @@ int32_t FindPiles(const double* x,
     }
   }
   return groups;
+}
+
+int32_t FirstOfPiles(const std::vector<int32_t>& groupOf, std::vector<int32_t>& firstOf)
+{
+  const int32_t n = static_cast<int32_t>(groupOf.size());
+  // Groups are numbered in the order of their first points.
+  std::vector<int32_t> firstOfGroup;
+  int32_t copies = 0;
+  firstOf.resize(n);
+  for (int32_t i = 0; i < n; ++i)
+  {
+    const int32_t g = groupOf[i];
+    if (g == static_cast<int32_t>(firstOfGroup.size()))
+    {
+      firstOfGroup.push_back(i);
+    }
+    firstOf[i] = firstOfGroup[g];
+    copies += firstOf[i] != i ? 1 : 0;
+  }
+  if (copies == 0)
+  {
+    firstOf.clear();
+  }
+  return copies;
+}
+
+std::string DuplicatesWarning(int64_t count, const std::string& kept)
+{
+  std::ostringstream text;
+  text << "Ignored " << count
+       << " duplicate point(s): exact copies, or points of a pile (a group whose extent is under "
+       << PileRatio << " times its distance to the rest of the cloud); " << kept << ".";
+  return text.str();
 }
 }

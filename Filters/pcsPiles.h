@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace pcs
@@ -64,6 +65,18 @@ int32_t FindPiles(const double* x,
   int width,
   std::vector<int32_t>& groupOf,
   int k = PileNeighbors);
+
+/// Piles as duplicates (every filter meshes one point per pile, as one copy of exact duplicates):
+/// from FindPiles' `groupOf` over `n` points (empty: no pile), `firstOf[i]` gets the first point
+/// (smallest index) of point i's pile, i itself for a point in no pile and for each pile's first
+/// point. Returns the number of points that are not their pile's first (the copies a filter
+/// leaves unused and counts as duplicates); 0 leaves `firstOf` empty.
+int32_t FirstOfPiles(const std::vector<int32_t>& groupOf, std::vector<int32_t>& firstOf);
+
+/// The filters' warning on their duplicates (one wording for all): "Ignored `count` duplicate
+/// point(s): exact copies, or points of a pile (...); `kept`." (`kept`: which point of each
+/// group the filter meshes).
+std::string DuplicatesWarning(int64_t count, const std::string& kept);
 }
 
 #endif

@@ -365,25 +365,23 @@ bool MergePiles(const double* positionXYZ,
   }
   const std::vector<int32_t>& piles = others < pcs::PileNeighbors ? widerTable : table;
   const int width = others < pcs::PileNeighbors ? pcs::PileNeighbors : others;
-  std::vector<int32_t> groupOf;
-  if (pcs::FindPiles(positionXYZ, static_cast<int32_t>(count), piles, width, groupOf) == count)
+  std::vector<int32_t> groupOf, firstOf;
+  if (pcs::FindPiles(positionXYZ, static_cast<int32_t>(count), piles, width, groupOf) == count ||
+    pcs::FirstOfPiles(groupOf, firstOf) == 0)
   {
     return false;
   }
-  // The first copy of each pile: its position of smallest id (positions in increasing id), then
-  // each point's group replaced by its pile's.
-  std::vector<Id> pileFirst(static_cast<size_t>(count), None);
+  // The first copy of each pile: its first position (positions in increasing id: its smallest
+  // id), then each point's group replaced by its pile's.
+  auto idOf = [&](Id d) { return positionIds.empty() ? d : positionIds[d]; };
   std::vector<Id> position(firstCopy.size(), None); // by first copy
   for (Id d = 0; d < count; ++d)
   {
-    const Id first = positionIds.empty() ? d : positionIds[d];
-    position[first] = d;
-    Id& pile = pileFirst[groupOf[d]];
-    pile = pile == None ? first : pile;
+    position[idOf(d)] = d;
   }
   for (size_t k = 0; k < firstCopy.size(); ++k)
   {
-    firstCopy[k] = pileFirst[groupOf[position[firstCopy[k]]]];
+    firstCopy[k] = idOf(firstOf[position[firstCopy[k]]]);
   }
   return true;
 }
@@ -2757,12 +2755,8 @@ int vtkCDTAdvancingFront::RequestData(
   }
   if (this->NumberOfDuplicatePoints > 0)
   {
-    vtkWarningMacro("Ignored " << this->NumberOfDuplicatePoints
-                               << " duplicate point(s): exact copies, or points of a pile (a group "
-                                  "whose extent is under "
-                               << pcs::PileRatio
-                               << " times its distance to the rest of the cloud); the copy of "
-                                  "smallest id is meshed.");
+    vtkWarningMacro(<< pcs::DuplicatesWarning(
+                      this->NumberOfDuplicatePoints, "the copy of smallest id is meshed"));
   }
   if (!scanLinesChecked && knnOthers > 0 &&
     pcs::AddOffLineNeighbors(bins,

@@ -10,6 +10,7 @@
 #include "pcsNearestNeighbors.h"
 #include "pcsNormalEstimation.h"
 #include "pcsOutliers.h"
+#include "pcsPiles.h"
 #include "pcsPointInsertion.h"
 #include "pcsPredicates.h"
 #include "pcsProjectedTests.h"
@@ -4712,19 +4713,30 @@ int vtkGreedySurfaceTriangulation::RequestData(
       }
     }
   }
-  // Far outliers: read from the neighbour table below when it holds enough neighbours per point
-  // (pcs::FlagOutliers), else found here by their own search.
+  // Far outliers and piles of near-coincident points (pcs::FindPiles): read from the neighbour
+  // table below when it holds enough neighbours per point (pcs::FlagOutliersAndPiles), else found
+  // here by their own search.
   const bool outliersFromTable = this->NumberOfNeighbors >= pcs::OutlierNeighbors;
+  std::vector<std::pair<int32_t, int32_t>> pileCopies;
   if (!outliersFromTable)
   {
-    outliers = pcs::RemoveOutliers(
-      xyz.data(), order, this->OutlierFactor, [this](double) { return !this->GetAbortExecute(); });
+    outliers = pcs::RemoveOutliersAndPiles(xyz.data(),
+      order,
+      this->OutlierFactor,
+      pileCopies,
+      [this](double) { return !this->GetAbortExecute(); });
   }
-  // Exact duplicates: each copy is mapped to the copy of smallest id (order is ascending).
+  // Exact duplicates: each copy is mapped to the copy of smallest id (order is ascending); so is
+  // each point of a pile but its first (smallest id), and its exact copies.
   std::vector<std::pair<int32_t, int32_t>> merged;
   duplicates = pcs::MergeExactDuplicates(xyz.data(), 3, order, merged);
+  duplicates += static_cast<vtkIdType>(pileCopies.size());
   std::vector<int32_t> representative(numberOfPoints, -1);
   for (const auto& copy : merged)
+  {
+    representative[copy.first] = copy.second;
+  }
+  for (const auto& copy : pileCopies)
   {
     representative[copy.first] = copy.second;
   }
@@ -4760,11 +4772,21 @@ int vtkGreedySurfaceTriangulation::RequestData(
     return finish();
   }
   std::vector<uint8_t> far;
+  std::vector<std::pair<vtkIdType, vtkIdType>> tablePileCopies;
   if (outliersFromTable && r.N >= 3 &&
-    pcs::DropOutliersByTable(r.X, inputIds, r.Neighbors, r.K, this->OutlierFactor, far) > 0)
+    (pcs::DropOutliersAndPilesByTable(
+       r.X, inputIds, r.Neighbors, r.K, this->OutlierFactor, far, tablePileCopies) > 0 ||
+      !tablePileCopies.empty()))
   {
     // The flagged points and their exact copies leave the cloud (Status 4, NumberOfOutliers: the
-    // copies of an outlier are outliers, not duplicates); the table is made again without them.
+    // copies of an outlier are outliers, not duplicates), and so do the pile copies (the points
+    // of a pile but its first, smallest id) and their exact copies (Status 4, duplicates of the
+    // pile's first); the table is made again without them.
+    std::vector<int32_t> pileFirst(numberOfPoints, -1);
+    for (const auto& copy : tablePileCopies)
+    {
+      pileFirst[copy.first] = static_cast<int32_t>(copy.second);
+    }
     for (vtkIdType i = 0; i < numberOfPoints; ++i)
     {
       if (representative[i] >= 0 && far[localOf[representative[i]]])
@@ -4772,6 +4794,11 @@ int vtkGreedySurfaceTriangulation::RequestData(
         ++outliers;
         duplicates -= representative[i] != i ? 1 : 0;
         representative[i] = -1;
+      }
+      else if (representative[i] >= 0 && pileFirst[representative[i]] >= 0)
+      {
+        duplicates += representative[i] == i ? 1 : 0;
+        representative[i] = pileFirst[representative[i]];
       }
     }
     const int32_t kept = static_cast<int32_t>(inputIds.size());
@@ -4799,8 +4826,8 @@ int vtkGreedySurfaceTriangulation::RequestData(
   }
   if (duplicates > 0)
   {
-    vtkWarningMacro(
-      "Triangulated " << duplicates << " exact duplicate point(s) once (Status 4 for the copies).");
+    vtkWarningMacro(<< pcs::DuplicatesWarning(
+                      duplicates, "the copy of smallest id is meshed (Status 4 for the others)"));
   }
   if (r.N < 3)
   {

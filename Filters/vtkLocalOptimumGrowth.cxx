@@ -9,6 +9,7 @@
 #include "pcsHoleFilling.h"
 #include "pcsNearestNeighbors.h"
 #include "pcsOutliers.h"
+#include "pcsPiles.h"
 #include "pcsPointInsertion.h"
 #include "pcsPredicates.h"
 #include "pcsProjectedTests.h"
@@ -2559,22 +2560,56 @@ int vtkLocalOptimumGrowth::RequestData(
       representative->SetValue(copy.first, copy.second);
     }
   }
-  if (this->NumberOfDuplicatePoints > 0)
+  // A pile copy (a point of a pile of near-coincident points but its first along the curve,
+  // pcs::FindPiles) is a duplicate of the pile's first: it and its exact copies are represented
+  // by that point.
+  auto mergePileCopies = [&](const std::vector<std::pair<int32_t, int32_t>>& pileCopies)
   {
-    vtkWarningMacro("Merged " << this->NumberOfDuplicatePoints
-                              << " exact duplicate point(s) into the point they coincide with "
-                                 "(point data RepresentativeId; they are not triangle vertices).");
-  }
-  // Far outliers: from the K-neighbour table below when K >= pcs::OutlierNeighbors, else here.
+    if (pileCopies.empty())
+    {
+      return;
+    }
+    std::vector<Id> firstOfCopy(static_cast<size_t>(numberOfPoints), -1);
+    for (const auto& copy : pileCopies)
+    {
+      firstOfCopy[copy.first] = copy.second;
+    }
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    {
+      const vtkIdType r = representative->GetValue(i);
+      if (r >= 0 && firstOfCopy[r] >= 0)
+      {
+        representative->SetValue(i, firstOfCopy[r]);
+        this->NumberOfDuplicatePoints += r == i ? 1 : 0;
+      }
+    }
+  };
+  auto warnDuplicates = [&]()
+  {
+    if (this->NumberOfDuplicatePoints > 0)
+    {
+      vtkWarningMacro(<< pcs::DuplicatesWarning(this->NumberOfDuplicatePoints,
+                        "each group is merged into its first point along the Hilbert curve (point "
+                        "data RepresentativeId; the others are not triangle vertices)"));
+    }
+  };
+  // Far outliers and piles: from the K-neighbour table below when K >= pcs::OutlierNeighbors,
+  // else here.
   const bool outliersFromTable = this->NumberOfNeighbors >= pcs::OutlierNeighbors;
   if (!outliersFromTable)
   {
-    this->NumberOfOutliers = pcs::RemoveOutliers(
-      xyz.data(), ids, this->OutlierFactor, [this](double) { return !this->GetAbortExecute(); });
+    std::vector<std::pair<int32_t, int32_t>> pileCopies;
+    this->NumberOfOutliers = pcs::RemoveOutliersAndPiles(xyz.data(),
+      ids,
+      this->OutlierFactor,
+      pileCopies,
+      [this](double) { return !this->GetAbortExecute(); });
+    mergePileCopies(pileCopies);
   }
   Id n = static_cast<Id>(ids.size());
   if (n < 3)
   {
+    warnDuplicates();
     vtkWarningMacro("Fewer than 3 distinct finite points (" << n << "): no triangles are made.");
     this->NumberOfUnusedPoints = this->NumberOfOutliers + n;
     return finish();
@@ -2639,10 +2674,25 @@ int vtkLocalOptimumGrowth::RequestData(
   if (outliersFromTable && !this->GetAbortExecute())
   {
     std::vector<uint8_t> far;
-    this->NumberOfOutliers = pcs::DropOutliersByTable(x, ids, knn, k, this->OutlierFactor, far);
-    if (this->NumberOfOutliers > 0)
+    std::vector<std::pair<Id, Id>> pileCopies;
+    this->NumberOfOutliers =
+      pcs::DropOutliersAndPilesByTable(x, ids, knn, k, this->OutlierFactor, far, pileCopies);
+    mergePileCopies(pileCopies);
+    if (this->NumberOfOutliers > 0 || !pileCopies.empty())
     {
       n = static_cast<Id>(ids.size());
+      if (n < 3)
+      {
+        warnDuplicates();
+        vtkWarningMacro(
+          "Fewer than 3 distinct finite points (" << n << ") left: no triangles are made.");
+        this->NumberOfUnusedPoints = this->NumberOfOutliers + n;
+        if (this->Locator)
+        {
+          this->Locator->SetDataSet(nullptr);
+        }
+        return finish();
+      }
       findNeighbors();
     }
   }
@@ -2664,6 +2714,7 @@ int vtkLocalOptimumGrowth::RequestData(
   bins = pcs::PointBins();
   xyz.clear();
   xyz.shrink_to_fit();
+  warnDuplicates();
   if (this->NumberOfOutliers > 0)
   {
     vtkWarningMacro("Excluded " << this->NumberOfOutliers << " far outlier(s) (OutlierFactor "

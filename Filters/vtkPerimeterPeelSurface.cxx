@@ -6,6 +6,7 @@
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
 #include "pcsOutliers.h"
+#include "pcsPiles.h"
 #include "pcsProjectedTests.h"
 
 #include "vtkCellArray.h"
@@ -1891,6 +1892,7 @@ int vtkPerimeterPeelSurface::RequestData(
   output->GetPointData()->AddArray(used);
 
   vtkIdType iterations = 0, removedCount = 0, groupCount = 0, tetrahedra = 0, outliers = 0;
+  vtkIdType duplicates = 0, pileDuplicates = 0;
   vtkIdType unfoldMoves = 0, strutPoints = 0;
   double finalThreshold = 0.0, delaunayTime = 0.0, peelTime = 0.0;
   double delaunayCPUTime = 0.0, peelCPUTime = 0.0;
@@ -1920,6 +1922,7 @@ int vtkPerimeterPeelSurface::RequestData(
     pcs::AddFieldCount(fd, "NumberOfUsedPoints", usedPoints);
     pcs::AddFieldCount(fd, "NumberOfUnusedPoints", numberOfPoints - usedPoints);
     pcs::AddFieldCount(fd, "NumberOfOutliers", outliers);
+    pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", duplicates);
     pcs::AddFieldValue(fd, "DelaunayTime", delaunayTime);
     pcs::AddFieldValue(fd, "PeelTime", peelTime);
     pcs::AddFieldValue(fd, "DelaunayCPUTime", delaunayCPUTime);
@@ -1981,8 +1984,17 @@ int vtkPerimeterPeelSurface::RequestData(
   {
     xyz = pcs::ScaledCopy(xyz.data(), xyz.size(), exponent);
   }
-  outliers = pcs::RemoveOutliers(
-    xyz.data(), ids, this->OutlierFactor, [this](double) { return !this->GetAbortExecute(); });
+  // Far outliers, and piles of near-coincident points (pcs::FindPiles) on the same table: the
+  // tetrahedralization gets one point per pile (its first, smallest id), the others are
+  // duplicates, like exact copies.
+  std::vector<std::pair<int32_t, int32_t>> pileCopies;
+  outliers = pcs::RemoveOutliersAndPiles(xyz.data(),
+    ids,
+    this->OutlierFactor,
+    pileCopies,
+    [this](double) { return !this->GetAbortExecute(); });
+  pileDuplicates = static_cast<vtkIdType>(pileCopies.size());
+  duplicates = pileDuplicates;
   if (outliers > 0)
   {
     vtkWarningMacro("Excluded " << outliers << " far outlier(s) of " << ids.size() + outliers
@@ -2010,6 +2022,13 @@ int vtkPerimeterPeelSurface::RequestData(
     return finish();
   }
   tetrahedra = dt.GetNumberOfFiniteCells();
+  duplicates = pileDuplicates + static_cast<vtkIdType>(dt.GetDuplicates().size());
+  if (duplicates > 0)
+  {
+    vtkWarningMacro(<< pcs::DuplicatesWarning(duplicates,
+                      "one point of each group is tetrahedralized (of a pile, its point of "
+                      "smallest id; point data Used = 0 for the others)"));
+  }
   const std::string large = dt.DescribeLargeSize(ids.size());
   if (!large.empty())
   {

@@ -4,7 +4,8 @@
  *          hull inwards (Rodriguez, Espadero, Lopez, Pastor, DGCI 2000, section 3)
  *
  * The input is any vtkPointSet; only its points matter. The points are tetrahedralized exactly
- * (the kernel of vtkIncrementalDelaunay3D; NaN/Inf points are skipped, exact duplicates merged)
+ * (the kernel of vtkIncrementalDelaunay3D; NaN/Inf points are skipped, duplicates merged: exact
+ * copies, and the points of a pile of near-coincident points, see below)
  * and the solid made of the tetrahedra is peeled (paper section 3, steps 2-7):
  *
  * - the exterior facets are the facets of the solid that only one of its tetrahedra owns; at the
@@ -196,10 +197,23 @@
  *      distances are unchanged (1 point more unused on camel seeds 1-4; elephant seed 5 genus 2
  *      -> 3); the 9 mesh vertex sets and the web benchmark unchanged. Webs (membranes of many
  *      tetrahedra across such gaps) are not struts: their groups still burrow into the solid.
+ * - Duplicate points are tetrahedralized once (the others have `Used` = 0 and are counted in
+ *   NumberOfDuplicatePoints, with a warning): exact copies (one copy each, merged by the
+ *   Delaunay kernel), and the points of a pile of near-coincident points (a scanner's repeated
+ *   returns at one spot, jittered copies), as in vtkCDTAdvancingFront: a group whose extent is
+ *   under 1/10,000 of its distance to the rest of the cloud, found on the table of the 8 nearest
+ *   neighbours the outlier rule below searches (pcs::FindPiles, the definition
+ *   vtkCDTAdvancingFront's duplicates and the outlier rule share; with OutlierFactor 0 the table
+ *   is searched for the piles alone); the Delaunay kernel gets the pile's point of smallest id
+ *   only. The tolerance is relative to the sampling around the group, no absolute or global
+ *   distance. A pile tetrahedralized point by point made a blob of needle triangles on the
+ *   surface: 1,000 sphere points and 4 piles of 600 gave 6,758 triangles, 4,762 of them with an
+ *   edge under 1e-5 of the radius (now 1,996, 2V - 4; Benchmarks/results/robustness.md, "Piles
+ *   are duplicates in LOG, greedy and the peel").
  * - Far outliers (OutlierFactor, default 8): isolated points, clumps and sparse clutter far from
  *   the surface would make the peel stop at their hull (the paper assumes none). They are left
  *   out of the tetrahedralization, keep `Used` = 0 and are counted (NumberOfOutliers, a
- *   warning); no point is deleted. The rule (pcs::FindOutliers, shared with
+ *   warning); no point is deleted. The rule (pcs::FindOutliersAndPiles, shared with
  *   vtkLocalOptimumGrowth): a point's reach is its mean distance to its 8 nearest distinct
  *   points; a point is sparse when its reach is over 4 times the cloud's median reach, and a
  *   sparse point is a far outlier when its reach is over OutlierFactor times the median reach of
@@ -212,7 +226,8 @@
  *   points (a group whose extent is under 1/10,000 of its distance to the rest of the cloud,
  *   pcs::FindPiles) counts as one point with one verdict: piles holding most of the
  *   points made the median reach a pile's and flagged 80 of 1,000 sphere points before
- *   2026-11-24 (now 0); a pile far off the surface is flagged whole. Points within about 8 surface
+ *   2026-11-24 (now 0); a pile far off the surface is flagged whole (a pile that is not an
+ *   outlier is one point, see duplicates above). Points within about 8 surface
  *   reaches (some 20 mean spacings) of the surface are not far outliers (they may be a sparse
  *   part of the surface). Measured (2026-11-23, against VTK's vtkStatisticalOutlierRemoval,
  *   Benchmarks/results/peel.md): no point flagged on the 9 CGAL vertex sets of the benchmark
@@ -240,8 +255,9 @@
  * with relative measures),
  * NumberOfTetrahedra, NumberOfRemovedTetrahedra (groups included), NumberOfGroupRemovals,
  * NumberOfUnfoldingMoves (rule 6), NumberOfStrutPoints (rule 8),
- * NumberOfTriangles, NumberOfUsedPoints, NumberOfUnusedPoints (outliers included),
- * NumberOfOutliers, DelaunayTime and PeelTime
+ * NumberOfTriangles, NumberOfUsedPoints, NumberOfUnusedPoints (outliers and duplicates
+ * included), NumberOfOutliers, NumberOfDuplicatePoints (exact and near copies, see above),
+ * DelaunayTime and PeelTime
  * (seconds: the tetrahedralization, and everything after it), DelaunayCPUTime and PeelCPUTime
  * (the processor time of the same two parts, std::clock).
  *
@@ -408,7 +424,8 @@ public:
   /// Far outliers (see above) are left out of the tetrahedralization and reported: a point
   /// whose reach (mean distance to its 8 nearest points) is over 4 times the cloud's median
   /// reach and over OutlierFactor times the median reach of its 8 nearest points that are not,
-  /// unless it lies on a sparse part of the surface (pcs::FindOutliers). Default 8.0 (no point
+  /// unless it lies on a sparse part of the surface (pcs::FindOutliersAndPiles; its table also
+  /// gives the piles, see duplicates above). Default 8.0 (no point
   /// flagged on the 9 CGAL vertex sets of the benchmark; 9 of 405,000 on 94 CGAL mesh vertex
   /// sets); range [0, 1000]; 0: off.
   vtkSetClampMacro(OutlierFactor, double, 0.0, 1000.0);

@@ -12,7 +12,7 @@
 // - clean clouds flag nothing: a torus sampled 25 times more densely on one side, and a sphere
 //   with Gaussian noise of 0.4 mean spacings per coordinate;
 // - a sparse part of a surface next to a dense patch holding most of the points is not flagged
-//   (the flat-sample exemption of pcs::FindOutliers);
+//   (the flat-sample exemption of pcs::FindOutliersAndPiles);
 // - piles of near-coincident points that outnumber the surface count once each
 //   (pcs::FindPiles): 1,000 sphere points plus 4 piles of 600 distinct points within 3e-9
 //   of 4 of them flag nothing; a fifth pile of 600 far from the sphere is flagged whole.
@@ -66,16 +66,6 @@ vtkSmartPointer<vtkPolyData> Run(vtkPolyDataAlgorithm* filter, const std::vector
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->ShallowCopy(filter->GetOutput());
   return out;
-}
-
-double QualityValue(vtkPolyData* mesh, const char* name)
-{
-  vtkNew<vtkReconstructionQuality> quality;
-  quality->SetInputData(mesh);
-  quality->ComputeDistancesOff();
-  quality->Update();
-  vtkDataArray* array = quality->GetOutput()->GetFieldData()->GetArray(name);
-  return array ? array->GetTuple1(0) : -1.0;
 }
 
 // The sphere of SphereWithOutliers without its outliers: closed, manifold, oriented, genus 0,

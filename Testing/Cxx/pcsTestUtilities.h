@@ -12,6 +12,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkReconstructionQuality.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -100,6 +101,17 @@ inline vtkIdType FieldCount(vtkDataObject* data, const char* name)
 {
   vtkDataArray* array = data->GetFieldData()->GetArray(name);
   return array ? static_cast<vtkIdType>(array->GetTuple1(0)) : -1;
+}
+
+/// A topology field of vtkReconstructionQuality on `mesh` (no distances), -1 when missing.
+inline double QualityValue(vtkPolyData* mesh, const char* name)
+{
+  vtkNew<vtkReconstructionQuality> quality;
+  quality->SetInputData(mesh);
+  quality->ComputeDistancesOff();
+  quality->Update();
+  vtkDataArray* array = quality->GetOutput()->GetFieldData()->GetArray(name);
+  return array ? array->GetTuple1(0) : -1.0;
 }
 
 /// The largest `distance` (a function of a point, e.g. to a known surface) over the centroids of

@@ -2,14 +2,20 @@
 // (pcsFuzzSurface.h), the parameters over their ranges (limits included), then the invariants
 // of pcsFuzzSurface.h (the class promises an oriented 2-manifold with boundary) and its own:
 // - RepresentativeId: -1 exactly for the points with a non-finite coordinate; otherwise a point
-//   with the same coordinates that represents itself; a used point represents itself;
+//   that represents itself, with the same coordinates or, for a point of a pile of
+//   near-coincident points (pcs::FindPiles), within pcs::PileRatio x the diagonal of the finite
+//   points' bounding box (a pile's extent is under that); a used point represents itself;
 // - NumberOfSkippedPoints = the points with RepresentativeId -1, NumberOfDuplicatePoints = the
 //   finite points represented by another, and used + NumberOfUnusedPoints + duplicates +
 //   skipped = NumberOfInputPoints = the input points;
 // - NumberOfBoundaryEdges = the edges of a single triangle (vtkReconstructionQuality).
 // A violated invariant aborts.
 #include "pcsFuzzSurface.h"
+#include "pcsPiles.h"
 #include "vtkLocalOptimumGrowth.h"
+
+#include <algorithm>
+#include <cmath>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
@@ -40,6 +46,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   vtkDataArray* used = pcsfuzz::PointArray(name, out, "Used");
   vtkDataArray* representative = pcsfuzz::PointArray(name, out, "RepresentativeId");
   vtkIdType usedCount = 0, skipped = 0, duplicates = 0;
+  // The diagonal of the finite points' bounding box.
+  double low[3] = { INFINITY, INFINITY, INFINITY }, high[3] = { -INFINITY, -INFINITY, -INFINITY };
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double* x = &input.XYZ[3 * i];
+    for (int c = 0; c < 3 && pcsfuzz::Finite(x); ++c)
+    {
+      low[c] = std::min(low[c], x[c]);
+      high[c] = std::max(high[c], x[c]);
+    }
+  }
+  const double diagonal = std::hypot(high[0] - low[0], high[1] - low[1], high[2] - low[2]);
   for (vtkIdType i = 0; i < n; ++i)
   {
     const vtkIdType r = static_cast<vtkIdType>(representative->GetTuple1(i));
@@ -58,9 +76,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
       pcsfuzz::Fail(name, "RepresentativeId out of range or not a representative");
     }
     const double* y = &input.XYZ[3 * r];
-    if (x[0] != y[0] || x[1] != y[1] || x[2] != y[2])
+    if ((x[0] != y[0] || x[1] != y[1] || x[2] != y[2]) &&
+      !(std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]) < pcs::PileRatio * diagonal))
     {
-      pcsfuzz::Fail(name, "a point represented by a point at other coordinates");
+      pcsfuzz::Fail(name, "a point represented by a point at other coordinates, not in a pile");
     }
     duplicates += r != i ? 1 : 0;
     if (used->GetTuple1(i) != 0)

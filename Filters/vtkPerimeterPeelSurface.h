@@ -293,6 +293,11 @@
  * both sides on the surface, within 0.05 (exact) / 0.2 (noisy) spacing of the sphere, so the
  * volume and the distances are right but shading shows dark specks (CDT, LOG, greedy and CGAL:
  * 0-2).
+ * @warning Open surfaces: the output is the boundary of a solid, so a cloud of an open surface (a
+ * scan of one side, a hemisphere, a terrain) comes back closed, with a lid of Delaunay triangles
+ * across each opening (10,000 points of a hemisphere: 19,996 triangles, 0 boundary edges). Use a
+ * growing filter (vtkLocalOptimumGrowth, vtkCDTAdvancingFront, vtkGreedySurfaceTriangulation)
+ * for open surfaces.
  * @warning Relative measures and thin walls: across a wall thinner than the spacing the nearest
  * neighbours include the far side, the local spacing is underestimated and the wall's facets look
  * too large; at ThresholdFactor 1.0 the paper's goblet cup (wall 0.1, about two spacings) comes

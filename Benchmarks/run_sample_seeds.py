@@ -21,7 +21,8 @@ CGAL, their peer), 4 for the peel, and 2 for greedy (its issue asks for LOG's qu
 Usage:
   PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 Benchmarks/run_sample_seeds.py \
       --data /usr/share/cgal-demo/data [--cgal <bench-bin>/pcsBenchCGALAFSR] \
-      [--meshes camel armadillo] [--seeds 1 2 3 4 5] [--points 100000] [--filters log cdt]
+      [--meshes camel armadillo] [--seeds 1 2 3 4 5] [--points 100000] [--filters log cdt] \
+      [--samples-per-triangle 45]
 """
 import argparse
 import os
@@ -62,8 +63,9 @@ def cgal_mesh(binary, cloud):
         return polydata(cloud, read_off(off)[1])
 
 
-def measure(mesh, reference):
+def measure(mesh, reference, samples_per_triangle):
     quality = pcs.vtkReconstructionQuality()
+    quality.SetSamplesPerTriangle(samples_per_triangle)
     quality.SetInputData(mesh)
     quality.SetReferenceData(reference)
     quality.Update()
@@ -82,6 +84,9 @@ def main():
     parser.add_argument("--points", type=int, default=100000)
     parser.add_argument("--filters", nargs="+", default=["log", "cdt"], choices=list(FILTERS))
     parser.add_argument("--cgal", help="pcsBenchCGALAFSR executable (CGAL's advancing front)")
+    parser.add_argument("--samples-per-triangle", type=int, default=3,
+                        help="vtkReconstructionQuality's SamplesPerTriangle (3: its default; 45 "
+                        "measures each triangle more densely: H45 in Benchmarks/results)")
     args = parser.parse_args()
     methods = args.filters + (["cgal"] if args.cgal else [])
     within = {m: 0 for m in methods}
@@ -104,7 +109,7 @@ def main():
                     mesh = algorithm.GetOutput()
                 cells = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray())
                 unused = len(cloud) - (len(np.unique(cells)) if len(cells) else 0)
-                q = measure(mesh, reference)
+                q = measure(mesh, reference, args.samples_per_triangle)
                 within[method] += q["HausdorffOverSpacing"] <= BOUNDS[method]
                 print("| %s | %d | %s | %d | %d | %d | %.2f | %.2f | %.2f | %.2f |" % (
                     name, seed, method, len(cells) // 3, unused, q["NumberOfBoundaryEdges"],

@@ -487,6 +487,98 @@ bool FindNearestNeighbors(const PointBins& bins,
   return !progress || progress(1.0);
 }
 
+void DistinctNeighbors(const std::vector<int32_t>& pointTable,
+  int width,
+  const std::vector<int32_t>& positionOf,
+  const std::vector<int32_t>& positionIds,
+  const double* positionXYZ,
+  int32_t count,
+  int k,
+  std::vector<int32_t>& neighbors)
+{
+  neighbors.assign(static_cast<size_t>(std::max(count, 0)) * std::max(k, 0), -1);
+  if (count < 2 || k < 1)
+  {
+    return;
+  }
+  // The rows whose point row leaves fewer than k other positions: searched again below, all at
+  // once when more than a quarter are.
+  const size_t mostIncomplete = static_cast<size_t>(count) / 4;
+  std::vector<int32_t> incomplete;
+  for (int32_t d = 0; d < count && incomplete.size() <= mostIncomplete; ++d)
+  {
+    const int32_t* row = &pointTable[static_cast<size_t>(positionIds[d]) * width];
+    int32_t* out = &neighbors[static_cast<size_t>(d) * k];
+    int taken = 0;
+    for (int j = 0; j < width && row[j] >= 0 && taken < k; ++j)
+    {
+      const int32_t e = positionOf[row[j]];
+      if (e != d && std::find(out, out + taken, e) == out + taken)
+      {
+        out[taken++] = e;
+      }
+    }
+    if (taken < k && width > 0 && row[width - 1] >= 0)
+    {
+      incomplete.push_back(d);
+    }
+  }
+  if (incomplete.empty())
+  {
+    return;
+  }
+  PointBins bins;
+  double bounds[6];
+  if (incomplete.size() > mostIncomplete)
+  {
+    BuildSurfaceSampleBins(bins, positionXYZ, count, /*withCoordinates=*/false, bounds);
+    FindNearestNeighbors(bins, positionXYZ, count, k, neighbors);
+    return;
+  }
+  // Those rows alone: the positions within a radius (from twice the point row's farthest, doubled
+  // until the ball holds k others or the whole box), sorted by (squared distance, id) as
+  // FindNearestNeighbors sorts them.
+  BuildSurfaceSampleBins(bins, positionXYZ, count, /*withCoordinates=*/true, bounds);
+  const double box2 = (bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]);
+  std::vector<std::pair<int32_t, double>> gathered;
+  std::vector<std::pair<double, int32_t>> found;
+  for (const int32_t d : incomplete)
+  {
+    const double* p = &positionXYZ[3 * static_cast<size_t>(d)];
+    const int32_t farthest =
+      positionOf[pointTable[static_cast<size_t>(positionIds[d]) * width + width - 1]];
+    double radius = 2.0 * std::sqrt(Distance2(p, &positionXYZ[3 * static_cast<size_t>(farthest)]));
+    if (!(radius > 0.0))
+    {
+      radius = std::max({ bins.GetBucketWidth(0), bins.GetBucketWidth(1), bins.GetBucketWidth(2) });
+    }
+    for (;; radius *= 2.0)
+    {
+      const size_t inside = bins.GatherWithinRadius(radius, p, gathered);
+      found.clear();
+      for (size_t j = 0; j < inside; ++j)
+      {
+        if (gathered[j].first != d)
+        {
+          found.emplace_back(gathered[j].second, gathered[j].first);
+        }
+      }
+      if (found.size() >= static_cast<size_t>(k) || !(radius * radius <= 4.0 * box2))
+      {
+        break;
+      }
+    }
+    const size_t keep = std::min<size_t>(k, found.size());
+    std::partial_sort(found.begin(), found.begin() + keep, found.end());
+    for (size_t j = 0; j < keep; ++j)
+    {
+      neighbors[static_cast<size_t>(d) * k + j] = found[j].second;
+    }
+  }
+}
+
 namespace
 {
 // AddOffLineNeighbors on the bins that `fileBins` gives (called once, only when a row is to be

@@ -2481,7 +2481,8 @@ int vtkCDTAdvancingFront::RequestData(
       RowRadiusFactor,
       RowShare);
   };
-  // The distinct positions (one per group of copies, firstCopy), their coordinates and bins.
+  // The distinct positions (one per group of copies, firstCopy), their coordinates and (withBins)
+  // bins.
   struct Positions
   {
     std::vector<Id> Ids;  // the first copy of each group, increasing
@@ -2489,7 +2490,7 @@ int vtkCDTAdvancingFront::RequestData(
     std::vector<double> XYZ;
     pcs::PointBins Bins;
   };
-  auto distinctPositions = [&](Positions& positions)
+  auto distinctPositions = [&](Positions& positions, bool withBins)
   {
     positions.Ids.clear();
     positions.Slot.assign(static_cast<size_t>(local), None);
@@ -2510,6 +2511,10 @@ int vtkCDTAdvancingFront::RequestData(
     {
       std::copy_n(&xyz[3 * static_cast<size_t>(positions.Ids[d])], 3, &positions.XYZ[3 * d]);
     }
+    if (!withBins)
+    {
+      return;
+    }
     double positionBounds[6];
     pcs::BuildSurfaceSampleBins(positions.Bins,
       positions.XYZ.data(),
@@ -2526,7 +2531,7 @@ int vtkCDTAdvancingFront::RequestData(
     for (;;)
     {
       Positions positions;
-      distinctPositions(positions);
+      distinctPositions(positions, /*withBins=*/true);
       if (static_cast<Id>(positions.Ids.size()) == local)
       {
         // The front's grid (the same bins): one grid for both.
@@ -2713,12 +2718,13 @@ int vtkCDTAdvancingFront::RequestData(
     knnOthers = localOthers;
   }
   // Piles when the normals were given (none estimated): on this table when the points are
-  // distinct (before its off-line neighbours), else on a table of the distinct positions.
+  // distinct (before its off-line neighbours), else on the table of the distinct positions taken
+  // from it (the same as a search on the positions).
   if (!pilesChecked)
   {
     pilesChecked = true;
     Positions positions;
-    distinctPositions(positions);
+    distinctPositions(positions, /*withBins=*/false); // (the table comes from knn)
     const Id count = static_cast<Id>(positions.Ids.size());
     if (count == local)
     {
@@ -2726,7 +2732,34 @@ int vtkCDTAdvancingFront::RequestData(
     }
     else
     {
-      MergePiles(positions.XYZ.data(), count, positions.Ids, positions.Bins, {}, 0, firstCopy);
+      std::vector<int32_t> positionTable;
+      if (knnOthers > 0 && count > pcs::PileNeighbors)
+      {
+        std::vector<int32_t> positionOf(static_cast<size_t>(local));
+        for (Id k = 0; k < local; ++k)
+        {
+          positionOf[k] = positions.Slot[firstCopy[k]];
+        }
+        pcs::DistinctNeighbors(knn,
+          knnOthers,
+          positionOf,
+          positions.Ids,
+          positions.XYZ.data(),
+          static_cast<int32_t>(count),
+          pcs::PileNeighbors,
+          positionTable);
+      }
+      else
+      {
+        distinctPositions(positions, /*withBins=*/true); // (MergePiles searches them)
+      }
+      MergePiles(positions.XYZ.data(),
+        count,
+        positions.Ids,
+        positions.Bins,
+        positionTable,
+        positionTable.empty() ? 0 : pcs::PileNeighbors,
+        firstCopy);
     }
   }
   // Duplicates (firstCopy): in each group of copies the usable point of smallest id is kept. Then

@@ -24,7 +24,9 @@
 // - bad input: no points, two points, zero-length and NaN normals, duplicates, NaN coordinates:
 //   warnings, counts, and a valid output with every input point; a point with a zero-length or
 //   NaN normal gets an estimated one (outwards on the sphere, like the valid input normals) and
-//   is meshed.
+//   is meshed;
+// - a pile and exact copies with input normals: the same triangles as without the copies, which
+//   are reported as duplicates (TestPilesWithCopies).
 #include "vtkCDTAdvancingFront.h"
 #include "vtkReconstructionQuality.h"
 
@@ -608,6 +610,73 @@ bool TestPiles(bool withNormals, double spread)
   return CheckConsistentCounts(label, filter);
 }
 
+// Exact copies and a pile with input normals: the piles are then found on the distinct positions,
+// whose table of nearest neighbours is taken from the table of all the points (pcs::
+// DistinctNeighbors; searched again where copies leave a row short). A 2,000-point sphere with
+// 250 points spread 1e-7 about its point 7 (a pile of 251, as in TestPiles) is meshed with and
+// without a copy of every 5th sphere point and every 10th pile point, appended after the points:
+// the copies take no part (the same triangles, on the same point ids) and are reported as
+// duplicates, unused.
+bool TestPilesWithCopies()
+{
+  const std::string label = "pile and exact copies, input normals";
+  Cloud clean = Sphere(2000, 8);
+  std::mt19937_64 rng(9);
+  std::normal_distribution<double> g(0.0, 1.0);
+  const int perPile = 250;
+  const double* centre = &clean.XYZ[3 * 7];
+  const std::vector<double> at(centre, centre + 3);
+  for (int i = 0; i < perPile; ++i)
+  {
+    clean.XYZ.insert(
+      clean.XYZ.end(), { at[0] + 1e-7 * g(rng), at[1] + 1e-7 * g(rng), at[2] + 1e-7 * g(rng) });
+    clean.Normals.insert(clean.Normals.end(), at.begin(), at.end());
+  }
+  const vtkIdType n = static_cast<vtkIdType>(clean.XYZ.size() / 3);
+  Cloud copied = clean;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if ((i < 2000 && i % 5 == 0) || (i >= 2000 && i % 10 == 0))
+    {
+      copied.XYZ.insert(copied.XYZ.end(), &clean.XYZ[3 * i], &clean.XYZ[3 * i] + 3);
+      copied.Normals.insert(copied.Normals.end(), &clean.Normals[3 * i], &clean.Normals[3 * i] + 3);
+    }
+  }
+  const vtkIdType copies = static_cast<vtkIdType>(copied.XYZ.size() / 3) - n;
+  vtkNew<vtkCDTAdvancingFront> withoutCopies, withCopies;
+  auto cleanInput = MakeInput(clean, true);
+  auto copiedInput = MakeInput(copied, true);
+  PCS_CHECK(Run(withoutCopies, cleanInput).Errors == 0 && Run(withCopies, copiedInput).Errors == 0,
+    label << ": errors");
+  // The pile is one point without the copies (the sphere closed over its 2,000 points)...
+  PCS_CHECK(withoutCopies->GetNumberOfDuplicatePoints() == perPile &&
+      withoutCopies->GetNumberOfTriangles() == 2 * 2000 - 4,
+    label << ": without the copies " << withoutCopies->GetNumberOfDuplicatePoints()
+          << " duplicates, " << withoutCopies->GetNumberOfTriangles() << " triangles");
+  // ... and with them.
+  vtkDataArray* cleanCells = withoutCopies->GetOutput()->GetPolys()->GetConnectivityArray();
+  vtkDataArray* copiedCells = withCopies->GetOutput()->GetPolys()->GetConnectivityArray();
+  PCS_CHECK(cleanCells->GetNumberOfTuples() == copiedCells->GetNumberOfTuples(),
+    label << ": " << withCopies->GetNumberOfTriangles() << " triangles with the copies, "
+          << withoutCopies->GetNumberOfTriangles() << " without");
+  for (vtkIdType e = 0; e < cleanCells->GetNumberOfTuples(); ++e)
+  {
+    PCS_CHECK(cleanCells->GetTuple1(e) == copiedCells->GetTuple1(e),
+      label << ": triangle " << e / 3 << " differs with the copies");
+  }
+  PCS_CHECK(withCopies->GetNumberOfDuplicatePoints() == perPile + copies &&
+      withCopies->GetNumberOfUnusedPoints() == perPile + copies,
+    label << ": " << withCopies->GetNumberOfDuplicatePoints() << " duplicates, "
+          << withCopies->GetNumberOfUnusedPoints() << " unused, instead of " << perPile + copies);
+  auto* used =
+    vtkUnsignedCharArray::SafeDownCast(withCopies->GetOutput()->GetPointData()->GetArray("Used"));
+  for (vtkIdType i = n; i < n + copies; ++i)
+  {
+    PCS_CHECK(used && used->GetValue(i) == 0, label << ": copy " << i << " is used");
+  }
+  return CheckConsistentCounts(label, withCopies);
+}
+
 // A volume is not a surface: the integer lattice of 18^3 points (PCA normals). The front took
 // 22,558 points and mesh edges examined per point there (the sampled surfaces of at least 5,000
 // points 160 to 3,300) and ran away on larger lattices (30^3: 310 s, 110,499 triangles for 27,000
@@ -817,6 +886,7 @@ int TestCDTAdvancingFront(int, char*[])
     failures += TestPiles(true, spread) ? 0 : 1;
     failures += TestPiles(false, spread) ? 0 : 1;
   }
+  failures += TestPilesWithCopies() ? 0 : 1;
   failures += TestFarSpheres() ? 0 : 1;
   failures += TestLatticeVolume() ? 0 : 1;
   std::cout << failures << " failure(s)" << std::endl;

@@ -21,7 +21,10 @@
 //   the known axis (up to sign; the largest's sign vtkMath::Jacobi's, at least two non-negative
 //   components), the eigenvalues within 1e-7 of the largest (the trigonometric solution loses
 //   about half the digits of two nearly equal eigenvalues: 7e-9 on a rank-1 matrix); a multiple
-//   of the identity and the zero matrix (the fallback) give unit vectors.
+//   of the identity and the zero matrix (the fallback) give unit vectors;
+// - pcs::DistinctNeighbors (the table of the distinct positions of a cloud with exact copies,
+//   taken from the table of its points) equals the search on the positions
+//   (CheckDistinctNeighbors).
 #include "pcsNearestNeighbors.h"
 #include "pcsNormalEstimation.h"
 
@@ -401,6 +404,76 @@ bool CheckExtremeEigenvectors()
   }
   return ok;
 }
+
+// pcs::DistinctNeighbors: the table of the distinct positions taken from the table of all the
+// points equals the search on the positions (FindNearestNeighbors, checked against brute force
+// above), entry for entry, ties included. The positions: the lattice and sphere points of
+// TiesAndDuplicates without its copies; the cloud holds each of them 1 to 12 times, in a
+// shuffled order (the first copy of a position is anywhere in the cloud), so that point rows
+// hold copies and leave fewer than k positions, searched again: `copiedShare` of the positions
+// have copies (2/3: most rows are short, all searched again at once; 1/200: a few, each row
+// searched alone).
+bool CheckDistinctNeighbors(double copiedShare)
+{
+  const std::vector<double> all = TiesAndDuplicates();
+  std::vector<double> distinct(all.begin(), all.begin() + 3 * 256); // the lattice, then the sphere
+  const size_t sphere = all.size() - 3 * 1500;
+  distinct.insert(distinct.end(), all.begin() + sphere, all.end());
+  const int32_t positions = static_cast<int32_t>(distinct.size() / 3);
+  std::vector<int32_t> sourceOf; // per point of the cloud: its position in `distinct`
+  std::mt19937_64 rng(5);
+  for (int32_t d = 0; d < positions; ++d)
+  {
+    const bool copied = std::uniform_real_distribution<double>(0.0, 1.0)(rng) < copiedShare;
+    const int copies = copied ? 2 + static_cast<int>(rng() % 11) : 1;
+    sourceOf.insert(sourceOf.end(), copies, d);
+  }
+  std::shuffle(sourceOf.begin(), sourceOf.end(), rng);
+  const int32_t n = static_cast<int32_t>(sourceOf.size());
+  std::vector<double> xyz;
+  std::vector<int32_t> firstOf(positions, -1); // per source position: its first copy
+  for (int32_t i = 0; i < n; ++i)
+  {
+    const double* q = &distinct[3 * static_cast<size_t>(sourceOf[i])];
+    xyz.insert(xyz.end(), q, q + 3);
+    firstOf[sourceOf[i]] = firstOf[sourceOf[i]] < 0 ? i : firstOf[sourceOf[i]];
+  }
+  // The positions numbered as their first copies: positionIds increasing.
+  std::vector<int32_t> positionIds(firstOf);
+  std::sort(positionIds.begin(), positionIds.end());
+  std::vector<int32_t> positionOf(n);
+  std::vector<double> packed;
+  std::vector<int32_t> numberOfFirst(n, -1);
+  for (int32_t d = 0; d < positions; ++d)
+  {
+    numberOfFirst[positionIds[d]] = d;
+    packed.insert(packed.end(),
+      &xyz[3 * static_cast<size_t>(positionIds[d])],
+      &xyz[3 * static_cast<size_t>(positionIds[d])] + 3);
+  }
+  for (int32_t i = 0; i < n; ++i)
+  {
+    positionOf[i] = numberOfFirst[firstOf[sourceOf[i]]];
+  }
+  double bounds[6];
+  Bounds(packed, bounds);
+  const int k = 8;
+  const std::vector<int32_t> expected = Search(packed, k, bounds);
+  PCS_CHECK(SameTable(expected, BruteForce(packed, k), k, "positions, brute force"),
+    "the search on the positions");
+  Bounds(xyz, bounds);
+  for (const int width : { 8, 9, 12 })
+  {
+    const std::vector<int32_t> pointTable = Search(xyz, width, bounds);
+    std::vector<int32_t> found;
+    pcs::DistinctNeighbors(
+      pointTable, width, positionOf, positionIds, packed.data(), positions, k, found);
+    PCS_CHECK(SameTable(found, expected, k, "distinct positions from the point table"),
+      "distinct positions from a table of width " << width << ", " << copiedShare
+                                                  << " of them copied");
+  }
+  return true;
+}
 }
 
 int TestNearestNeighbors(int, char*[])
@@ -409,5 +482,7 @@ int TestNearestNeighbors(int, char*[])
   ok = CheckScanLines() && ok;
   ok = CheckPileBeforeSinglePoints() && ok;
   ok = CheckExtremeEigenvectors() && ok;
+  ok = CheckDistinctNeighbors(2.0 / 3.0) && ok;
+  ok = CheckDistinctNeighbors(1.0 / 200.0) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

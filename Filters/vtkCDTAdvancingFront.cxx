@@ -2791,6 +2791,69 @@ int vtkCDTAdvancingFront::RequestData(
     vtkWarningMacro(<< pcs::DuplicatesWarning(
                       this->NumberOfDuplicatePoints, "the copy of smallest id is meshed"));
   }
+  // With copies (exact, or a pile's points), the table is read on the distinct positions: a row
+  // is its point's position's row (pcs::DistinctNeighbors: each other position once, by its first
+  // copy), and the scan-line pass below sees the same rows and bins as on the cloud without the
+  // copies. Otherwise a row holding copies of a point or of a neighbour looks like a line, and the
+  // local spacing and the noise band weigh copied neighbours several times: the triangles
+  // depended on how many copies a point has.
+  if (knnOthers > 0)
+  {
+    Positions positions;
+    distinctPositions(positions, /*withBins=*/true);
+    const Id count = static_cast<Id>(positions.Ids.size());
+    if (count < local && count > knnOthers)
+    {
+      std::vector<int32_t> positionOf(static_cast<size_t>(local));
+      for (Id k = 0; k < local; ++k)
+      {
+        positionOf[k] = positions.Slot[firstCopy[k]];
+      }
+      std::vector<int32_t> positionTable;
+      pcs::DistinctNeighbors(knn,
+        knnOthers,
+        positionOf,
+        positions.Ids,
+        positions.XYZ.data(),
+        static_cast<int32_t>(count),
+        knnOthers,
+        positionTable);
+      std::vector<double> positionStretch;
+      if (!scanLinesChecked &&
+        pcs::AddOffLineNeighbors(positions.Bins,
+          positions.XYZ.data(),
+          static_cast<int32_t>(count),
+          knnOthers,
+          positionTable,
+          &positionStretch,
+          0.05,
+          ScanLineRadiusFactor,
+          ScanLineShare) <= 0)
+      {
+        positionStretch.clear();
+      }
+      scanLinesChecked = true;
+      for (Id k = 0; k < local; ++k)
+      {
+        const int32_t* row = &positionTable[static_cast<size_t>(positionOf[k]) * knnOthers];
+        for (int j = 0; j < knnOthers; ++j)
+        {
+          knn[static_cast<size_t>(k) * knnOthers + j] = row[j] >= 0 ? positions.Ids[row[j]] : -1;
+        }
+      }
+      stretch.clear();
+      if (!positionStretch.empty())
+      {
+        stretch.resize(3 * static_cast<size_t>(local));
+        for (Id k = 0; k < local; ++k)
+        {
+          std::copy_n(&positionStretch[3 * static_cast<size_t>(positionOf[k])],
+            3,
+            &stretch[3 * static_cast<size_t>(k)]);
+        }
+      }
+    }
+  }
   if (!scanLinesChecked && knnOthers > 0 &&
     pcs::AddOffLineNeighbors(bins,
       xyz.data(),

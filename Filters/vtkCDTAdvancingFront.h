@@ -267,7 +267,10 @@
  * of 1,000 points on a 4,000-point sphere took 11 s and left holes, 50 piles of 1,000 on a
  * 5 x 10^4-point sphere more than 150 s (now 0.07 s and about 1.2 s, closed; the normals are
  * estimated again on one point per pile when piles are found; Benchmarks/results/cdt.md and
- * robustness.md).
+ * robustness.md). The neighbour tables (normals, scan lines, local spacing, noise band) are read
+ * on the distinct positions, so copies do not change the mesh: the cloud with any number of
+ * copies of some points gives the same triangles as without them (before, one copy of a seventh
+ * of CGAL's camel vertices changed 3,015 of its 19,492 triangles).
  * Points with non-finite
  * coordinates are skipped and counted, with a warning; zero-length or non-finite input normals are
  * estimated, with a warning (see Normals above). Fewer

@@ -34,6 +34,11 @@
   2 % of the ring normals more than 30 degrees off the known ones (45 of 304 before the planes of
   single rows took points of the rings beside them, 3 after), at most 1 % inwards, the mesh
   within one ring spacing of the capsule (6 before: triangles across the tube; 0.72 after).
+- Exact copies do not change the mesh: 2,000 random points of a sphere, then 285 of them given 1,
+  2 or 3 more exact copies each, with estimated and with given normals: the same triangles as
+  without the copies, the copies counted as duplicates and unused. Before the table of nearest
+  neighbours was read on the distinct positions, 2 copies changed 358 of the 3,996 triangles here
+  with estimated normals; one copy of a seventh of CGAL's camel vertices changed 3,015.
 
 Usage: python3 TestCDTAdvancingFront.py
 """
@@ -327,6 +332,39 @@ check(off.sum() <= 0.02 * len(ring_points), "capsule: at most 2 %% of the ring n
       "than 30 degrees off (%d)" % off.sum())
 check(np.count_nonzero(cosine < 0) <= 0.01 * len(capsule), "capsule: at most 1 % inwards")
 check(worst <= 1.0, "capsule: mesh within one ring spacing of the capsule (%.2f)" % worst)
+
+# Exact copies: the same triangles as the cloud without them.
+def triangle_set(points, normals=None):
+    front = vtkCDTAdvancingFront()
+    front.SetInputData(cloud(points, normals))
+    front.Update()
+    mesh = front.GetOutput()
+    ids = mesh.GetPolys().GetConnectivityArray()
+    flat = [ids.GetValue(i) for i in range(ids.GetNumberOfValues())]
+    triangles = set(tuple(sorted(flat[i:i + 3])) for i in range(0, len(flat), 3))
+    used = mesh.GetPointData().GetArray("Used")
+    return triangles, front.GetNumberOfDuplicatePoints(), sum(
+        1 for i in range(used.GetNumberOfTuples()) if used.GetValue(i) == 0)
+
+
+copy_rng = np.random.default_rng(4)
+sphere_points = copy_rng.normal(size=(2000, 3))
+sphere_points /= np.linalg.norm(sphere_points, axis=1)[:, None]
+copied = copy_rng.choice(2000, 285, replace=False)
+for normals in (None, sphere_points):
+    label = "given normals" if normals is not None else "estimated normals"
+    reference, _, _ = triangle_set(sphere_points, normals)
+    check(len(reference) == 2 * 2000 - 4, "copies: the sphere without copies closed (%s)" % label)
+    for copies in (1, 2, 3):
+        extra = copied.repeat(copies)
+        with_copies = np.vstack([sphere_points, sphere_points[extra]])
+        with_normals = None if normals is None else np.vstack([normals, normals[extra]])
+        triangles, duplicates, unused = triangle_set(with_copies, with_normals)
+        print("copies x%d, %s: %d triangles, %d differ, %d duplicates, %d unused"
+              % (copies, label, len(triangles), len(triangles ^ reference), duplicates, unused))
+        check(triangles == reference, "copies x%d (%s): the same triangles" % (copies, label))
+        check(duplicates == len(extra) and unused == len(extra),
+              "copies x%d (%s): every copy a duplicate, unused" % (copies, label))
 
 # The kitten scan.
 if not os.path.exists(CGAL_DATA):

@@ -778,19 +778,21 @@ public:
   // handleThreshold or the group holds more than 8 cells. With keepTopology (rule 7 of the class
   // docs) the group goes on past a manifold state that opened a handle, and is accepted only when
   // the topology is the same or a handle closed (the solid staying connected) and it shows the
-  // outside no facet larger than c's largest. A point may be left in no cell when its last cell
-  // holds it by facets over strutFacet only (rule 8: a strut; -1: never), at most
-  // MaximumStrutPoints per group, never by a group that opens a handle; such points are listed
-  // in StrutPoints.
+  // outside no facet larger than c's largest. Facets over clearFacet are clearly not surface
+  // triangles (-1: none is): a point may be left in no cell when its last cell holds it by such
+  // facets only (rule 8: a strut), at most MaximumStrutPoints per group, never by a group that
+  // opens a handle; such points are listed in StrutPoints. Without keepTopology, a group that
+  // splits a part off is accepted when every facet it takes off the boundary is such a facet
+  // (rule 9: a neck between two objects).
   bool Try(int64_t c,
     double threshold,
     double handleThreshold,
     bool keepTopology = false,
-    double strutFacet = -1.0)
+    double clearFacet = -1.0)
   {
     this->Group.clear();
     this->StrutPoints.clear();
-    this->StrutFacet = strutFacet;
+    this->ClearFacet = clearFacet;
     this->BadCount = 0;
     this->DirtyBadCount = 0;
     const double startFacet = this->Solid.LargestExteriorFacet(c);
@@ -849,10 +851,11 @@ public:
     {
       // The Euler characteristic of the boundary drops when a handle opens, stays when the
       // topology does, and grows when a handle closes (a bridge goes) or a component splits off:
-      // the last is refused (the solid must stay connected around the group), and so is a handle
-      // opened by a short group (at most 8 cells) whose start facet is not over handleThreshold
-      // (HandleFactor; by default every group start passes: the short groups punch the webs of
-      // flat tetrahedra left across concave regions, see the class docs).
+      // the last only when the group took nothing but clear facets off the boundary (a neck
+      // between two objects, rule 9; the solid must stay connected around any other group), and
+      // a handle opened by a short group (at most 8 cells) only when its start facet is over
+      // handleThreshold (HandleFactor; by default every group start passes: the short groups
+      // punch the webs of flat tetrahedra left across concave regions, see the class docs).
       if (!changeKnown)
       {
         change = this->EulerChange();
@@ -872,7 +875,7 @@ public:
       }
       else
       {
-        ok = change == 0 || this->StaysConnected(true);
+        ok = change == 0 || this->StaysConnected(true) || this->TookOnlyClearFacets();
       }
     }
     if (!ok)
@@ -961,6 +964,36 @@ public:
       }
     }
     return false;
+  }
+
+  // Whether every facet that the (removed) group took off the boundary (a facet of a group cell
+  // facing an outside cell not in the group) measures over ClearFacet: a neck whose surface
+  // triangles are all clearly not surface triangles (rule 9 of the class docs). A sampled thin part
+  // of an object keeps triangles of the sampling's size on its surface, which no group takes.
+  bool TookOnlyClearFacets()
+  {
+    if (!(this->ClearFacet > 0.0))
+    {
+      return false;
+    }
+    ++this->Generation;
+    for (int64_t g : this->Group)
+    {
+      this->Stamp[g] = this->Generation;
+    }
+    for (int64_t g : this->Group)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        const int64_t n = this->DT.Neighbor(g, k);
+        if (!this->Solid.IsInside(n) && this->Stamp[n] != this->Generation &&
+          !(this->Solid.FacetMeasure(g, k) > this->ClearFacet))
+        {
+          return false;
+        }
+      }
+    }
+    return true;
   }
 
   // The change of the boundary's Euler characteristic that the (removed) group made: -2 for each
@@ -1235,17 +1268,17 @@ private:
   }
 
   // Whether the inside cell c is the last cell of its vertex in slot k and holds it only by a
-  // strut: its three facets through the vertex all measure over StrutFacet (clearly not surface
+  // strut: its three facets through the vertex all measure over ClearFacet (clearly not surface
   // triangles), so the vertex has no surface triangle left (rule 8 of the class docs).
   bool HoldsOnlyStrut(int64_t c, int k) const
   {
-    if (!(this->StrutFacet > 0.0))
+    if (!(this->ClearFacet > 0.0))
     {
       return false;
     }
     for (int j = 0; j < 4; ++j)
     {
-      if (j != k && !(this->Solid.FacetMeasure(c, j) > this->StrutFacet))
+      if (j != k && !(this->Solid.FacetMeasure(c, j) > this->ClearFacet))
       {
         return false;
       }
@@ -1450,9 +1483,11 @@ private:
   pcs::DisjointSets<int64_t> Searches;
   std::vector<int32_t> EdgeEnds;
   std::vector<std::pair<int32_t, int64_t>> VertexCells;
-  // A group may leave a point in no cell when the point's last cell holds it by facets over
-  // StrutFacet only (-1: never), at most MaximumStrutPoints points per group.
-  double StrutFacet = -1.0;
+  // Facets over ClearFacet are clearly not surface triangles (-1: none is): a group may leave a
+  // point in no cell when the point's last cell holds it by such facets only, at most
+  // MaximumStrutPoints points per group (rule 8), and split a part off when it takes only such
+  // facets off the boundary (rule 9).
+  double ClearFacet = -1.0;
   static constexpr size_t MaximumStrutPoints = 2;
 };
 

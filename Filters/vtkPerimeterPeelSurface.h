@@ -96,8 +96,8 @@
  *      The Euler characteristic of the boundary tells what a group does: it drops by 2 when a
  *      handle opens, stays when the topology stays (e.g. the flat layers of nearly cocircular
  *      points over a torus's hole go), and grows when a bridge goes (a handle closes, e.g. a
- *      strip left across a hole) or a part splits off; the last is refused (a search through
- *      the remaining tetrahedra checks that the cells around the group stay connected).
+ *      strip left across a hole) or a part splits off; the last only under rule 9 (a search
+ *      through the remaining tetrahedra checks whether the cells around the group stay connected).
  *      HandleFactor (default 1: off) can ask for stronger evidence before a handle opens: a
  *      group of at most 8 tetrahedra then opens one only when its start facet exceeds
  *      HandleFactor x GroupFactor x threshold (squared for AREA). It was 2 until 2026-11-23,
@@ -197,6 +197,23 @@
  *      distances are unchanged (1 point more unused on camel seeds 1-4; elephant seed 5 genus 2
  *      -> 3); the 9 mesh vertex sets and the web benchmark unchanged. Webs (membranes of many
  *      tetrahedra across such gaps) are not struts: their groups still burrow into the solid.
+ *   9. Separate objects: a group of rules 3 or 5 (not 7) that splits the solid in two (the Euler
+ *      characteristic of the boundary +2, the cells around the group no longer connected) is
+ *      accepted when every facet it takes off the boundary measures over the group start
+ *      (GroupFactor x threshold, or the group start limit of rule 5): a neck made only of facets
+ *      that are clearly not surface triangles, as the peel leaves between two objects. Each part
+ *      is a closed 2-manifold (the links are checked as for any group) and a point held only by
+ *      the neck is reported unused (rule 8). A sampled thin part of one object (a dumbbell's
+ *      handle, legs, a knot's tube) keeps surface triangles of the sampling's size, which no group
+ *      enters (rule 3) nor takes (this rule), so it stays. Before 2026-11-24 every split was
+ *      refused: two random unit spheres of 20,000 points each, centres 5 apart, came out as one
+ *      genus-0 surface joined by a neck of 6 triangles up to 41 spacings from the spheres (the
+ *      group removing its 3 tetrahedra split the solid), as did three or nine spheres; now one
+ *      closed genus-0 component per sphere, every triangle within 0.2 spacing of its sphere.
+ *      Limits: objects closer than about 4 spacings stay joined by a web whose facets are under
+ *      the group start (as handles narrower than that stay closed); a thread of radius about one
+ *      spacing, sampled at random, may be cut where its sample has a gap (1 of 2 seeds). Nested
+ *      objects: the inner one is inside the solid, its points unused (the output bounds a solid).
  * - Duplicate points are tetrahedralized once (the others have `Used` = 0 and are counted in
  *   NumberOfDuplicatePoints, with a warning): exact copies (one copy each, merged by the
  *   Delaunay kernel), and the points of a pile of near-coincident points (a scanner's repeated

@@ -24,6 +24,10 @@
 // - a strut (rule 8): a point 20 or 30 mean spacings above a random sphere (20,000 points, outlier
 //   removal off), held at the end by one tetrahedron of facets over the group start, is reported
 //   unused and the strut removed: the sphere alone, every triangle within one spacing of it;
+// - separate objects (rule 9): two and three random spheres of different radii and densities, far
+//   apart: one closed, manifold, genus-0 component per sphere over every point, every triangle
+//   within one mean spacing of its sphere; a dumbbell whose neck is sampled (radius 4 spacings)
+//   stays one genus-0 component;
 // - the field data agree with the mesh (triangles, used points, Used array).
 #include "vtkPerimeterPeelSurface.h"
 #include "vtkReconstructionQuality.h"
@@ -476,6 +480,128 @@ bool CheckStrut()
   return ok;
 }
 
+// Separate objects (rule 9): random samples of spheres of different radii and densities, far
+// apart. Each sphere comes out as its own closed, manifold, genus-0 component over every point
+// (2V - 4 triangles per component), every triangle centroid within one mean spacing of its
+// sphere. Before the rule the peel joined them by a neck of long triangles that no group could
+// remove (its removal splits the solid): one component, triangles 8-20 spacings out (2026-11-24).
+struct Ball
+{
+  std::array<double, 3> Centre;
+  double Radius;
+  int Points;
+  double Spacing() const { return Radius * std::sqrt(4 * M_PI / Points); }
+};
+
+bool CheckSeparateBalls(const std::string& label, const std::vector<Ball>& balls, unsigned seed)
+{
+  std::vector<double> xyz;
+  for (const Ball& b : balls)
+  {
+    const std::vector<double> unit = SpherePoints(b.Points, seed++);
+    for (size_t i = 0; i < unit.size(); ++i)
+    {
+      xyz.push_back(b.Centre[i % 3] + b.Radius * unit[i]);
+    }
+  }
+  vtkSmartPointer<vtkPolyData> mesh = Peel(xyz);
+  auto q = Measure(mesh);
+  const double farthest = pcstest::FarthestCentroid(mesh,
+    [&balls](const double* c)
+    {
+      double nearest = VTK_DOUBLE_MAX;
+      for (const Ball& b : balls)
+      {
+        const double d = std::sqrt(vtkMath::Distance2BetweenPoints(c, b.Centre.data()));
+        nearest = std::min(nearest, std::fabs(d - b.Radius) / b.Spacing());
+      }
+      return nearest;
+    });
+  const double components = FieldValue(q, "NumberOfConnectedComponents");
+  std::cout << label << ": " << mesh->GetNumberOfPolys() << " triangles, " << components
+            << " components, farthest triangle centroid " << farthest << " spacings, "
+            << FieldValue(mesh, "NumberOfGroupRemovals") << " groups" << std::endl;
+  const double count = static_cast<double>(balls.size());
+  PCS_CHECK(components == count, label << ": " << components << " components");
+  PCS_CHECK(FieldValue(q, "NumberOfBoundaryEdges") == 0, label << ": closed");
+  PCS_CHECK(FieldValue(q, "NumberOfNonManifoldEdges") == 0 &&
+      FieldValue(q, "NumberOfNonManifoldVertices") == 0,
+    label << ": manifold");
+  PCS_CHECK(FieldValue(q, "Genus") == 0, label << ": genus " << FieldValue(q, "Genus"));
+  PCS_CHECK(FieldValue(mesh, "NumberOfUnusedPoints") == 0, label << ": unused points");
+  PCS_CHECK(mesh->GetNumberOfPolys() == 2 * FieldValue(q, "NumberOfUsedPoints") - 4 * count,
+    label << ": 2V - 4 triangles per component");
+  PCS_CHECK(FieldValue(q, "OrientationConsistency") == 1.0, label << ": consistent orientation");
+  PCS_CHECK(SignedVolume6(mesh) > 0.0, label << ": triangles face outward");
+  PCS_CHECK(farthest <= 1.0, label << ": a triangle " << farthest << " spacings out");
+  return CheckConsistentFields(label.c_str(), mesh);
+}
+
+// Random points of a dumbbell: two unit spheres, centres 3 apart on the x axis, joined by a
+// cylinder of radius `neck` along the axis; uniform by area (each point of a part inside another
+// part is drawn again).
+std::vector<double> DumbbellPoints(int n, double neck, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> g(0.0, 1.0);
+  const double length = 3.0, sphereArea = 4 * M_PI, neckArea = 2 * M_PI * neck * length;
+  auto inSphere = [](const double* p, double cx)
+  { return (p[0] - cx) * (p[0] - cx) + p[1] * p[1] + p[2] * p[2] < 1.0 - 1e-12; };
+  std::vector<double> xyz;
+  while (static_cast<int>(xyz.size() / 3) < n)
+  {
+    const double pick = u(rng) * (2 * sphereArea + neckArea);
+    double p[3];
+    bool keep = true;
+    if (pick < 2 * sphereArea)
+    {
+      const double cx = pick < sphereArea ? 0.0 : length;
+      double d[3] = { g(rng), g(rng), g(rng) };
+      const double r = vtkMath::Norm(d);
+      p[0] = cx + d[0] / r;
+      p[1] = d[1] / r;
+      p[2] = d[2] / r;
+      keep = !inSphere(p, length - cx) &&
+        !(p[0] > 0.0 && p[0] < length && p[1] * p[1] + p[2] * p[2] < neck * neck * (1 - 1e-12));
+    }
+    else
+    {
+      const double a = 2 * M_PI * u(rng);
+      p[0] = length * u(rng);
+      p[1] = neck * std::cos(a);
+      p[2] = neck * std::sin(a);
+      keep = !inSphere(p, 0.0) && !inSphere(p, length);
+    }
+    if (keep)
+    {
+      xyz.insert(xyz.end(), { p[0], p[1], p[2] });
+    }
+  }
+  return xyz;
+}
+
+bool CheckSeparateObjects()
+{
+  bool ok = CheckSeparateBalls("two spheres, radii 1 and 0.5",
+    { { { 0.0, 0.0, 0.0 }, 1.0, 4000 }, { { 3.0, 0.0, 0.0 }, 0.5, 1000 } },
+    11);
+  ok = CheckSeparateBalls("three spheres, radii 1, 0.5 and 0.3, three densities",
+         { { { 0.0, 0.0, 0.0 }, 1.0, 4000 },
+           { { 2.5, 0.0, 0.0 }, 0.5, 3000 },
+           { { 0.0, 2.0, 0.5 }, 0.3, 2000 } },
+         21) &&
+    ok;
+  // A dumbbell whose neck is sampled (radius 4 mean spacings) is one object: the neck's surface
+  // triangles are of the sampling's size, never over the group start, so it stays.
+  const int n = 12000;
+  const double spacing = std::sqrt((8 * M_PI) / n);
+  ok = CheckClosedSurface(
+         "dumbbell, neck of 4 spacings", Peel(DumbbellPoints(n, 4 * spacing, 3)), 0) &&
+    ok;
+  return ok;
+}
+
 // Abort during the unfolding pass (rule 6): requested at the progress 0.9 reported when the peel
 // is done, it must stop the pass (which reports progress and reads the flag) and leave an output
 // with every point and no triangle, as an abort during the peel does.
@@ -526,5 +652,6 @@ int TestPerimeterPeelSurface(int, char*[])
   ok = CheckNoisy() && ok;
   ok = CheckAbortInUnfolding() && ok;
   ok = CheckStrut() && ok;
+  ok = CheckSeparateObjects() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

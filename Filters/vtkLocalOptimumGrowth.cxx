@@ -275,6 +275,8 @@ private:
   }
 
   bool Expand(Id a, Id b, int level, bool mayReverse = true);
+  double LocalSpacing(Id v) const;
+  bool WideEarFits(Id u, Id w, Id apex);
   bool OnFrontLoop(Id a, Id b, Id c) const;
   bool ShortLoop(Id a, Id b);
   double CloudSpacing();
@@ -911,6 +913,61 @@ double Grower::EarScore(Id v, Id u, Id w, double cosNormal, double minimumRatio)
 }
 
 //------------------------------------------------------------------------------------------------
+// The local spacing of v: the mean distance to its 6 nearest neighbours (fewer when K < 6).
+double Grower::LocalSpacing(Id v) const
+{
+  const Id* nb = this->Neighbors(v);
+  double sum = 0.0;
+  int count = 0;
+  for (int j = 0; j < std::min(6, this->K) && nb[j] >= 0; ++j)
+  {
+    sum += std::sqrt(Distance2(this->P3(v), this->P3(nb[j])));
+    ++count;
+  }
+  return count > 0 ? sum / count : 0.0;
+}
+
+// The new edge u-w of an ear (apex between u and w on the front) that exceeds constraint 3, at
+// the last relaxation level, is already a front edge (the ear closes a front loop of three
+// edges), or at most WideEarSpacings local spacings long (the mean of its ends'), or the thin
+// sliver of unmeshed surface that justifies such ears is there: a candidate of the current
+// expansion (FarSide) lies strictly across u-w from the apex (in the frame) and inside the sphere
+// on u-w as diameter (the other front). On an open border (a scan's edge) nothing lies beyond
+// the front, and such ears, each new edge up to 2 MaximumEdgeRatio times the one it expands, cut
+// ever longer chords across the border: a lid over a hemisphere's opening, edges of 30 h.
+bool Grower::WideEarFits(Id u, Id w, Id apex)
+{
+  constexpr double WideEarSpacings = 3.0;
+  if (this->Mesh.IsBoundaryHalfEdge(w, u))
+  {
+    return true;
+  }
+  const double bound = WideEarSpacings * 0.5 * (this->LocalSpacing(u) + this->LocalSpacing(w));
+  if (Distance2(this->P3(u), this->P3(w)) <= bound * bound)
+  {
+    return true;
+  }
+  const double* u2 = this->P2(u);
+  const double* w2 = this->P2(w);
+  const int apexSide = P::Orient2D(u2, w2, this->P2(apex));
+  for (Id q : this->FarSide)
+  {
+    if (q == u || q == w || P::Orient2D(u2, w2, this->P2(q)) != -apexSide)
+    {
+      continue;
+    }
+    double qu[3], qw[3];
+    Sub(this->P3(u), this->P3(q), qu);
+    Sub(this->P3(w), this->P3(q), qw);
+    if (Dot(qu, qw) < 0.0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------------------------
 // Expansion of the front edge a->b (triangle (a, b, y)) by the triangle (b, a, c).
 // Stages (RelaxConstraints on): 0, only the candidates whose triangle bends by at most half of
 // constraint 1; 1, every candidate, the paper's constraints; 2 and 3, constraint 2 relaxed
@@ -1000,11 +1057,13 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
     // Constraint 3. At the last relaxation level an ear may exceed it: its angle at the shared
     // end is the front's own angle there, which a thin sliver of unmeshed surface (two fronts
     // meeting almost along a line) has close to 180 degrees at every vertex. Such an ear must
-    // then meet constraint 1 strictly towards both triangles it closes between.
+    // then meet constraint 1 strictly towards both triangles it closes between, and its new
+    // edge must be short or span a sliver (WideEarFits).
     const double dotA = Dot(ab, ac), dotB = -Dot(ab, bc);
     const bool wideBase =
       WiderThan(dotA, this->Par.CosBase, dab, la2) || WiderThan(dotB, this->Par.CosBase, dab, lb2);
-    if (wideBase && (!ear || level < 2))
+    if (wideBase &&
+      (!ear || level < 2 || !this->WideEarFits(c == n ? a : p, c == n ? n : b, c == n ? b : a)))
     {
       continue;
     }
@@ -2156,15 +2215,7 @@ void Grower::ShortenLongEdges()
   {
     if (local[v] < 0.0)
     {
-      const Id* nb = this->Neighbors(v);
-      double sum = 0.0;
-      int count = 0;
-      for (int j = 0; j < std::min(6, this->K) && nb[j] >= 0; ++j)
-      {
-        sum += std::sqrt(Distance2(this->P3(v), this->P3(nb[j])));
-        ++count;
-      }
-      local[v] = count > 0 ? sum / count : 0.0;
+      local[v] = this->LocalSpacing(v);
     }
     return local[v];
   };

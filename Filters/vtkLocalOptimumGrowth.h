@@ -126,9 +126,15 @@
  *    the front neighbour of a or b) may also exceed constraint 3 -- its angle at the shared end
  *    is the front's own angle there, close to 180 degrees at every vertex of a thin sliver of
  *    unmeshed surface left where two fronts meet almost along a line -- if its normal is within
- *    MaximumNormalAngle of both triangles it closes between. A bridge made after the first
- *    stage may not join two different front loops of one part (that would add a handle: there
- *    it came only from near-contacts of the front with itself, which folded the mesh over).
+ *    MaximumNormalAngle of both triangles it closes between and its new edge is at most 3 local
+ *    spacings long (the mean of its ends' mean distances to their 6 nearest neighbours) or the
+ *    sliver is there: a candidate point lies across the new edge, within the sphere on it as
+ *    diameter. On an open border (a scan's edge, nothing beyond the front) such ears otherwise
+ *    followed each other, each new edge up to 2 MaximumEdgeRatio times the one it expanded, and
+ *    cut chords across the border up to 153 h long (h = sqrt(area / N); random samples of a wavy
+ *    square: Benchmarks/results/local_optimum.md, task logrim). A bridge made after the first stage may not join two different front loops of one
+ *    part (that would add a handle: there it came only from near-contacts of the front with
+ *    itself, which folded the mesh over).
  *    At the first stage such a bridge closes the front around a tube (a torus), but not when
  *    either loop is a hole: at most max(3, MaximumHoleEdges) edges, or shorter than 4 pi mean
  *    spacings (the loop around a tube of radius below 2 spacings, which step 6 cannot tell from

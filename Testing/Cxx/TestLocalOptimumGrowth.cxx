@@ -24,6 +24,8 @@
 //   point unused: closed, genus 0 / 1, every point used; on the spheres (and the 3000-point
 //   sphere above) no edge folded over between two triangles without a sliver angle (below 5
 //   degrees);
+// - open random hemispheres: one boundary loop, every point used, no edge longer than 6 h (no
+//   chords across the rim);
 // - noisy random spheres (noise a fifth of the mean spacing): closed, manifold, and at most 1.4 %
 //   of the edges folded over (1.82 % when step 7 flipped to the shorter diagonal only);
 // - degenerate inputs (no point, 2 points, collinear points): a warning and no triangle.
@@ -581,6 +583,50 @@ bool TestRandomSamples()
   return true;
 }
 
+// Open hemispheres of random points (uniform by area, h = sqrt(area / N)): the front reaches the
+// rim, where nothing lies beyond it. One disk, every point used, manifold, and no edge longer than
+// 6 h (4.6-4.8 h now). Before the new edge of an ear exceeding constraint 3 was bounded by 3 local
+// spacings, such ears cut ever longer chords across the rim at the last relaxation level (a
+// partial lid over the opening): 16.0 h on the first seed.
+bool TestOpenHemispheres()
+{
+  const double center[3] = { 0, 0, 0 };
+  const int n = 3000;
+  const double h = std::sqrt(2.0 * vtkMath::Pi() / n);
+  for (unsigned seed = 1; seed <= 3; ++seed)
+  {
+    std::vector<double> xyz = RandomSphere(n, seed, center, 1.0);
+    for (size_t i = 2; i < xyz.size(); i += 3)
+    {
+      xyz[i] = std::fabs(xyz[i]);
+    }
+    vtkNew<vtkLocalOptimumGrowth> growth;
+    growth->SetInputData(pcstest::MakeCloud(xyz));
+    growth->Update();
+    const std::string what = "hemisphere " + std::to_string(n) + "/" + std::to_string(seed);
+    vtkPolyData* mesh = growth->GetOutput();
+    const Quality q = Measure(mesh);
+    PCS_CHECK(q.NonManifoldEdges == 0 && q.NonManifoldVertices == 0, what << ": manifold");
+    PCS_CHECK(q.Loops == 1 && q.Components == 1 && q.Euler == 1,
+      what << ": one disk, loops " << q.Loops << ", Euler characteristic " << q.Euler);
+    PCS_CHECK(
+      growth->GetNumberOfUnusedPoints() == 0 && q.UsedPoints == n, what << ": every point used");
+    double longest = 0.0;
+    for (const auto& t : pcstest::CellTuples<3>(mesh))
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        double a[3], b[3];
+        mesh->GetPoint(t[j], a);
+        mesh->GetPoint(t[(j + 1) % 3], b);
+        longest = std::max(longest, std::sqrt(vtkMath::Distance2BetweenPoints(a, b)));
+      }
+    }
+    PCS_CHECK(longest <= 6.0 * h, what << ": longest edge " << longest / h << " h");
+  }
+  return true;
+}
+
 // Noisy random spheres (Gaussian noise of 0.1 sqrt(area / N) per coordinate, about a fifth of
 // the mean spacing): the noise leaves folds (small standing triangles), which step 7 flips, to
 // the longer diagonal too when it joins two K nearest neighbours. Over five seeds of 5000 points
@@ -654,6 +700,7 @@ int TestLocalOptimumGrowth(int, char*[])
   ok = TestStallingScanLines() && ok;
   ok = TestTwoSpheres() && ok;
   ok = TestRandomSamples() && ok;
+  ok = TestOpenHemispheres() && ok;
   ok = TestNoisySpheres() && ok;
   ok = TestDegenerate() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -307,7 +307,8 @@ int64_t FindOutliersAndPiles(const double* xyz,
   std::vector<uint8_t>& outlier,
   std::vector<int32_t>& firstOf,
   int64_t& copies,
-  const std::function<bool(double)>& progress)
+  const std::function<bool(double)>& progress,
+  bool withExactCopies)
 {
   outlier.assign(ids.size(), 0);
   firstOf.clear();
@@ -346,28 +347,34 @@ int64_t FindOutliersAndPiles(const double* xyz,
       count += outlier[j];
     }
   }
-  if (positionCopies > 0)
+  const int32_t entries = static_cast<int32_t>(ids.size());
+  const bool exact = withExactCopies && n < entries;
+  if (positionCopies > 0 || exact)
   {
     // The positions in a pile, and the first entry of each pile (indexed by its first position):
-    // the first entry that holds one of its positions.
+    // the first entry that holds one of its positions. With exact copies, the first entry of
+    // each position too (an outlier's copies stay outliers).
     std::vector<uint8_t> inPile(n, 0);
-    for (int32_t p = 0; p < n; ++p)
+    for (int32_t p = 0; p < n && positionCopies > 0; ++p)
     {
       if (firstPosition[p] != p)
       {
         inPile[p] = inPile[firstPosition[p]] = 1;
       }
     }
-    const int32_t entries = static_cast<int32_t>(ids.size());
     std::vector<int32_t> firstEntry(n, -1);
     firstOf.resize(entries);
     for (int32_t j = 0; j < entries; ++j)
     {
       const int32_t p = positionOf[j];
-      int32_t& first = firstEntry[firstPosition[p]];
+      int32_t& first = firstEntry[positionCopies > 0 ? firstPosition[p] : p];
       first = first >= 0 ? first : j;
-      firstOf[j] = inPile[p] ? first : j;
+      firstOf[j] = inPile[p] || (exact && !outlier[j]) ? first : j;
       copies += firstOf[j] != j ? 1 : 0;
+    }
+    if (copies == 0)
+    {
+      firstOf.clear();
     }
   }
   return count;
@@ -377,13 +384,15 @@ int64_t RemoveOutliersAndPiles(const double* xyz,
   std::vector<int32_t>& ids,
   double factor,
   std::vector<std::pair<int32_t, int32_t>>& pileCopies,
-  const std::function<bool(double)>& progress)
+  const std::function<bool(double)>& progress,
+  bool withExactCopies)
 {
   std::vector<uint8_t> outlier;
   std::vector<int32_t> firstOf;
   int64_t copies = 0;
   pileCopies.clear();
-  const int64_t count = FindOutliersAndPiles(xyz, ids, factor, outlier, firstOf, copies, progress);
+  const int64_t count =
+    FindOutliersAndPiles(xyz, ids, factor, outlier, firstOf, copies, progress, withExactCopies);
   if (count > 0 || copies > 0)
   {
     size_t kept = 0;

@@ -58,16 +58,19 @@ constexpr double OutlierPlaneHeight = 0.1;
 /// per entry of `ids`, the first entry (in the order of `ids`) holding a point of the entry's
 /// pile, for the entries of the piles that are not outliers (a far pile is flagged whole), the
 /// entry itself otherwise (exact copies of a position in no pile included: they are the
-/// caller's exact duplicates); `copies` gets the number of entries whose first is another entry
-/// (0: `firstOf` left empty). The table is searched for the piles also when `factor` <= 0 or the
-/// cloud is too small for the outlier rule (more than PileNeighbors distinct points).
+/// caller's exact duplicates, unless `withExactCopies`: then the copies of a position that is not
+/// an outlier get its first entry too, as the search has found them anyway); `copies` gets the
+/// number of entries whose first is another entry (0: `firstOf` left empty). The table is
+/// searched for the piles also when `factor` <= 0 or the cloud is too small for the outlier rule
+/// (more than PileNeighbors distinct points; with fewer, nothing is flagged or merged).
 int64_t FindOutliersAndPiles(const double* xyz,
   const std::vector<int32_t>& ids,
   double factor,
   std::vector<uint8_t>& outlier,
   std::vector<int32_t>& firstOf,
   int64_t& copies,
-  const std::function<bool(double)>& progress = nullptr);
+  const std::function<bool(double)>& progress = nullptr,
+  bool withExactCopies = false);
 
 /// The rule of FindOutliersAndPiles on `n` distinct points `x` (packed x, y, z) whose nearest
 /// neighbours are known: `knn` holds `width` >= OutlierNeighbors ids per point, nearest first
@@ -130,13 +133,14 @@ int64_t DropOutliersAndPilesByTable(std::vector<double>& x,
 /// FindOutliersAndPiles, then the flagged points and the pile copies (the entries of a pile but
 /// its first) are removed from `ids` (order kept); `pileCopies` gets, for each removed pile copy
 /// in the order of `ids`, the pair (its id, the id of its pile's first entry), the form of
-/// pcs::MergeExactDuplicates (cleared first). Returns the number of outliers. The filters'
-/// OutlierFactor.
+/// pcs::MergeExactDuplicates (cleared first); with `withExactCopies` the exact copies too (see
+/// FindOutliersAndPiles). Returns the number of outliers. The filters' OutlierFactor.
 int64_t RemoveOutliersAndPiles(const double* xyz,
   std::vector<int32_t>& ids,
   double factor,
   std::vector<std::pair<int32_t, int32_t>>& pileCopies,
-  const std::function<bool(double)>& progress = nullptr);
+  const std::function<bool(double)>& progress = nullptr,
+  bool withExactCopies = false);
 }
 
 #endif

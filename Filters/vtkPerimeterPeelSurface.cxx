@@ -2021,13 +2021,17 @@ int vtkPerimeterPeelSurface::RequestData(
   }
   // Far outliers, and piles of near-coincident points (pcs::FindPiles) on the same table: the
   // tetrahedralization gets one point per pile (its first, smallest id), the others are
-  // duplicates, like exact copies.
+  // duplicates. Exact copies too, merged here into the copy of smallest id: the kernel would
+  // insert every id (its insertion order, its cell numbering and which copy represents a point
+  // then depend on the copies, and the peel's order-dependent steps follow the numbering).
   std::vector<std::pair<int32_t, int32_t>> pileCopies;
-  outliers = pcs::RemoveOutliersAndPiles(xyz.data(),
+  outliers = pcs::RemoveOutliersAndPiles(
+    xyz.data(),
     ids,
     this->OutlierFactor,
     pileCopies,
-    [this](double) { return !this->GetAbortExecute(); });
+    [this](double) { return !this->GetAbortExecute(); },
+    /*withExactCopies=*/true);
   pileDuplicates = static_cast<vtkIdType>(pileCopies.size());
   duplicates = pileDuplicates;
   if (outliers > 0)

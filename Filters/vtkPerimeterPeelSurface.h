@@ -215,8 +215,11 @@
  *      spacing, sampled at random, may be cut where its sample has a gap (1 of 2 seeds). Nested
  *      objects: the inner one is inside the solid, its points unused (the output bounds a solid).
  * - Duplicate points are tetrahedralized once (the others have `Used` = 0 and are counted in
- *   NumberOfDuplicatePoints, with a warning): exact copies (one copy each, merged by the
- *   Delaunay kernel), and the points of a pile of near-coincident points (a scanner's repeated
+ *   NumberOfDuplicatePoints, with a warning): exact copies (the copy of smallest id, merged
+ *   before the tetrahedralization on the outlier rule's search, so that copies change neither
+ *   the kernel's insertion order nor its cell numbering: the cloud with copies gives the same
+ *   triangles as without them; 1 copy of 285 of 2,000 sphere points changed 494 of 3,996
+ *   triangles before 2026-11-24), and the points of a pile of near-coincident points (a scanner's repeated
  *   returns at one spot, jittered copies), as in vtkCDTAdvancingFront: a group whose extent is
  *   under 1/10,000 of its distance to the rest of the cloud, found on the table of the 8 nearest
  *   neighbours the outlier rule below searches (pcs::FindPiles, the definition

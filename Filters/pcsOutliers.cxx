@@ -395,14 +395,23 @@ int64_t RemoveOutliersAndPiles(const double* xyz,
     FindOutliersAndPiles(xyz, ids, factor, outlier, firstOf, copies, progress, withExactCopies);
   if (count > 0 || copies > 0)
   {
+    // The pairs first: the compaction below moves the ids (a pile's first point may have moved
+    // to an earlier slot by the time one of its copies is reached).
+    for (size_t j = 0; j < ids.size() && copies > 0; ++j)
+    {
+      if (firstOf[j] != static_cast<int32_t>(j))
+      {
+        pileCopies.emplace_back(ids[j], ids[firstOf[j]]);
+      }
+    }
     size_t kept = 0;
     for (size_t j = 0; j < ids.size(); ++j)
     {
       if (copies > 0 && firstOf[j] != static_cast<int32_t>(j))
       {
-        pileCopies.emplace_back(ids[j], ids[firstOf[j]]);
+        continue;
       }
-      else if (!outlier[j])
+      if (!outlier[j])
       {
         ids[kept++] = ids[j];
       }

@@ -111,14 +111,23 @@ int64_t DropOutliersAndPilesByTable(std::vector<double>& x,
   pileCopies.clear();
   if (count > 0 || copies > 0)
   {
+    // The pairs first: the compaction below moves the ids (a pile's first point may have moved
+    // to an earlier slot by the time one of its copies is reached).
+    for (int32_t i = 0; i < n && copies > 0; ++i)
+    {
+      if (firstOf[i] != i)
+      {
+        pileCopies.emplace_back(ids[i], ids[firstOf[i]]);
+      }
+    }
     int32_t kept = 0;
     for (int32_t i = 0; i < n; ++i)
     {
       if (copies > 0 && firstOf[i] != i)
       {
-        pileCopies.emplace_back(ids[i], ids[firstOf[i]]);
+        continue;
       }
-      else if (!far[i])
+      if (!far[i])
       {
         std::copy_n(&x[3 * static_cast<size_t>(i)], 3, &x[3 * static_cast<size_t>(kept)]);
         ids[kept++] = ids[i];

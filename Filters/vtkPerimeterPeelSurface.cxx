@@ -2036,7 +2036,8 @@ int vtkPerimeterPeelSurface::RequestData(
   duplicates = pileDuplicates;
   if (outliers > 0)
   {
-    vtkWarningMacro("Excluded " << outliers << " far outlier(s) of " << ids.size() + outliers
+    vtkWarningMacro("Excluded " << outliers << " far outlier(s) of "
+                                << ids.size() + outliers + pileDuplicates
                                 << " point(s) (OutlierFactor " << this->OutlierFactor
                                 << "): point data Used = 0, field data NumberOfOutliers.");
   }

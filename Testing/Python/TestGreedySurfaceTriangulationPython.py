@@ -14,7 +14,8 @@ that its capped ends face each other 1 to 1.5 spacings apart comes back closed, 
 point used; a ring whose flared hole's mouth is left open by a missing ring of the top face gets
 no cap bulging above that face; the vertices of CGAL's camel (a closed genus-0 mesh, when libcgal-demo is installed)
 give a closed genus-0 mesh, and those of its elephant (genus 3) a closed genus-3 mesh that uses
-every point.
+every point; the copies of a pile of near-coincident points are Status 4 with the values of the
+pile's meshed point.
 """
 import math
 import sys
@@ -373,6 +374,29 @@ if elephant_data:
           and q["NumberOfBoundaryEdges"] == 0 and q["Genus"] == genus
           and q["NumberOfNonManifoldEdges"] == 0 and q["OrientationConsistency"] == 1.0,
           "elephant: every point used, closed, genus %d (%s)" % (genus, q))
+
+# A pile's copies take the pile's meshed point as representative even when the compaction of the
+# ids moved that point: a far outlier first, then one pile point, the sphere, the pile's other 7
+# points. The copies are Status 4 with the LocalUniformity of the pile's used point (before
+# 2026-11-24 they read the point that had moved into the pile point's old slot).
+pile_rng = numpy.random.default_rng(2)
+pile_sphere = pile_rng.normal(size=(1000, 3))
+pile_sphere /= numpy.linalg.norm(pile_sphere, axis=1)[:, None]
+pile_centre = pile_sphere[0]
+pile = pile_centre + 1e-7 * pile_rng.normal(size=(8, 3))
+ordered = numpy.vstack([[[40.0, 0.0, 0.0]], pile[:1], pile_sphere[1:], pile[1:]])
+piled = vtkGreedySurfaceTriangulation()
+piled.SetInputData(cloud_from_array(ordered))
+piled.Update()
+status = piled.GetOutput().GetPointData().GetArray("Status")
+uniformity = piled.GetOutput().GetPointData().GetArray("LocalUniformity")
+pile_ids = [1] + list(range(len(ordered) - 7, len(ordered)))
+meshed = [i for i in pile_ids if status.GetValue(i) != 4]
+check(len(meshed) == 1, "pile: one point meshed (%d)" % len(meshed))
+for i in pile_ids:
+    if i != meshed[0]:
+        check(status.GetValue(i) == 4 and uniformity.GetValue(i) == uniformity.GetValue(meshed[0]),
+              "pile copy %d: Status 4, the LocalUniformity of the pile's meshed point" % i)
 
 if len(sys.argv) > 1:
     from paraview import servermanager

@@ -194,9 +194,10 @@ int32_t FindPiles(const double* x,
   std::vector<double> box(6 * static_cast<size_t>(n));
   for (int32_t i = 0; i < n; ++i)
   {
+    double* bi = &box[6 * static_cast<size_t>(i)];
     for (int c = 0; c < 3; ++c)
     {
-      box[6 * i + 2 * c] = box[6 * i + 2 * c + 1] = x[3 * static_cast<size_t>(i) + c];
+      bi[2 * c] = bi[2 * c + 1] = x[3 * static_cast<size_t>(i) + c];
     }
   }
   auto diagonal = [&](int32_t r) { return BoxDiagonal(&box[6 * static_cast<size_t>(r)]); };
@@ -214,11 +215,12 @@ int32_t FindPiles(const double* x,
     }
     const int32_t kept = sets.Link(a, b);
     const int32_t absorbed = kept == a ? b : a;
+    double* into = &box[6 * static_cast<size_t>(kept)];
+    const double* from = &box[6 * static_cast<size_t>(absorbed)];
     for (int c = 0; c < 3; ++c)
     {
-      box[6 * kept + 2 * c] = std::min(box[6 * kept + 2 * c], box[6 * absorbed + 2 * c]);
-      box[6 * kept + 2 * c + 1] =
-        std::max(box[6 * kept + 2 * c + 1], box[6 * absorbed + 2 * c + 1]);
+      into[2 * c] = std::min(into[2 * c], from[2 * c]);
+      into[2 * c + 1] = std::max(into[2 * c + 1], from[2 * c + 1]);
     }
     const int32_t node = static_cast<int32_t>(parent.size());
     parent[top[a]] = parent[top[b]] = node;

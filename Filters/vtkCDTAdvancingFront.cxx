@@ -2796,7 +2796,9 @@ int vtkCDTAdvancingFront::RequestData(
   // copy), and the scan-line pass below sees the same rows and bins as on the cloud without the
   // copies. Otherwise a row holding copies of a point or of a neighbour looks like a line, and the
   // local spacing and the noise band weigh copied neighbours several times: the triangles
-  // depended on how many copies a point has.
+  // depended on how many copies a point has. A pile's points count as copies of its first here
+  // (DistinctNeighbors reads the first copy's row: the pile's extent is under 1e-4 of its gap to
+  // the rest, so only distances that tie within that may rank differently from a search).
   if (knnOthers > 0)
   {
     Positions positions;

@@ -2522,6 +2522,25 @@ int vtkCDTAdvancingFront::RequestData(
       /*withCoordinates=*/false,
       positionBounds);
   };
+  // The table of the distinct positions (`width` nearest other positions each), taken from the
+  // table of all the points, `knn` (pcs::DistinctNeighbors; positions numbered as in
+  // distinctPositions).
+  auto positionNeighbors = [&](const Positions& positions, int width, std::vector<int32_t>& table)
+  {
+    std::vector<int32_t> positionOf(static_cast<size_t>(local));
+    for (Id k = 0; k < local; ++k)
+    {
+      positionOf[k] = positions.Slot[firstCopy[k]];
+    }
+    pcs::DistinctNeighbors(knn,
+      knnOthers,
+      positionOf,
+      positions.Ids,
+      positions.XYZ.data(),
+      static_cast<int32_t>(positions.Ids.size()),
+      width,
+      table);
+  };
   // Exact duplicates would fill a neighbourhood with copies of one point (a zero covariance):
   // with duplicates, the normals are estimated on the distinct points and copied to the others.
   // Piles are looked for on the estimation's table; when there are some, the normals are
@@ -2735,19 +2754,7 @@ int vtkCDTAdvancingFront::RequestData(
       std::vector<int32_t> positionTable;
       if (knnOthers > 0 && count > pcs::PileNeighbors)
       {
-        std::vector<int32_t> positionOf(static_cast<size_t>(local));
-        for (Id k = 0; k < local; ++k)
-        {
-          positionOf[k] = positions.Slot[firstCopy[k]];
-        }
-        pcs::DistinctNeighbors(knn,
-          knnOthers,
-          positionOf,
-          positions.Ids,
-          positions.XYZ.data(),
-          static_cast<int32_t>(count),
-          pcs::PileNeighbors,
-          positionTable);
+        positionNeighbors(positions, pcs::PileNeighbors, positionTable);
       }
       else
       {
@@ -2806,20 +2813,8 @@ int vtkCDTAdvancingFront::RequestData(
     const Id count = static_cast<Id>(positions.Ids.size());
     if (count < local && count > knnOthers)
     {
-      std::vector<int32_t> positionOf(static_cast<size_t>(local));
-      for (Id k = 0; k < local; ++k)
-      {
-        positionOf[k] = positions.Slot[firstCopy[k]];
-      }
       std::vector<int32_t> positionTable;
-      pcs::DistinctNeighbors(knn,
-        knnOthers,
-        positionOf,
-        positions.Ids,
-        positions.XYZ.data(),
-        static_cast<int32_t>(count),
-        knnOthers,
-        positionTable);
+      positionNeighbors(positions, knnOthers, positionTable);
       std::vector<double> positionStretch;
       if (!scanLinesChecked &&
         pcs::AddOffLineNeighbors(positions.Bins,
@@ -2837,7 +2832,8 @@ int vtkCDTAdvancingFront::RequestData(
       scanLinesChecked = true;
       for (Id k = 0; k < local; ++k)
       {
-        const int32_t* row = &positionTable[static_cast<size_t>(positionOf[k]) * knnOthers];
+        const Id position = positions.Slot[firstCopy[k]];
+        const int32_t* row = &positionTable[static_cast<size_t>(position) * knnOthers];
         for (int j = 0; j < knnOthers; ++j)
         {
           knn[static_cast<size_t>(k) * knnOthers + j] = row[j] >= 0 ? positions.Ids[row[j]] : -1;
@@ -2849,7 +2845,7 @@ int vtkCDTAdvancingFront::RequestData(
         stretch.resize(3 * static_cast<size_t>(local));
         for (Id k = 0; k < local; ++k)
         {
-          std::copy_n(&positionStretch[3 * static_cast<size_t>(positionOf[k])],
+          std::copy_n(&positionStretch[3 * static_cast<size_t>(positions.Slot[firstCopy[k]])],
             3,
             &stretch[3 * static_cast<size_t>(k)]);
         }

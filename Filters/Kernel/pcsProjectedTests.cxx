@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 
 namespace pcs
 {
@@ -20,17 +23,30 @@ void PointAlong(const double* p, const double* d, double* q)
 {
   const double largestP = std::max({ std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
   const double largestD = std::max({ std::fabs(d[0]), std::fabs(d[1]), std::fabs(d[2]) });
-  int shift = 0;
-  if (largestD > 0.0 && largestD < largestP && std::isfinite(largestP))
+  if (!(largestD < largestP) || !(largestD >= std::numeric_limits<double>::min()) ||
+    !std::isfinite(largestP))
   {
-    int exponentP, exponentD;
-    std::frexp(largestP, &exponentP);
-    std::frexp(largestD, &exponentD);
-    shift = exponentP - exponentD;
+    for (int c = 0; c < 3; ++c)
+    {
+      q[c] = p[c] + d[c];
+    }
+    return;
   }
+  // 2^(exponent of largestP - exponent of largestD), from the bits (both normal, positive): the
+  // filters call this for most candidate points, and frexp / ldexp are library calls.
+  auto exponentOf = [](double x)
+  {
+    uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    return static_cast<int>((bits >> 52) & 0x7ff);
+  };
+  const int shift = std::min(exponentOf(largestP) - exponentOf(largestD), 1023);
+  const uint64_t scaleBits = static_cast<uint64_t>(shift + 1023) << 52;
+  double scale;
+  std::memcpy(&scale, &scaleBits, sizeof scale);
   for (int c = 0; c < 3; ++c)
   {
-    q[c] = p[c] + std::ldexp(d[c], shift);
+    q[c] = p[c] + d[c] * scale;
   }
 }
 } // namespace

@@ -2447,6 +2447,12 @@ int vtkCDTAdvancingFront::RequestData(
   // none has one), and whether it was looked for on a table of all the points.
   std::vector<double> stretch;
   bool scanLinesChecked = false;
+  // With copies and estimated normals: the estimation's table of the distinct positions (extended
+  // by the scan-line pass, positionRowsOthers per position) and their stretch, which give the
+  // points their rows below instead of a search over all the points.
+  std::vector<int32_t> positionRows;
+  int positionRowsOthers = 0;
+  std::vector<double> positionRowsStretch;
   auto estimateNormalsOn = [&](const double* pts,
                              Id count,
                              pcs::PointBins& grid,
@@ -2609,6 +2615,9 @@ int vtkCDTAdvancingFront::RequestData(
           3,
           &estimatedNormals[3 * static_cast<size_t>(k)]);
       }
+      positionRows = std::move(distinctTable);
+      positionRowsOthers = distinctOthers;
+      positionRowsStretch = std::move(distinctStretch);
       return;
     }
   };
@@ -2722,6 +2731,45 @@ int vtkCDTAdvancingFront::RequestData(
   const bool localRadius = this->NeighborhoodRadius <= 0.0;
   const bool noiseBand = this->NoiseBandFactor > 0.0;
   const int localOthers = std::min<int>(LocalSpacingNeighbors, local - 1);
+  // Each point gets its position's row from the estimation's table of the positions (see
+  // positionRows), when it has the width of the table below: the same rows as the path below
+  // (a search over all the points, the positions' rows taken from it, their scan-line pass).
+  bool rowsOnPositions = false;
+  if (!positionRows.empty() && positionRowsOthers == localOthers && knnOthers != localOthers)
+  {
+    Positions positions;
+    distinctPositions(positions, /*withBins=*/false);
+    if (positionRows.size() == positions.Ids.size() * static_cast<size_t>(localOthers) &&
+      (positionRowsStretch.empty() || positionRowsStretch.size() == 3 * positions.Ids.size()))
+    {
+      knn.resize(static_cast<size_t>(local) * localOthers);
+      for (Id k = 0; k < local; ++k)
+      {
+        const Id position = positions.Slot[firstCopy[k]];
+        const int32_t* row = &positionRows[static_cast<size_t>(position) * localOthers];
+        for (int j = 0; j < localOthers; ++j)
+        {
+          knn[static_cast<size_t>(k) * localOthers + j] = row[j] >= 0 ? positions.Ids[row[j]] : -1;
+        }
+      }
+      stretch.clear();
+      if (!positionRowsStretch.empty())
+      {
+        stretch.resize(3 * static_cast<size_t>(local));
+        for (Id k = 0; k < local; ++k)
+        {
+          std::copy_n(&positionRowsStretch[3 * static_cast<size_t>(positions.Slot[firstCopy[k]])],
+            3,
+            &stretch[3 * static_cast<size_t>(k)]);
+        }
+      }
+      knnOthers = localOthers;
+      scanLinesChecked = true;
+      rowsOnPositions = true;
+    }
+  }
+  positionRows = std::vector<int32_t>();
+  positionRowsStretch = std::vector<double>();
   if ((localRay || localRadius || noiseBand || !scanLinesChecked) && knnOthers != localOthers)
   {
     knnOthers = 0;
@@ -2806,7 +2854,7 @@ int vtkCDTAdvancingFront::RequestData(
   // depended on how many copies a point has. A pile's points count as copies of its first here
   // (DistinctNeighbors reads the first copy's row: the pile's extent is under 1e-4 of its gap to
   // the rest, so only distances that tie within that may rank differently from a search).
-  if (knnOthers > 0)
+  if (knnOthers > 0 && !rowsOnPositions)
   {
     Positions positions;
     distinctPositions(positions, /*withBins=*/true);

@@ -875,7 +875,7 @@ public:
       }
       else
       {
-        ok = change == 0 || this->StaysConnected(true) || this->TookOnlyClearFacets();
+        ok = change == 0 || this->TookOnlyClearFacets() || this->StaysConnected(true);
       }
     }
     if (!ok)

@@ -2731,6 +2731,34 @@ int vtkCDTAdvancingFront::RequestData(
   const bool localRadius = this->NeighborhoodRadius <= 0.0;
   const bool noiseBand = this->NoiseBandFactor > 0.0;
   const int localOthers = std::min<int>(LocalSpacingNeighbors, local - 1);
+  // Each point gets its position's row of `table` (knnOthers positions per row, mapped to their
+  // first copies) and its position's stretch (none when `positionStretch` is empty).
+  auto giveRowsOfPositions = [&](const Positions& positions,
+                               const std::vector<int32_t>& table,
+                               const std::vector<double>& positionStretch)
+  {
+    knn.resize(static_cast<size_t>(local) * knnOthers);
+    stretch.clear();
+    if (!positionStretch.empty())
+    {
+      stretch.resize(3 * static_cast<size_t>(local));
+    }
+    for (Id k = 0; k < local; ++k)
+    {
+      const Id position = positions.Slot[firstCopy[k]];
+      const int32_t* row = &table[static_cast<size_t>(position) * knnOthers];
+      for (int j = 0; j < knnOthers; ++j)
+      {
+        knn[static_cast<size_t>(k) * knnOthers + j] = row[j] >= 0 ? positions.Ids[row[j]] : -1;
+      }
+      if (!positionStretch.empty())
+      {
+        std::copy_n(&positionStretch[3 * static_cast<size_t>(position)],
+          3,
+          &stretch[3 * static_cast<size_t>(k)]);
+      }
+    }
+  };
   // Each point gets its position's row from the estimation's table of the positions (see
   // positionRows), when it has the width of the table below: the same rows as the path below
   // (a search over all the points, the positions' rows taken from it, their scan-line pass).
@@ -2742,28 +2770,8 @@ int vtkCDTAdvancingFront::RequestData(
     if (positionRows.size() == positions.Ids.size() * static_cast<size_t>(localOthers) &&
       (positionRowsStretch.empty() || positionRowsStretch.size() == 3 * positions.Ids.size()))
     {
-      knn.resize(static_cast<size_t>(local) * localOthers);
-      for (Id k = 0; k < local; ++k)
-      {
-        const Id position = positions.Slot[firstCopy[k]];
-        const int32_t* row = &positionRows[static_cast<size_t>(position) * localOthers];
-        for (int j = 0; j < localOthers; ++j)
-        {
-          knn[static_cast<size_t>(k) * localOthers + j] = row[j] >= 0 ? positions.Ids[row[j]] : -1;
-        }
-      }
-      stretch.clear();
-      if (!positionRowsStretch.empty())
-      {
-        stretch.resize(3 * static_cast<size_t>(local));
-        for (Id k = 0; k < local; ++k)
-        {
-          std::copy_n(&positionRowsStretch[3 * static_cast<size_t>(positions.Slot[firstCopy[k]])],
-            3,
-            &stretch[3 * static_cast<size_t>(k)]);
-        }
-      }
       knnOthers = localOthers;
+      giveRowsOfPositions(positions, positionRows, positionRowsStretch);
       scanLinesChecked = true;
       rowsOnPositions = true;
     }
@@ -2878,26 +2886,7 @@ int vtkCDTAdvancingFront::RequestData(
         positionStretch.clear();
       }
       scanLinesChecked = true;
-      for (Id k = 0; k < local; ++k)
-      {
-        const Id position = positions.Slot[firstCopy[k]];
-        const int32_t* row = &positionTable[static_cast<size_t>(position) * knnOthers];
-        for (int j = 0; j < knnOthers; ++j)
-        {
-          knn[static_cast<size_t>(k) * knnOthers + j] = row[j] >= 0 ? positions.Ids[row[j]] : -1;
-        }
-      }
-      stretch.clear();
-      if (!positionStretch.empty())
-      {
-        stretch.resize(3 * static_cast<size_t>(local));
-        for (Id k = 0; k < local; ++k)
-        {
-          std::copy_n(&positionStretch[3 * static_cast<size_t>(positions.Slot[firstCopy[k]])],
-            3,
-            &stretch[3 * static_cast<size_t>(k)]);
-        }
-      }
+      giveRowsOfPositions(positions, positionTable, positionStretch);
     }
   }
   if (!scanLinesChecked && knnOthers > 0 &&

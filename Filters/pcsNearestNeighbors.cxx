@@ -182,23 +182,109 @@ bool FindNearestNeighbors(vtkStaticPointLocator* locator, const double* xyz, int
   return FindNearestNeighbors(bins, xyz, n, k, neighbors, progress);
 }
 
-bool FindNearestNeighbors(const PointBins& bins,
+namespace
+{
+// The k-nearest search of FindNearestNeighbors (see there), on points filed into PointBins: the
+// candidate points (all the points of the bins, or those flagged in `candidates`) filed again by
+// bucket with each run of exact copies as one entry, and the query of one point's k nearest other
+// candidates. Used for every point (FindNearestNeighbors) and for the short rows of the distinct
+// positions (DistinctNeighbors: the positions' first copies, on the bins of all the points).
+class NearestSearch
+{
+public:
+  NearestSearch(const PointBins& bins,
+    const double* xyz,
+    int32_t n,
+    int k,
+    const std::vector<uint8_t>* candidates);
+
+  // The candidates in bucket order: consecutive queries in this order are close in space.
+  const std::vector<int32_t>& GetMembers() const { return this->Members; }
+
+  // For each point i of `ids` (candidates), its k nearest other candidates as (squared distance,
+  // id) pairs, nearest first, ties by the smaller id: row(i, found, count) with the first count
+  // entries of found (count < k only where fewer candidates exist). Threaded (vtkSMPTools, in
+  // blocks); row is called once per point, from any thread. `progress` as for
+  // FindNearestNeighbors (returns false when it stopped the search).
+  template<typename Row>
+  bool ForEach(const std::vector<int32_t>& ids,
+    Row&& row,
+    const std::function<bool(double)>& progress) const
+  {
+    // Each thread carries its radius from one query to the next (see Query).
+    vtkSMPThreadLocal<double> radii(this->Start);
+    const int32_t count = static_cast<int32_t>(ids.size());
+    const int32_t block = 65536;
+    for (int32_t first = 0; first < count; first += block)
+    {
+      if (progress && !progress(static_cast<double>(first) / count))
+      {
+        return false;
+      }
+      const int32_t last = std::min<int32_t>(first + block, count);
+      vtkSMPTools::For(first,
+        last,
+        [&](int32_t begin, int32_t end)
+        {
+          double& radius = radii.Local();
+          std::vector<std::pair<double, int32_t>> found;
+          for (int32_t q = begin; q < end; ++q)
+          {
+            const size_t keep = this->Query(ids[q], radius, found);
+            row(ids[q], found.data(), keep);
+          }
+        });
+    }
+    return !progress || progress(1.0);
+  }
+
+private:
+  double StartRadius(const std::vector<uint8_t>* candidates) const;
+  void FileEntries(const std::vector<uint8_t>* candidates);
+  double GapTo(double f, int j, int c) const;
+  size_t Query(int32_t i, double& radius, std::vector<std::pair<double, int32_t>>& found) const;
+
+  const PointBins& Bins;
+  const double* XYZ;
+  int32_t N;     // the points of the bins
+  int32_t Count; // the candidates among them
+  int K;
+  double Start;
+  // Entry e (one candidate position) has the members Members[EntryStart[e], EntryStart[e + 1])
+  // (ascending ids) at EntryXYZ[3 e]; bucket b holds the entries [BucketStart[b],
+  // BucketStart[b + 1]).
+  std::vector<int32_t> BucketStart;
+  std::vector<int32_t> EntryStart;
+  std::vector<int32_t> Members;
+  std::vector<double> EntryXYZ;
+};
+
+NearestSearch::NearestSearch(const PointBins& bins,
   const double* xyz,
   int32_t n,
   int k,
-  std::vector<int32_t>& neighbors,
-  const std::function<bool(double)>& progress)
+  const std::vector<uint8_t>* candidates)
+  : Bins(bins)
+  , XYZ(xyz)
+  , N(n)
+  , Count(
+      candidates ? static_cast<int32_t>(std::count(candidates->begin(), candidates->end(), 1)) : n)
+  , K(k)
 {
-  neighbors.assign(static_cast<size_t>(std::max(n, 0)) * std::max(k, 0), -1);
-  if (n < 2 || k < 1)
-  {
-    return true;
-  }
+  this->Start = this->StartRadius(candidates);
+  this->FileEntries(candidates);
+}
+
+double NearestSearch::StartRadius(const std::vector<uint8_t>* candidates) const
+{
   // Starting radius: the k-th neighbour of a surface sample lies about sqrt(k) nearest-neighbour
-  // distances away; the mean nearest-neighbour distance comes from a few hundred points, each
+  // distances away; the mean nearest-neighbour distance comes from a few hundred candidates, each
   // searched in the bins within one, then two bucket widths (a copy of the point counts, at
   // distance 0; a point with no other that near is left out). The radius only sets where the
   // queries start, never what they find.
+  const PointBins& bins = this->Bins;
+  const double* xyz = this->XYZ;
+  const int32_t n = this->N;
   double sum = 0.0;
   int samples = 0;
   {
@@ -207,9 +293,14 @@ bool FindNearestNeighbors(const PointBins& bins,
     const int* grid = bins.GetDivisions();
     const int32_t* offsets = bins.GetOffsets();
     const int32_t* ids = bins.GetIds();
+    auto isCandidate = [candidates](int32_t id) { return !candidates || (*candidates)[id]; };
     const int32_t step = std::max<int32_t>(1, n / 256);
     for (int32_t i = 0; i < n; i += step)
     {
+      if (!isCandidate(i))
+      {
+        continue;
+      }
       const double* p = xyz + 3 * static_cast<size_t>(i);
       for (double radius = reach; radius <= 2.0 * reach; radius *= 2.0)
       {
@@ -223,7 +314,7 @@ bool FindNearestNeighbors(const PointBins& bins,
             const int64_t row = grid[0] * (by + static_cast<int64_t>(grid[1]) * bz);
             for (int32_t m = offsets[row + lo[0]]; m < offsets[row + hi[0] + 1] && best > 0.0; ++m)
             {
-              if (ids[m] != i)
+              if (ids[m] != i && isCandidate(ids[m]))
               {
                 best = std::min(best, Distance2(p, xyz + 3 * static_cast<size_t>(ids[m])));
               }
@@ -239,7 +330,7 @@ bool FindNearestNeighbors(const PointBins& bins,
       }
     }
   }
-  double start = samples > 0 ? 1.5 * std::sqrt(static_cast<double>(k)) * sum / samples : 0.0;
+  double start = samples > 0 ? 1.5 * std::sqrt(static_cast<double>(this->K)) * sum / samples : 0.0;
   if (!(start > 0) || !std::isfinite(start))
   {
     start = 0.0;
@@ -249,7 +340,11 @@ bool FindNearestNeighbors(const PointBins& bins,
     }
     start = start > 0 && std::isfinite(start) ? start * 1e-3 : 1.0;
   }
+  return start;
+}
 
+void NearestSearch::FileEntries(const std::vector<uint8_t>* candidates)
+{
   // The candidates of a query are read from the bucket grid directly (PointBins): the points of
   // the buckets that the ball overlaps, with their distances computed here on the packed
   // coordinates. The ball is large enough when it holds more than k points
@@ -257,246 +352,258 @@ bool FindNearestNeighbors(const PointBins& bins,
   // buckets add beyond the ball. This is the bucket walk of FindPointsWithinRadius without its
   // per-point virtual GetPoint and per-query BuildLocator (modification time) calls, which took
   // about two thirds of the search's time.
-  const int* divisions = bins.GetDivisions();
-  const vtkIdType numberOfBuckets = bins.GetNumberOfBuckets();
-  std::vector<int32_t> bucketStart(static_cast<size_t>(numberOfBuckets) + 1, 0);
-  // Exact duplicates share one entry: the points of a bucket are sorted by coordinates (then id)
-  // and each run of equal points becomes one entry with its member ids in ascending order. A
+  // Exact duplicates share one entry: the candidates of a bucket are sorted by coordinates (then
+  // id) and each run of equal points becomes one entry with its member ids in ascending order. A
   // query meets a pile of d copies as one candidate position and takes at most k of its members
   // (the smallest ids: ties are broken by id), so a cloud with 10^6 copies of one point costs
   // O(n k), not O(d^2). Non-finite points stay single entries, in id order.
-  std::vector<int32_t> entryStart; // members of entry e: members[entryStart[e], entryStart[e+1])
-  std::vector<int32_t> members;
-  std::vector<double> entryXYZ;
-  members.reserve(static_cast<size_t>(n));
+  const PointBins& bins = this->Bins;
+  const double* xyz = this->XYZ;
+  const vtkIdType numberOfBuckets = bins.GetNumberOfBuckets();
+  this->BucketStart.assign(static_cast<size_t>(numberOfBuckets) + 1, 0);
+  this->Members.reserve(static_cast<size_t>(this->Count));
+  std::vector<int32_t> byBucket(bins.GetIds(), bins.GetIds() + this->N);
+  auto before = [xyz](int32_t a, int32_t b)
   {
-    std::vector<int32_t> byBucket(bins.GetIds(), bins.GetIds() + n);
-    auto before = [xyz](int32_t a, int32_t b)
-    {
-      const int c =
-        ComparePositions(xyz + 3 * static_cast<size_t>(a), xyz + 3 * static_cast<size_t>(b), 3);
-      return c != 0 ? c < 0 : a < b;
-    };
-    // Bucket b holds byBucket[first, last); bucketStart[b + 1] gets its last entry index + 1.
-    int32_t first = 0;
-    for (vtkIdType b = 0; b < numberOfBuckets; ++b)
-    {
-      const int32_t last = bins.GetOffsets()[b + 1];
-      int32_t* ids = byBucket.data() + first;
-      const int32_t count = last - first;
-      if (count > 1)
-      {
-        std::sort(ids, ids + count, before);
-      }
-      for (int32_t j = 0; j < count; ++j)
-      {
-        const double* q = xyz + 3 * static_cast<size_t>(ids[j]);
-        const bool same = j > 0 && SamePosition(q, xyz + 3 * static_cast<size_t>(ids[j - 1]), 3);
-        if (!same)
-        {
-          entryStart.push_back(static_cast<int32_t>(members.size()));
-          entryXYZ.insert(entryXYZ.end(), q, q + 3);
-        }
-        members.push_back(ids[j]);
-      }
-      bucketStart[b + 1] = static_cast<int32_t>(entryStart.size());
-      first = last;
-    }
-    entryStart.push_back(static_cast<int32_t>(members.size()));
-  }
-  // A lower bound of |q[c] - p[c]| for every point q of the buckets of index j along axis c, from
-  // p's position f in bucket units (PointBins::BucketCoordinate): the whole buckets between them,
-  // less 10^-6 of a bucket for the rounding of the index formula. 0 next to p, in the clamped
-  // first and last buckets, and on an axis of one bucket.
-  auto gapTo = [&bins](double f, int j, int c)
-  {
-    double units = 0.0;
-    if (j + 1 < f && j + 1 < bins.GetDivisions()[c])
-    {
-      units = f - (j + 1);
-    }
-    else if (j > f && j > 0)
-    {
-      units = j - f;
-    }
-    return units > 1e-6 ? (units - 1e-6) * bins.GetBucketWidth(c) : 0.0;
+    const int c =
+      ComparePositions(xyz + 3 * static_cast<size_t>(a), xyz + 3 * static_cast<size_t>(b), 3);
+    return c != 0 ? c < 0 : a < b;
   };
-  // One query: the kk nearest other points of point i, as (squared distance, id) pairs, nearest
-  // first, in `found` (its first min(kk, size) entries; returns that count). The ball starts at
-  // `radius` and grows until it holds more than kk points; `radius` is left a little beyond the
-  // kk-th neighbour (or at `start` after a pile of copies), to start the next query.
-  // Only the candidates inside the ball are kept: once the ball holds more than kk points, the
-  // kk nearest others are inside it, ties at its radius included. A row of buckets (fixed y and
-  // z) is walked only where the ball reaches it: over the x range of the ball's section there
-  // (the rows' y and z distances to p bounded from below by gapTo). After the last allowed growth
-  // (a degenerate cloud) every candidate of the whole box of buckets is kept, as the ball may not
-  // hold kk others.
-  auto query = [&](int32_t i,
-                 int kk,
-                 double start,
-                 double& radius,
-                 std::vector<std::pair<double, int32_t>>& found) -> size_t
+  // Bucket b holds byBucket[first, last); BucketStart[b + 1] gets its last entry index + 1.
+  int32_t first = 0;
+  for (vtkIdType b = 0; b < numberOfBuckets; ++b)
   {
-    const double* p = xyz + 3 * static_cast<size_t>(i);
-    double f[3];
-    for (int c = 0; c < 3; ++c)
+    const int32_t last = bins.GetOffsets()[b + 1];
+    int32_t* ids = byBucket.data() + first;
+    int32_t count = last - first;
+    if (candidates)
     {
-      f[c] = bins.BucketCoordinate(p[c], c);
+      count = static_cast<int32_t>(
+        std::remove_if(ids, ids + count, [candidates](int32_t id) { return !(*candidates)[id]; }) -
+        ids);
     }
-    bool all = false;
-    // found[0, size) are the candidates; found is a buffer that only grows (resized ahead of each
-    // row of buckets), so that a candidate is written without a branch on whether it is kept.
-    size_t size = 0;
-    for (int attempt = 0;; ++attempt)
+    if (count > 1)
     {
-      all = attempt > 200;
-      size = 0;
-      int lo[3], hi[3];
-      bins.BucketRange(p, radius, lo, hi);
-      const double r2 = radius * radius;
-      int64_t inside = 0;
-      for (int bz = lo[2]; bz <= hi[2]; ++bz)
+      std::sort(ids, ids + count, before);
+    }
+    for (int32_t j = 0; j < count; ++j)
+    {
+      const double* q = xyz + 3 * static_cast<size_t>(ids[j]);
+      const bool same = j > 0 && SamePosition(q, xyz + 3 * static_cast<size_t>(ids[j - 1]), 3);
+      if (!same)
       {
-        const double gz = all ? 0.0 : gapTo(f[2], bz, 2);
-        for (int by = lo[1]; by <= hi[1]; ++by)
-        {
-          const double gy = all ? 0.0 : gapTo(f[1], by, 1);
-          const double g2 = gy * gy + gz * gz;
-          if (g2 > r2)
-          {
-            continue;
-          }
-          int xlo = lo[0], xhi = hi[0];
-          if (g2 > 0.0)
-          {
-            const double margin = (std::sqrt(r2 - g2) + 1e-6 * radius) * (1.0 + 1e-9) + 1e-300;
-            xlo = bins.BucketIndex(p[0] - margin, 0);
-            xhi = bins.BucketIndex(p[0] + margin, 0);
-          }
-          const int64_t row = divisions[0] * (by + static_cast<int64_t>(divisions[1]) * bz);
-          const int32_t first = bucketStart[row + xlo], last = bucketStart[row + xhi + 1];
-          if (found.size() < size + static_cast<size_t>(last - first))
-          {
-            found.resize(2 * (size + static_cast<size_t>(last - first)));
-          }
-          for (int32_t e = first; e < last; ++e)
-          {
-            const double d2 = Distance2(p, &entryXYZ[3 * static_cast<size_t>(e)]);
-            const int32_t copies = entryStart[e + 1] - entryStart[e];
-            if (copies == 1 && !all)
-            {
-              // A single point (the usual entry): written, kept when inside and not p itself.
-              const int32_t id = members[entryStart[e]];
-              const bool in = d2 <= r2;
-              found[size] = { d2, id };
-              size += static_cast<size_t>(in & (id != i));
-              inside += static_cast<int64_t>(in);
-            }
-            else if (d2 <= r2 || all)
-            {
-              inside += d2 <= r2 ? copies : 0;
-              // Room for up to kk of the pile and one candidate per entry left in the row: the
-              // single points after it are written without a check.
-              const size_t need = size + static_cast<size_t>(kk) + static_cast<size_t>(last - e);
-              if (found.size() < need)
-              {
-                found.resize(2 * need);
-              }
-              int taken = 0;
-              for (int32_t m = entryStart[e]; m < entryStart[e + 1] && taken < kk; ++m)
-              {
-                if (members[m] != i)
-                {
-                  found[size++] = { d2, members[m] };
-                  ++taken;
-                }
-              }
-            }
-          }
-        }
+        this->EntryStart.push_back(static_cast<int32_t>(this->Members.size()));
+        this->EntryXYZ.insert(this->EntryXYZ.end(), q, q + 3);
       }
-      if (inside > kk || inside >= n || attempt > 200)
-      {
-        break;
-      }
-      radius *= inside > 1 ? std::min(2.0, 1.1 * std::sqrt((kk + 1.0) / inside)) : 2.0;
+      this->Members.push_back(ids[j]);
     }
-    const size_t keep = std::min<size_t>(kk, size);
-    if (!all && size <= 32)
-    {
-      // The usual case (the carried radius holds about 1.2 k points): a short list is sorted
-      // whole by insertion, cheaper than the partial sort. Same order: the entries (squared
-      // distance, id) are distinct and, inside the ball, not NaN.
-      for (size_t j = 1; j < size; ++j)
-      {
-        const std::pair<double, int32_t> entry = found[j];
-        size_t to = j;
-        for (; to > 0 && entry < found[to - 1]; --to)
-        {
-          found[to] = found[to - 1];
-        }
-        found[to] = entry;
-      }
-    }
-    else
-    {
-      if (keep < size)
-      {
-        std::nth_element(found.begin(), found.begin() + keep, found.begin() + size);
-      }
-      std::sort(found.begin(), found.begin() + keep);
-    }
-    // The next query starts a little beyond this point's kk-th neighbour; after a point whose
-    // kk nearest are all copies of it, from `start` (keeping the radius of the previous distinct
-    // point, far larger than a pile's, made every copy's query walk a box of up to all the
-    // bins: hours for 300,000 copies on a grid of 4 bins per point).
-    if (keep > 0)
-    {
-      radius = found[keep - 1].first > 0 ? 1.1 * std::sqrt(found[keep - 1].first) : start;
-    }
-    return keep;
-  };
-
-  // The queries run in bucket order (entry by entry; members holds every point once):
-  // consecutive queries are then close in space, which keeps the carried radius apt and the
-  // buckets they read in cache. The order does not change the result.
-  vtkSMPThreadLocal<double> radii(start);
-  const int32_t block = 65536;
-  for (int32_t first = 0; first < n; first += block)
-  {
-    if (progress && !progress(static_cast<double>(first) / n))
-    {
-      return false;
-    }
-    const int32_t last = std::min<int32_t>(first + block, n);
-    vtkSMPTools::For(first, last, [&](int32_t begin, int32_t end) {
-      double& radius = radii.Local();
-      std::vector<std::pair<double, int32_t>> found;
-      for (int32_t position = begin; position < end; ++position)
-      {
-        const int32_t i = members[position];
-        const size_t keep = query(i, k, start, radius, found);
-        int32_t* out = &neighbors[static_cast<size_t>(i) * k];
-        for (size_t j = 0; j < keep; ++j)
-        {
-          out[j] = found[j].second;
-        }
-      }
-    });
+    this->BucketStart[b + 1] = static_cast<int32_t>(this->EntryStart.size());
+    first = last;
   }
-  return !progress || progress(1.0);
+  this->EntryStart.push_back(static_cast<int32_t>(this->Members.size()));
 }
 
-void DistinctNeighbors(const std::vector<int32_t>& pointTable,
+// A lower bound of |q[c] - p[c]| for every point q of the buckets of index j along axis c, from
+// p's position f in bucket units (PointBins::BucketCoordinate): the whole buckets between them,
+// less 10^-6 of a bucket for the rounding of the index formula. 0 next to p, in the clamped
+// first and last buckets, and on an axis of one bucket.
+double NearestSearch::GapTo(double f, int j, int c) const
+{
+  double units = 0.0;
+  if (j + 1 < f && j + 1 < this->Bins.GetDivisions()[c])
+  {
+    units = f - (j + 1);
+  }
+  else if (j > f && j > 0)
+  {
+    units = j - f;
+  }
+  return units > 1e-6 ? (units - 1e-6) * this->Bins.GetBucketWidth(c) : 0.0;
+}
+
+// One query: the k nearest other candidates of point i, as (squared distance, id) pairs, nearest
+// first, in `found` (its first min(k, size) entries; returns that count). The ball starts at
+// `radius` and grows until it holds more than k candidates; `radius` is left a little beyond the
+// k-th neighbour (or at Start after a pile of copies), to start the next query.
+// Only the candidates inside the ball are kept: once the ball holds more than k points, the
+// k nearest others are inside it, ties at its radius included. A row of buckets (fixed y and
+// z) is walked only where the ball reaches it: over the x range of the ball's section there
+// (the rows' y and z distances to p bounded from below by GapTo). After the last allowed growth
+// (a degenerate cloud) every candidate of the whole box of buckets is kept, as the ball may not
+// hold k others.
+size_t NearestSearch::Query(int32_t i,
+  double& radius,
+  std::vector<std::pair<double, int32_t>>& found) const
+{
+  const PointBins& bins = this->Bins;
+  const int kk = this->K;
+  const int* divisions = bins.GetDivisions();
+  const int32_t* bucketStart = this->BucketStart.data();
+  const int32_t* entryStart = this->EntryStart.data();
+  const int32_t* members = this->Members.data();
+  const double* entryXYZ = this->EntryXYZ.data();
+  const double* p = this->XYZ + 3 * static_cast<size_t>(i);
+  double f[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    f[c] = bins.BucketCoordinate(p[c], c);
+  }
+  bool all = false;
+  // found[0, size) are the candidates; found is a buffer that only grows (resized ahead of each
+  // row of buckets), so that a candidate is written without a branch on whether it is kept.
+  size_t size = 0;
+  for (int attempt = 0;; ++attempt)
+  {
+    all = attempt > 200;
+    size = 0;
+    int lo[3], hi[3];
+    bins.BucketRange(p, radius, lo, hi);
+    const double r2 = radius * radius;
+    int64_t inside = 0;
+    for (int bz = lo[2]; bz <= hi[2]; ++bz)
+    {
+      const double gz = all ? 0.0 : this->GapTo(f[2], bz, 2);
+      for (int by = lo[1]; by <= hi[1]; ++by)
+      {
+        const double gy = all ? 0.0 : this->GapTo(f[1], by, 1);
+        const double g2 = gy * gy + gz * gz;
+        if (g2 > r2)
+        {
+          continue;
+        }
+        int xlo = lo[0], xhi = hi[0];
+        if (g2 > 0.0)
+        {
+          const double margin = (std::sqrt(r2 - g2) + 1e-6 * radius) * (1.0 + 1e-9) + 1e-300;
+          xlo = bins.BucketIndex(p[0] - margin, 0);
+          xhi = bins.BucketIndex(p[0] + margin, 0);
+        }
+        const int64_t row = divisions[0] * (by + static_cast<int64_t>(divisions[1]) * bz);
+        const int32_t first = bucketStart[row + xlo], last = bucketStart[row + xhi + 1];
+        if (found.size() < size + static_cast<size_t>(last - first))
+        {
+          found.resize(2 * (size + static_cast<size_t>(last - first)));
+        }
+        for (int32_t e = first; e < last; ++e)
+        {
+          const double d2 = Distance2(p, &entryXYZ[3 * static_cast<size_t>(e)]);
+          const int32_t copies = entryStart[e + 1] - entryStart[e];
+          if (copies == 1 && !all)
+          {
+            // A single point (the usual entry): written, kept when inside and not p itself.
+            const int32_t id = members[entryStart[e]];
+            const bool in = d2 <= r2;
+            found[size] = { d2, id };
+            size += static_cast<size_t>(in & (id != i));
+            inside += static_cast<int64_t>(in);
+          }
+          else if (d2 <= r2 || all)
+          {
+            inside += d2 <= r2 ? copies : 0;
+            // Room for up to kk of the pile and one candidate per entry left in the row: the
+            // single points after it are written without a check.
+            const size_t need = size + static_cast<size_t>(kk) + static_cast<size_t>(last - e);
+            if (found.size() < need)
+            {
+              found.resize(2 * need);
+            }
+            int taken = 0;
+            for (int32_t m = entryStart[e]; m < entryStart[e + 1] && taken < kk; ++m)
+            {
+              if (members[m] != i)
+              {
+                found[size++] = { d2, members[m] };
+                ++taken;
+              }
+            }
+          }
+        }
+      }
+    }
+    if (inside > kk || inside >= this->Count || attempt > 200)
+    {
+      break;
+    }
+    radius *= inside > 1 ? std::min(2.0, 1.1 * std::sqrt((kk + 1.0) / inside)) : 2.0;
+  }
+  const size_t keep = std::min<size_t>(kk, size);
+  if (!all && size <= 32)
+  {
+    // The usual case (the carried radius holds about 1.2 k points): a short list is sorted
+    // whole by insertion, cheaper than the partial sort. Same order: the entries (squared
+    // distance, id) are distinct and, inside the ball, not NaN.
+    for (size_t j = 1; j < size; ++j)
+    {
+      const std::pair<double, int32_t> entry = found[j];
+      size_t to = j;
+      for (; to > 0 && entry < found[to - 1]; --to)
+      {
+        found[to] = found[to - 1];
+      }
+      found[to] = entry;
+    }
+  }
+  else
+  {
+    if (keep < size)
+    {
+      std::nth_element(found.begin(), found.begin() + keep, found.begin() + size);
+    }
+    std::sort(found.begin(), found.begin() + keep);
+  }
+  // The next query starts a little beyond this point's kk-th neighbour; after a point whose
+  // kk nearest are all copies of it, from Start (keeping the radius of the previous distinct
+  // point, far larger than a pile's, made every copy's query walk a box of up to all the
+  // bins: hours for 300,000 copies on a grid of 4 bins per point).
+  if (keep > 0)
+  {
+    radius = found[keep - 1].first > 0 ? 1.1 * std::sqrt(found[keep - 1].first) : this->Start;
+  }
+  return keep;
+}
+}
+
+bool FindNearestNeighbors(const PointBins& bins,
+  const double* xyz,
+  int32_t n,
+  int k,
+  std::vector<int32_t>& neighbors,
+  const std::function<bool(double)>& progress)
+{
+  neighbors.assign(static_cast<size_t>(std::max(n, 0)) * std::max(k, 0), -1);
+  if (n < 2 || k < 1)
+  {
+    return true;
+  }
+  // The queries run in bucket order (entry by entry; the members hold every point once):
+  // consecutive queries are then close in space, which keeps the carried radius apt and the
+  // buckets they read in cache. The order does not change the result.
+  const NearestSearch search(bins, xyz, n, k, nullptr);
+  return search.ForEach(
+    search.GetMembers(),
+    [&](int32_t i, const std::pair<double, int32_t>* found, size_t keep)
+    {
+      int32_t* out = &neighbors[static_cast<size_t>(i) * k];
+      for (size_t j = 0; j < keep; ++j)
+      {
+        out[j] = found[j].second;
+      }
+    },
+    progress);
+}
+
+void DistinctNeighbors(const PointBins& bins,
+  const double* xyz,
+  int32_t n,
+  const std::vector<int32_t>& pointTable,
   int width,
   const std::vector<int32_t>& positionOf,
   const std::vector<int32_t>& positionIds,
-  const double* positionXYZ,
-  int32_t count,
   int k,
   std::vector<int32_t>& neighbors)
 {
-  neighbors.assign(static_cast<size_t>(std::max(count, 0)) * std::max(k, 0), -1);
+  const int32_t count = static_cast<int32_t>(positionIds.size());
+  neighbors.assign(static_cast<size_t>(count) * std::max(k, 0), -1);
   if (count < 2 || k < 1)
   {
     return;
@@ -504,8 +611,9 @@ void DistinctNeighbors(const std::vector<int32_t>& pointTable,
   // The rows whose point row leaves fewer than k other positions: searched again below, all at
   // once when more than a quarter are.
   const size_t mostIncomplete = static_cast<size_t>(count) / 4;
-  std::vector<int32_t> incomplete;
-  for (int32_t d = 0; d < count && incomplete.size() <= mostIncomplete; ++d)
+  std::vector<uint8_t> incomplete(static_cast<size_t>(count), 0);
+  size_t incompleteCount = 0;
+  for (int32_t d = 0; d < count && incompleteCount <= mostIncomplete; ++d)
   {
     const int32_t* row = &pointTable[static_cast<size_t>(positionIds[d]) * width];
     int32_t* out = &neighbors[static_cast<size_t>(d) * k];
@@ -520,63 +628,48 @@ void DistinctNeighbors(const std::vector<int32_t>& pointTable,
     }
     if (taken < k && width > 0 && row[width - 1] >= 0)
     {
-      incomplete.push_back(d);
+      incomplete[d] = 1;
+      ++incompleteCount;
     }
   }
-  if (incomplete.empty())
+  if (incompleteCount == 0)
   {
     return;
   }
-  PointBins bins;
-  double bounds[6];
-  if (incomplete.size() > mostIncomplete)
+  // Those rows (or all) searched on the bins of the points, among the positions' first copies
+  // (the candidates; a position's coordinates are its first copy's), in bucket order.
+  std::vector<uint8_t> isFirstCopy(static_cast<size_t>(n), 0);
+  for (const int32_t id : positionIds)
   {
-    BuildSurfaceSampleBins(bins, positionXYZ, count, /*withCoordinates=*/false, bounds);
-    FindNearestNeighbors(bins, positionXYZ, count, k, neighbors);
-    return;
+    isFirstCopy[id] = 1;
   }
-  // Those rows alone: the positions within a radius (from twice the point row's farthest, doubled
-  // until the ball holds k others or the whole box), sorted by (squared distance, id) as
-  // FindNearestNeighbors sorts them.
-  BuildSurfaceSampleBins(bins, positionXYZ, count, /*withCoordinates=*/true, bounds);
-  const double box2 = (bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
-    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]);
-  std::vector<std::pair<int32_t, double>> gathered;
-  std::vector<std::pair<double, int32_t>> found;
-  for (const int32_t d : incomplete)
+  const NearestSearch search(bins, xyz, n, k, &isFirstCopy);
+  std::vector<int32_t> searched;
+  if (incompleteCount > mostIncomplete)
   {
-    const double* p = &positionXYZ[3 * static_cast<size_t>(d)];
-    const int32_t farthest =
-      positionOf[pointTable[static_cast<size_t>(positionIds[d]) * width + width - 1]];
-    double radius = 2.0 * std::sqrt(Distance2(p, &positionXYZ[3 * static_cast<size_t>(farthest)]));
-    if (!(radius > 0.0))
+    searched = search.GetMembers();
+  }
+  else
+  {
+    for (const int32_t id : search.GetMembers())
     {
-      radius = std::max({ bins.GetBucketWidth(0), bins.GetBucketWidth(1), bins.GetBucketWidth(2) });
-    }
-    for (;; radius *= 2.0)
-    {
-      const size_t inside = bins.GatherWithinRadius(radius, p, gathered);
-      found.clear();
-      for (size_t j = 0; j < inside; ++j)
+      if (incomplete[positionOf[id]])
       {
-        if (gathered[j].first != d)
-        {
-          found.emplace_back(gathered[j].second, gathered[j].first);
-        }
-      }
-      if (found.size() >= static_cast<size_t>(k) || !(radius * radius <= 4.0 * box2))
-      {
-        break;
+        searched.push_back(id);
       }
     }
-    const size_t keep = std::min<size_t>(k, found.size());
-    std::partial_sort(found.begin(), found.begin() + keep, found.end());
-    for (size_t j = 0; j < keep; ++j)
-    {
-      neighbors[static_cast<size_t>(d) * k + j] = found[j].second;
-    }
   }
+  search.ForEach(
+    searched,
+    [&](int32_t i, const std::pair<double, int32_t>* found, size_t keep)
+    {
+      int32_t* out = &neighbors[static_cast<size_t>(positionOf[i]) * k];
+      for (size_t j = 0; j < static_cast<size_t>(k); ++j)
+      {
+        out[j] = j < keep ? positionOf[found[j].second] : -1;
+      }
+    },
+    nullptr);
 }
 
 namespace

@@ -251,25 +251,28 @@ bool FindNearestNeighbors(const PointBins& bins,
   std::vector<int32_t>& neighbors,
   const std::function<bool(double)>& progress = nullptr);
 
-/// The table of the `count` distinct positions of a cloud with exact copies, taken from the table
-/// of all its points instead of searched again: the table FindNearestNeighbors gives on the
-/// positions `positionXYZ` (packed x, y, z), entry for entry. `pointTable`: FindNearestNeighbors'
-/// table of the cloud's points (`width` nearest per point, not extended by AddOffLineNeighbors);
-/// `positionOf`: the position of each point; `positionIds`: the point of each position whose row
-/// is read, the copy of smallest id of its group, in increasing order (so that the positions are
-/// numbered as their first copies and ties stay broken by the smaller id). A position's row is
-/// its first copy's row without its own copies, each other position once, in the order of its
-/// first copy there (that copy comes first among the position's copies: same distance, smaller
-/// id). A row left with fewer than k positions from a full point row (copies took the places)
-/// is searched again, exactly, on bins filed here: row by row, or all the rows by
-/// FindNearestNeighbors when more than a quarter are short (every point copied). A point row
-/// that is not full holds every other point. Cost: O(count k width) without short rows.
-void DistinctNeighbors(const std::vector<int32_t>& pointTable,
+/// The table of the distinct positions of a cloud with exact copies, taken from the table of all
+/// its points instead of searched again: the table FindNearestNeighbors gives on the positions
+/// (their coordinates those of their first copies), entry for entry. `bins`, `xyz`, `n`: the
+/// cloud's points and the bins (PointBins::Build, any grid, with or without coordinates) that
+/// `pointTable` was searched on; `pointTable`: FindNearestNeighbors' table of the points (`width`
+/// nearest per point, not extended by AddOffLineNeighbors); `positionOf`: the position of each
+/// point; `positionIds`: the point of each position whose row is read, the copy of smallest id of
+/// its group, in increasing order (so that the positions are numbered as their first copies and
+/// ties stay broken by the smaller id). A position's row is its first copy's row without its own
+/// copies, each other position once, in the order of its first copy there (that copy comes first
+/// among the position's copies: same distance, smaller id). A row left with fewer than k
+/// positions from a full point row (copies took the places) is searched again, exactly, by
+/// FindNearestNeighbors' query on `bins` among the first copies only: those rows, or all the rows
+/// when more than a quarter are short (every point copied). A point row that is not full holds
+/// every other point. Cost: O(count k width) without short rows.
+void DistinctNeighbors(const PointBins& bins,
+  const double* xyz,
+  int32_t n,
+  const std::vector<int32_t>& pointTable,
   int width,
   const std::vector<int32_t>& positionOf,
   const std::vector<int32_t>& positionIds,
-  const double* positionXYZ,
-  int32_t count,
   int k,
   std::vector<int32_t>& neighbors);
 

@@ -2529,7 +2529,7 @@ int vtkCDTAdvancingFront::RequestData(
       positionBounds);
   };
   // The table of the distinct positions (`width` nearest other positions each), taken from the
-  // table of all the points, `knn` (pcs::DistinctNeighbors; positions numbered as in
+  // table of all the points, `knn`, on their bins (pcs::DistinctNeighbors; positions numbered as in
   // distinctPositions).
   auto positionNeighbors = [&](const Positions& positions, int width, std::vector<int32_t>& table)
   {
@@ -2538,12 +2538,13 @@ int vtkCDTAdvancingFront::RequestData(
     {
       positionOf[k] = positions.Slot[firstCopy[k]];
     }
-    pcs::DistinctNeighbors(knn,
+    pcs::DistinctNeighbors(bins,
+      xyz.data(),
+      static_cast<int32_t>(local),
+      knn,
       knnOthers,
       positionOf,
       positions.Ids,
-      positions.XYZ.data(),
-      static_cast<int32_t>(positions.Ids.size()),
       width,
       table);
   };

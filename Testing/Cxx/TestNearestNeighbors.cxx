@@ -462,12 +462,16 @@ bool CheckDistinctNeighbors(double copiedShare)
   PCS_CHECK(SameTable(expected, BruteForce(packed, k), k, "positions, brute force"),
     "the search on the positions");
   Bounds(xyz, bounds);
+  int divisions[3];
+  pcs::SurfaceSampleDivisions(bounds, n, 4.0, divisions);
+  pcs::PointBins bins;
+  bins.Build(bounds, divisions, xyz.data(), n, false);
   for (const int width : { 8, 9, 12 })
   {
     const std::vector<int32_t> pointTable = Search(xyz, width, bounds);
     std::vector<int32_t> found;
     pcs::DistinctNeighbors(
-      pointTable, width, positionOf, positionIds, packed.data(), positions, k, found);
+      bins, xyz.data(), n, pointTable, width, positionOf, positionIds, k, found);
     PCS_CHECK(SameTable(found, expected, k, "distinct positions from the point table"),
       "distinct positions from a table of width " << width << ", " << copiedShare
                                                   << " of them copied");

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pcs
@@ -72,6 +73,40 @@ int32_t FindPiles(const double* x,
 /// point. Returns the number of points that are not their pile's first (the copies a filter
 /// leaves unused and counts as duplicates); 0 leaves `firstOf` empty.
 int32_t FirstOfPiles(const std::vector<int32_t>& groupOf, std::vector<int32_t>& firstOf);
+
+/// Each point represented by a pile copy is represented by the copy's pile's first instead (the
+/// filters map every point to the point that meshes it: itself, the copy of smallest id of its
+/// exact copies, and a pile's first for the points of a pile). `representative`: one id per point
+/// of `n` (-1: none, e.g. an outlier); `pileCopies`: (copy, first) pairs over the same ids, as
+/// pcs::RemoveOutliersAndPiles and pcs::DropOutliersAndPilesByTable give them (a copy's first is
+/// never a copy). Returns the number of points that represented themselves and no longer do
+/// (the pile copies: they join the filter's duplicates).
+template<typename Id, typename PairId>
+int64_t RepresentPilesByFirst(Id* representative,
+  int64_t n,
+  const std::vector<std::pair<PairId, PairId>>& pileCopies)
+{
+  if (pileCopies.empty())
+  {
+    return 0;
+  }
+  std::vector<Id> firstOfCopy(static_cast<size_t>(n), -1);
+  for (const auto& copy : pileCopies)
+  {
+    firstOfCopy[copy.first] = static_cast<Id>(copy.second);
+  }
+  int64_t copies = 0;
+  for (int64_t i = 0; i < n; ++i)
+  {
+    const Id r = representative[i];
+    if (r >= 0 && firstOfCopy[r] >= 0)
+    {
+      representative[i] = firstOfCopy[r];
+      copies += r == i ? 1 : 0;
+    }
+  }
+  return copies;
+}
 
 /// The filters' warning on their duplicates (one wording for all): "Ignored `count` duplicate
 /// point(s): exact copies, or points of a pile (...); `kept`." (`kept`: which point of each

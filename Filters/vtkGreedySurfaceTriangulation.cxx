@@ -4782,11 +4782,6 @@ int vtkGreedySurfaceTriangulation::RequestData(
     // copies of an outlier are outliers, not duplicates), and so do the pile copies (the points
     // of a pile but its first, smallest id) and their exact copies (Status 4, duplicates of the
     // pile's first); the table is made again without them.
-    std::vector<int32_t> pileFirst(numberOfPoints, -1);
-    for (const auto& copy : tablePileCopies)
-    {
-      pileFirst[copy.first] = static_cast<int32_t>(copy.second);
-    }
     for (vtkIdType i = 0; i < numberOfPoints; ++i)
     {
       if (representative[i] >= 0 && far[localOf[representative[i]]])
@@ -4795,12 +4790,9 @@ int vtkGreedySurfaceTriangulation::RequestData(
         duplicates -= representative[i] != i ? 1 : 0;
         representative[i] = -1;
       }
-      else if (representative[i] >= 0 && pileFirst[representative[i]] >= 0)
-      {
-        duplicates += representative[i] == i ? 1 : 0;
-        representative[i] = pileFirst[representative[i]];
-      }
     }
+    duplicates +=
+      pcs::RepresentPilesByFirst(representative.data(), numberOfPoints, tablePileCopies);
     const int32_t kept = static_cast<int32_t>(inputIds.size());
     r.N = kept;
     localOf.assign(numberOfPoints, -1);

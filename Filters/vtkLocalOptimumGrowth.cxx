@@ -2616,24 +2616,8 @@ int vtkLocalOptimumGrowth::RequestData(
   // by that point.
   auto mergePileCopies = [&](const std::vector<std::pair<int32_t, int32_t>>& pileCopies)
   {
-    if (pileCopies.empty())
-    {
-      return;
-    }
-    std::vector<Id> firstOfCopy(static_cast<size_t>(numberOfPoints), -1);
-    for (const auto& copy : pileCopies)
-    {
-      firstOfCopy[copy.first] = copy.second;
-    }
-    for (vtkIdType i = 0; i < numberOfPoints; ++i)
-    {
-      const vtkIdType r = representative->GetValue(i);
-      if (r >= 0 && firstOfCopy[r] >= 0)
-      {
-        representative->SetValue(i, firstOfCopy[r]);
-        this->NumberOfDuplicatePoints += r == i ? 1 : 0;
-      }
-    }
+    this->NumberOfDuplicatePoints +=
+      pcs::RepresentPilesByFirst(representative->GetPointer(0), numberOfPoints, pileCopies);
   };
   auto warnDuplicates = [&]()
   {

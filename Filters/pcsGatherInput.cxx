@@ -4,13 +4,16 @@
 #include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkMultiProcessController.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -229,5 +232,41 @@ std::string NaNParametersError(std::initializer_list<std::pair<const char*, doub
     }
   }
   return names.empty() ? names : "NaN parameter(s): " + names + ". Nothing is computed.";
+}
+
+vtkIdType ReadFiniteCoordinates(vtkPoints* points,
+  std::vector<double>& xyz,
+  std::vector<int32_t>& finite)
+{
+  const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
+  xyz.resize(3 * static_cast<size_t>(n));
+  auto* doubles = points ? vtkDoubleArray::SafeDownCast(points->GetData()) : nullptr;
+  if (doubles && doubles->GetNumberOfComponents() == 3)
+  {
+    std::copy_n(doubles->GetPointer(0), xyz.size(), xyz.data());
+  }
+  else if (n > 0)
+  {
+    vtkSMPTools::For(0,
+      n,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          points->GetPoint(i, &xyz[3 * static_cast<size_t>(i)]);
+        }
+      });
+  }
+  finite.clear();
+  finite.reserve(static_cast<size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double* p = &xyz[3 * static_cast<size_t>(i)];
+    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
+    {
+      finite.push_back(static_cast<int32_t>(i));
+    }
+  }
+  return n - static_cast<vtkIdType>(finite.size());
 }
 } // namespace pcs

@@ -5,12 +5,16 @@
 #define pcsGatherInput_h
 
 #include "vtkSmartPointer.h"
+#include "vtkType.h"
 
+#include <cstdint>
 #include <initializer_list>
 #include <string>
 #include <utility>
+#include <vector>
 
 class vtkDataObject;
+class vtkPoints;
 class vtkPointSet;
 
 namespace pcs
@@ -41,6 +45,14 @@ std::string DropMismatchedPointArrays(vtkSmartPointer<vtkPointSet>& input);
 /// false); the filters refuse a NaN parameter with this error and compute nothing (the points
 /// pass through, unused).
 std::string NaNParametersError(std::initializer_list<std::pair<const char*, double>> parameters);
+
+/// The coordinates of every point of `points` as doubles (packed x, y, z; one copy when they are
+/// a vtkDoubleArray) in `xyz`, and the ids of the points whose three coordinates are finite, in
+/// increasing order, in `finite`: the points a filter meshes; it skips the others, with a
+/// warning. Returns the number of points skipped. `points` may be null (no points).
+vtkIdType ReadFiniteCoordinates(vtkPoints* points,
+  std::vector<double>& xyz,
+  std::vector<int32_t>& finite);
 }
 
 #endif

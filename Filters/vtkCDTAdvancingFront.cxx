@@ -2340,28 +2340,10 @@ int vtkCDTAdvancingFront::RequestData(
 
   // Coordinates as doubles; the finite points form the cloud the bins and the normal
   // estimation see (local ids), mapped back to input ids at the end.
-  vtkPoints* inputPoints = input->GetPoints();
-  std::vector<double> all(3 * static_cast<size_t>(numberOfPoints));
-  vtkSMPTools::For(0, numberOfPoints,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        inputPoints->GetPoint(i, &all[3 * i]);
-      }
-    });
+  std::vector<double> all;
   std::vector<Id> inputId; // local id -> input id
-  inputId.reserve(numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    const double* p = &all[3 * i];
-    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
-    {
-      inputId.push_back(static_cast<Id>(i));
-    }
-  }
+  this->NumberOfSkippedPoints = pcs::ReadFiniteCoordinates(input->GetPoints(), all, inputId);
   const Id local = static_cast<Id>(inputId.size());
-  this->NumberOfSkippedPoints = numberOfPoints - local;
   std::vector<double> xyz(3 * static_cast<size_t>(local));
   for (Id k = 0; k < local; ++k)
   {

@@ -4669,28 +4669,9 @@ int vtkGreedySurfaceTriangulation::RequestData(
   }
 
   // Distinct finite points: non-finite ones are skipped, exact duplicates merged.
-  std::vector<double> xyz(3 * static_cast<size_t>(numberOfPoints));
-  vtkPoints* points = input->GetPoints();
-  vtkSMPTools::For(0, numberOfPoints, [&](vtkIdType b, vtkIdType e) {
-    for (vtkIdType i = b; i < e; ++i)
-    {
-      points->GetPoint(i, &xyz[3 * i]);
-    }
-  });
+  std::vector<double> xyz;
   std::vector<int32_t> order;
-  order.reserve(numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    const double* p = &xyz[3 * i];
-    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
-    {
-      order.push_back(static_cast<int32_t>(i));
-    }
-    else
-    {
-      ++skipped;
-    }
-  }
+  skipped = pcs::ReadFiniteCoordinates(input->GetPoints(), xyz, order);
   if (skipped > 0)
   {
     vtkWarningMacro("Skipped " << skipped << " point(s) with NaN or infinite coordinates.");

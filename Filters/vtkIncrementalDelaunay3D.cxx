@@ -738,36 +738,13 @@ int vtkIncrementalDelaunay3D::RequestData(
   }
 
   // Coordinates as doubles; non-finite points are skipped (RepresentativeId -1).
-  std::vector<double> xyz(3 * static_cast<size_t>(numberOfPoints));
-  vtkPoints* points = input->GetPoints();
-  if (auto* doubles = vtkDoubleArray::SafeDownCast(points->GetData()))
-  {
-    std::copy_n(doubles->GetPointer(0), xyz.size(), xyz.data());
-  }
-  else
-  {
-    vtkSMPTools::For(0, numberOfPoints, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        points->GetPoint(i, &xyz[3 * i]);
-      }
-    });
-  }
+  std::vector<double> xyz;
   std::vector<int32_t> ids;
-  ids.reserve(numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  this->NumberOfSkippedPoints = pcs::ReadFiniteCoordinates(input->GetPoints(), xyz, ids);
+  representative->FillValue(-1);
+  for (const int32_t id : ids)
   {
-    const double* p = &xyz[3 * i];
-    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
-    {
-      ids.push_back(static_cast<int32_t>(i));
-      representative->SetValue(i, i);
-    }
-    else
-    {
-      representative->SetValue(i, -1);
-      ++this->NumberOfSkippedPoints;
-    }
+    representative->SetValue(id, id);
   }
   if (this->NumberOfSkippedPoints > 0)
   {

@@ -2550,31 +2550,13 @@ int vtkLocalOptimumGrowth::RequestData(
     return finish();
   }
 
-  // Coordinates as doubles; those far from 1 in magnitude are scaled by a power of two (exact),
-  // so that squared lengths and the predicates never overflow or underflow.
-  std::vector<double> xyz(3 * static_cast<size_t>(numberOfPoints));
-  vtkPoints* points = input->GetPoints();
-  vtkSMPTools::For(0, numberOfPoints, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      points->GetPoint(i, &xyz[3 * i]);
-    }
-  });
+  // Coordinates as doubles (the non-finite points skipped: RepresentativeId -1); those far from 1
+  // in magnitude are scaled by a power of two (exact), so that squared lengths and the
+  // predicates never overflow or underflow.
+  std::vector<double> xyz;
   std::vector<Id> ids;
-  ids.reserve(numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    const double* p = &xyz[3 * i];
-    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
-    {
-      ids.push_back(static_cast<Id>(i));
-    }
-    else
-    {
-      representative->SetValue(i, -1);
-      ++this->NumberOfSkippedPoints;
-    }
-  }
+  this->NumberOfSkippedPoints = pcs::ReadFiniteCoordinates(input->GetPoints(), xyz, ids);
+  representative->FillValue(-1);
   if (this->NumberOfSkippedPoints > 0)
   {
     vtkWarningMacro(

@@ -1998,21 +1998,12 @@ int vtkPerimeterPeelSurface::RequestData(
   }
 
   // Finite coordinates, scaled by a power of two into the predicates' range when needed.
-  std::vector<double> xyz(3 * static_cast<size_t>(numberOfPoints));
+  std::vector<double> xyz;
   std::vector<int32_t> ids;
-  ids.reserve(numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  const vtkIdType skipped = pcs::ReadFiniteCoordinates(input->GetPoints(), xyz, ids);
+  if (skipped > 0)
   {
-    input->GetPoint(i, &xyz[3 * i]);
-    if (std::isfinite(xyz[3 * i]) && std::isfinite(xyz[3 * i + 1]) && std::isfinite(xyz[3 * i + 2]))
-    {
-      ids.push_back(static_cast<int32_t>(i));
-    }
-  }
-  if (static_cast<vtkIdType>(ids.size()) < numberOfPoints)
-  {
-    vtkWarningMacro("Skipped " << numberOfPoints - static_cast<vtkIdType>(ids.size())
-                               << " point(s) with NaN or infinite coordinates.");
+    vtkWarningMacro("Skipped " << skipped << " point(s) with NaN or infinite coordinates.");
   }
   const int exponent = pcs::PredicateSafeExponent(xyz.data(), 3, ids);
   if (exponent != 0)

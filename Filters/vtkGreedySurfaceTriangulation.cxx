@@ -326,6 +326,10 @@ public:
   void CloseSmallLoops();
   bool FillOpenLoop(const pcs::holes::HoleFiller& filler, const std::vector<int32_t>& loop,
     const double centre[3], double radius, double maximumDihedral, bool& byDihedral);
+  void LostFreePointsNear(const double centre[3],
+    double radius,
+    vtkIdList* near,
+    std::vector<int32_t>& candidates) const;
   void CapOpenEnds();
   bool IsNaturalBorder(const std::vector<int32_t>& loop, const double centre[3], double radius);
   bool IsWidePlanarRim(
@@ -2656,17 +2660,7 @@ void Reconstruction::Step6FillHoles(double begin, double end)
       ++this->HolesLeftOpen;
       continue;
     }
-    candidates.clear();
-    this->Locator->FindPointsWithinRadius(radius, centre, near);
-    for (vtkIdType j = 0; j < near->GetNumberOfIds(); ++j)
-    {
-      const int32_t q = static_cast<int32_t>(near->GetId(j));
-      if (this->Status[q] == vtkGreedySurfaceTriangulation::LOST && this->Mesh.IsFree(q))
-      {
-        candidates.push_back(q);
-      }
-    }
-    std::sort(candidates.begin(), candidates.end());
+    this->LostFreePointsNear(centre, radius, near, candidates);
     Candidate fill;
     filler.Fill(this->X.data(), loop, vectors, candidates, fill.Result);
     if (fill.Result.Triangles.empty())
@@ -3370,6 +3364,26 @@ bool Reconstruction::LeastDihedralFill(const std::vector<int32_t>& loop,
   return true;
 }
 
+// The lost points no triangle uses yet within `radius` of `centre` (the points a hole's fill may
+// insert), in increasing id order, in `candidates`; `near` is scratch for the locator's answer.
+void Reconstruction::LostFreePointsNear(const double centre[3],
+  double radius,
+  vtkIdList* near,
+  std::vector<int32_t>& candidates) const
+{
+  candidates.clear();
+  this->Locator->FindPointsWithinRadius(radius, centre, near);
+  for (vtkIdType j = 0; j < near->GetNumberOfIds(); ++j)
+  {
+    const int32_t q = static_cast<int32_t>(near->GetId(j));
+    if (this->Status[q] == vtkGreedySurfaceTriangulation::LOST && this->Mesh.IsFree(q))
+    {
+      candidates.push_back(q);
+    }
+  }
+  std::sort(candidates.begin(), candidates.end());
+}
+
 // The fill of a loop left open after step 6 (`loop` reversed, as a hole; no vertex twice): steps
 // 5 and 6 with the lost points within `radius` of `centre`; when that fill is incomplete, the
 // loop's triangulation of least largest dihedral angle on its own vertices, kept when that angle
@@ -3389,16 +3403,7 @@ bool Reconstruction::FillOpenLoop(const pcs::holes::HoleFiller& filler,
   }
   std::vector<int32_t> candidates;
   vtkNew<vtkIdList> near;
-  this->Locator->FindPointsWithinRadius(radius, centre, near);
-  for (vtkIdType j = 0; j < near->GetNumberOfIds(); ++j)
-  {
-    const int32_t q = static_cast<int32_t>(near->GetId(j));
-    if (this->Status[q] == vtkGreedySurfaceTriangulation::LOST && this->Mesh.IsFree(q))
-    {
-      candidates.push_back(q);
-    }
-  }
-  std::sort(candidates.begin(), candidates.end());
+  this->LostFreePointsNear(centre, radius, near, candidates);
   pcs::holes::FillResult result;
   filler.Fill(this->X.data(), loop, vectors, candidates, result);
   // A partial fill would leave a more ragged loop, a fill meeting the mesh may not be made: the

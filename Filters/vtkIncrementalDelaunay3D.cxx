@@ -237,6 +237,54 @@ void MergeWithinTolerance(double tolerance, const double* coords, int dim,
 using pcs::PredicateSafeExponent;
 using pcs::ScaledCopy;
 
+// The edges of a Voronoi diagram whose vertices (the circumcentres) and their circumradii are
+// `vertices` and `radii`: a segment between two vertices, or a ray from a vertex to a far end,
+// added as a vertex of radius NaN. SetTo hands the vertices (point data Circumradius) and the
+// edges (cell data Unbounded: 1 for a ray, 0 for a segment) to the output.
+class VoronoiEdges
+{
+public:
+  VoronoiEdges(vtkPoints* vertices, std::vector<double>& radii)
+    : Vertices(vertices)
+    , Radii(radii)
+  {
+    this->Unbounded->SetName("Unbounded");
+  }
+
+  void AddSegment(vtkIdType a, vtkIdType b)
+  {
+    const vtkIdType segment[2] = { a, b };
+    this->Edges->InsertNextCell(2, segment);
+    this->Unbounded->InsertNextValue(0);
+  }
+
+  void AddRay(vtkIdType from, const double end[3])
+  {
+    const vtkIdType ray[2] = { from, this->Vertices->InsertNextPoint(end) };
+    this->Radii.push_back(std::numeric_limits<double>::quiet_NaN());
+    this->Edges->InsertNextCell(2, ray);
+    this->Unbounded->InsertNextValue(1);
+  }
+
+  void SetTo(vtkPolyData* voronoi)
+  {
+    vtkNew<vtkDoubleArray> radius;
+    radius->SetName("Circumradius");
+    radius->SetNumberOfValues(static_cast<vtkIdType>(this->Radii.size()));
+    std::copy(this->Radii.begin(), this->Radii.end(), radius->GetPointer(0));
+    voronoi->SetPoints(this->Vertices);
+    voronoi->SetLines(this->Edges);
+    voronoi->GetPointData()->AddArray(radius);
+    voronoi->GetCellData()->AddArray(this->Unbounded);
+  }
+
+private:
+  vtkPoints* Vertices;
+  std::vector<double>& Radii;
+  vtkNew<vtkCellArray> Edges;
+  vtkNew<vtkUnsignedCharArray> Unbounded;
+};
+
 void BuildVoronoi3D(const double* xyz, const pcs::Delaunay3D& dt,
   const std::vector<int32_t>& finiteIndex, int32_t numberOfFinite, vtkPolyData* voronoi);
 
@@ -426,9 +474,7 @@ void BuildVoronoi3D(const double* xyz, const pcs::Delaunay3D& dt,
     (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
     (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
 
-  vtkNew<vtkCellArray> edges;
-  vtkNew<vtkUnsignedCharArray> unbounded;
-  unbounded->SetName("Unbounded");
+  VoronoiEdges edges(vertices, radii);
   for (int64_t c = 0; c < numberOfKernelCells; ++c)
   {
     const int32_t f = finiteIndex[c];
@@ -444,9 +490,7 @@ void BuildVoronoi3D(const double* xyz, const pcs::Delaunay3D& dt,
       {
         if (f < g)
         {
-          const vtkIdType segment[2] = { f, g };
-          edges->InsertNextCell(2, segment);
-          unbounded->InsertNextValue(0);
+          edges.AddSegment(f, g);
         }
         continue;
       }
@@ -471,21 +515,10 @@ void BuildVoronoi3D(const double* xyz, const pcs::Delaunay3D& dt,
       {
         end[i] = start[i] + diagonal * normal[i];
       }
-      const vtkIdType endId = vertices->InsertNextPoint(end);
-      radii.push_back(std::numeric_limits<double>::quiet_NaN());
-      const vtkIdType ray[2] = { f, endId };
-      edges->InsertNextCell(2, ray);
-      unbounded->InsertNextValue(1);
+      edges.AddRay(f, end);
     }
   }
-  vtkNew<vtkDoubleArray> radius;
-  radius->SetName("Circumradius");
-  radius->SetNumberOfValues(static_cast<vtkIdType>(radii.size()));
-  std::copy(radii.begin(), radii.end(), radius->GetPointer(0));
-  voronoi->SetPoints(vertices);
-  voronoi->SetLines(edges);
-  voronoi->GetPointData()->AddArray(radius);
-  voronoi->GetCellData()->AddArray(unbounded);
+  edges.SetTo(voronoi);
 }
 
 //------------------------------------------------------------------------------------------------
@@ -566,9 +599,7 @@ vtkIdType Triangulate2D(vtkIncrementalDelaunay3D* self, const double* uv,
       frame.Lift(&centers[2 * t], p);
       vertices->SetPoint(t, p);
     }
-    vtkNew<vtkCellArray> edges;
-    vtkNew<vtkUnsignedCharArray> unbounded;
-    unbounded->SetName("Unbounded");
+    VoronoiEdges edges(vertices, radii);
     for (vtkIdType t = 0; t < numberOfTriangles; ++t)
     {
       for (int i = 0; i < 3; ++i)
@@ -578,9 +609,7 @@ vtkIdType Triangulate2D(vtkIncrementalDelaunay3D* self, const double* uv,
         {
           if (t < n)
           {
-            const vtkIdType segment[2] = { t, n };
-            edges->InsertNextCell(2, segment);
-            unbounded->InsertNextValue(0);
+            edges.AddSegment(t, n);
           }
           continue;
         }
@@ -593,21 +622,10 @@ vtkIdType Triangulate2D(vtkIncrementalDelaunay3D* self, const double* uv,
           centers[2 * t + 1] + diagonal * normal[1] / length };
         double end[3];
         frame.Lift(endUV, end);
-        const vtkIdType endId = vertices->InsertNextPoint(end);
-        radii.push_back(std::numeric_limits<double>::quiet_NaN());
-        const vtkIdType ray[2] = { t, endId };
-        edges->InsertNextCell(2, ray);
-        unbounded->InsertNextValue(1);
+        edges.AddRay(t, end);
       }
     }
-    vtkNew<vtkDoubleArray> radius;
-    radius->SetName("Circumradius");
-    radius->SetNumberOfValues(static_cast<vtkIdType>(radii.size()));
-    std::copy(radii.begin(), radii.end(), radius->GetPointer(0));
-    voronoi->SetPoints(vertices);
-    voronoi->SetLines(edges);
-    voronoi->GetPointData()->AddArray(radius);
-    voronoi->GetCellData()->AddArray(unbounded);
+    edges.SetTo(voronoi);
   }
   return numberOfTriangles;
 }

@@ -395,7 +395,11 @@ bool MergePiles(const double* positionXYZ,
 // make every query pay for them). This coarse grid keeps, per cell, the longest edge with an end
 // point in it, so that the ball only grows where long edges are: the points themselves are then
 // found by vtkStaticPointLocator. (Cells are hashed; two cells sharing a slot share the larger
-// length, which only enlarges the ball.)
+// length, which only enlarges the ball.) Coarser levels of cells, each twice as wide as the one
+// below and keeping the longest of its eight cells, answer the queries whose ball spans too many
+// cells: a query walks down from the coarse cells only into those that may matter. (Before, such
+// a query took the ball of the mesh's longest edge: on a cloud whose density varies by 10^4 the
+// long edges of its sparse end put thousands of dense points in every projection test.)
 class EdgeReachGrid
 {
 public:
@@ -406,18 +410,40 @@ public:
     this->Origin[2] = bounds[4];
     this->Size = size > 0.0 && std::isfinite(size) ? size : 1.0;
     this->Cells.clear();
+    for (auto& level : this->Coarse)
+    {
+      level.clear();
+    }
   }
 
   void Add(const double* p, double length)
   {
-    double& longest = this->Cells[this->Key(this->Cell(p, 0), this->Cell(p, 1), this->Cell(p, 2))];
-    longest = std::max(longest, length);
+    const int64_t cell[3] = { this->Cell(p, 0), this->Cell(p, 1), this->Cell(p, 2) };
+    double& longest = this->Cells[Key(cell[0], cell[1], cell[2])];
+    if (!(length > longest))
+    {
+      return;
+    }
+    longest = length;
+    // The coarser cells hold at least their finer cells' lengths: up until one already does.
+    for (int level = 1; level <= CoarseLevels; ++level)
+    {
+      const int64_t key =
+        Key(Coarser(cell[0], level), Coarser(cell[1], level), Coarser(cell[2], level));
+      double& coarse = this->Coarse[level - 1][key];
+      if (!(length > coarse))
+      {
+        return;
+      }
+      coarse = length;
+    }
   }
 
   // The radius around x that holds at least one end point of every edge passing within `reach`
   // of x (the end point nearer to the edge's closest point to x: within sqrt(reach^2 + L^2 / 4)
-  // for an edge of length L); `longest` is the longest edge of the mesh (the bound when too many
-  // cells are in range; no cell farther than that bound from x can matter).
+  // for an edge of length L); `longest` is the longest edge of the mesh (no cell farther than
+  // sqrt(reach^2 + longest^2 / 4) from x can matter; that bound itself when even the coarsest
+  // level has too many cells in range).
   double Reach(const double* x, double reach, double longest) const
   {
     const double reach2 = reach * reach;
@@ -432,40 +458,33 @@ public:
       const int64_t span = high[k] - low[k] + 1;
       cells = span <= 0 || span > 343 || cells > 343 ? 344 : cells * span;
     }
+    // The cells within `extent`, or where they are too many, the cells of the first coarser
+    // level of which it spans at most 4 per axis (then down through those that may matter).
+    int level = 0;
     if (cells > 343 || cells <= 0)
     {
-      return extent;
+      for (level = 1; level <= CoarseLevels; ++level)
+      {
+        if (std::max({ Coarser(high[0], level) - Coarser(low[0], level),
+              Coarser(high[1], level) - Coarser(low[1], level),
+              Coarser(high[2], level) - Coarser(low[2], level) }) <= 3)
+        {
+          break;
+        }
+      }
+      if (level > CoarseLevels)
+      {
+        return extent;
+      }
     }
     double result = reach;
-    for (int64_t i = low[0]; i <= high[0]; ++i)
+    for (int64_t i = Coarser(low[0], level); i <= Coarser(high[0], level); ++i)
     {
-      for (int64_t j = low[1]; j <= high[1]; ++j)
+      for (int64_t j = Coarser(low[1], level); j <= Coarser(high[1], level); ++j)
       {
-        for (int64_t k = low[2]; k <= high[2]; ++k)
+        for (int64_t k = Coarser(low[2], level); k <= Coarser(high[2], level); ++k)
         {
-          const auto found = this->Cells.find(this->Key(i, j, k));
-          if (found == this->Cells.end())
-          {
-            continue;
-          }
-          const double bound2 = reach2 + 0.25 * found->second * found->second;
-          if (bound2 <= result * result)
-          {
-            continue;
-          }
-          // Distance from x to the cell's box.
-          const int64_t index[3] = { i, j, k };
-          double d2 = 0.0;
-          for (int c = 0; c < 3; ++c)
-          {
-            const double lo = this->Origin[c] + this->Size * static_cast<double>(index[c]);
-            const double gap = std::max(std::max(lo - x[c], x[c] - (lo + this->Size)), 0.0);
-            d2 += gap * gap;
-          }
-          if (d2 <= bound2)
-          {
-            result = std::sqrt(bound2);
-          }
+          this->Visit(x, reach2, level, i, j, k, result);
         }
       }
     }
@@ -473,6 +492,69 @@ public:
   }
 
 private:
+  // Levels above the cells (level l: cells 2^l cells wide); a query that would need a coarser
+  // level than the last takes its whole ball.
+  static constexpr int CoarseLevels = 40;
+
+  // Raises `result` to the bound of the cell (i, j, k) of `level` (0: the cells), or for a coarser
+  // cell to those of its cells (the same result as visiting every cell within the extent: a
+  // coarse cell's length and distance bound its cells').
+  void Visit(const double* x,
+    double reach2,
+    int level,
+    int64_t i,
+    int64_t j,
+    int64_t k,
+    double& result) const
+  {
+    const auto& cells = level == 0 ? this->Cells : this->Coarse[level - 1];
+    const auto found = cells.find(Key(i, j, k));
+    if (found == cells.end())
+    {
+      return;
+    }
+    const double bound2 = reach2 + 0.25 * found->second * found->second;
+    if (bound2 <= result * result)
+    {
+      return;
+    }
+    // Distance from x to the cell's box.
+    const double width = this->Size * static_cast<double>(int64_t(1) << level);
+    const int64_t index[3] = { i, j, k };
+    double d2 = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double lo = this->Origin[c] + width * static_cast<double>(index[c]);
+      const double gap = std::max(std::max(lo - x[c], x[c] - (lo + width)), 0.0);
+      d2 += gap * gap;
+    }
+    if (d2 > bound2)
+    {
+      return;
+    }
+    if (level == 0)
+    {
+      result = std::sqrt(bound2);
+      return;
+    }
+    for (int child = 0; child < 8; ++child)
+    {
+      this->Visit(x,
+        reach2,
+        level - 1,
+        2 * i + (child & 1),
+        2 * j + ((child >> 1) & 1),
+        2 * k + (child >> 2),
+        result);
+    }
+  }
+
+  // The index of the cell of `level` holding the cell `index` (floor division by 2^level).
+  static int64_t Coarser(int64_t index, int level)
+  {
+    return index >= 0 ? index >> level : -((-index - 1) >> level) - 1;
+  }
+
   int64_t Cell(const double* p, int k, double shift = 0.0) const
   {
     const double c = std::floor((p[k] + shift - this->Origin[k]) / this->Size);
@@ -488,6 +570,7 @@ private:
   double Origin[3] = { 0, 0, 0 };
   double Size = 1.0;
   std::unordered_map<int64_t, double> Cells;
+  std::array<std::unordered_map<int64_t, double>, CoarseLevels> Coarse;
 };
 
 //------------------------------------------------------------------------------------------------

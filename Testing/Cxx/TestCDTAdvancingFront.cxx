@@ -165,6 +165,29 @@ Cloud TwoDensitySphere(int upper, int lower, unsigned seed)
   return c;
 }
 
+// A density gradient: n points on the unit sphere with a density proportional to exp(k z)
+// (uniform points kept with probability exp(k (z - 1))): the poles' densities differ by e^(2k),
+// their spacings by e^k (a terrestrial scan of near and far objects spans 10^4 in density);
+// exact normals.
+Cloud GradientSphere(int n, double k, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Cloud c;
+  while (static_cast<int>(c.XYZ.size()) < 3 * n)
+  {
+    const double p[3] = { g(rng), g(rng), g(rng) };
+    const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    if (u(rng) < std::exp(k * (p[2] / r - 1.0)))
+    {
+      c.XYZ.insert(c.XYZ.end(), { p[0] / r, p[1] / r, p[2] / r });
+      c.Normals.insert(c.Normals.end(), { p[0] / r, p[1] / r, p[2] / r });
+    }
+  }
+  return c;
+}
+
 // Uniform on the torus surface (rejection on the area element), radii 1 and 0.4.
 Cloud Torus(int n, unsigned seed)
 {
@@ -220,7 +243,10 @@ Cloud Lens(int n, double half)
 
 using Messages = pcstest::MessageCounter;
 
-Messages Run(vtkCDTAdvancingFront* filter, vtkDataObject* input)
+// Runs the filter, counting its messages (and collecting the warnings' texts in `warnings`).
+Messages Run(vtkCDTAdvancingFront* filter,
+  vtkDataObject* input,
+  std::vector<std::string>* warnings = nullptr)
 {
   Messages messages;
   vtkNew<vtkCallbackCommand> callback;
@@ -228,9 +254,26 @@ Messages Run(vtkCDTAdvancingFront* filter, vtkDataObject* input)
   callback->SetClientData(&messages);
   filter->AddObserver(vtkCommand::WarningEvent, callback);
   filter->AddObserver(vtkCommand::ErrorEvent, callback);
+  vtkNew<vtkCallbackCommand> collect;
+  if (warnings)
+  {
+    collect->SetCallback([](vtkObject*, unsigned long, void* client, void* call)
+      { static_cast<std::vector<std::string>*>(client)->emplace_back(static_cast<char*>(call)); });
+    collect->SetClientData(warnings);
+    filter->AddObserver(vtkCommand::WarningEvent, collect);
+  }
   filter->SetInputData(input);
   filter->Update();
   return messages;
+}
+
+// Did the front stop at its work bound (the warning that the cloud does not look like a surface)?
+bool WarnedOutOfWork(const std::vector<std::string>& warnings)
+{
+  return std::any_of(warnings.begin(),
+    warnings.end(),
+    [](const std::string& w)
+    { return w.find("does not look like a surface") != std::string::npos; });
 }
 
 vtkSmartPointer<vtkPolyData> Quality(vtkPolyData* mesh)
@@ -700,18 +743,9 @@ bool TestLatticeVolume()
   auto input = pcstest::MakeCloud(xyz);
   vtkNew<vtkCDTAdvancingFront> filter;
   std::vector<std::string> warnings;
-  vtkNew<vtkCallbackCommand> callback;
-  callback->SetCallback([](vtkObject*, unsigned long, void* client, void* call)
-    { static_cast<std::vector<std::string>*>(client)->emplace_back(static_cast<char*>(call)); });
-  callback->SetClientData(&warnings);
-  filter->AddObserver(vtkCommand::WarningEvent, callback);
-  const Messages messages = Run(filter, input);
+  const Messages messages = Run(filter, input, &warnings);
   PCS_CHECK(messages.Errors == 0, label << ": errors");
-  const bool said = std::any_of(warnings.begin(),
-    warnings.end(),
-    [](const std::string& w)
-    { return w.find("does not look like a surface") != std::string::npos; });
-  PCS_CHECK(said,
+  PCS_CHECK(WarnedOutOfWork(warnings),
     label << ": no warning that the cloud is not a surface (" << warnings.size()
           << " other warnings)");
   auto quality = Quality(filter->GetOutput());
@@ -753,6 +787,27 @@ bool TestFarSpheres()
     label << ": " << filter->GetNumberOfDuplicatePoints() << " duplicates instead of 0");
   PCS_CHECK(filter->GetNumberOfTriangles() == 2 * 4000 - 8,
     label << ": " << filter->GetNumberOfTriangles() << " triangles for 4000 points");
+  return CheckConsistentCounts(label, filter);
+}
+
+// A density gradient of 10^4 pole to pole (spacings 100 times apart), PCA normals. The projection
+// tests of the dense part walked the ball of the longest edge of the sparse part (thousands of
+// points each): the work bound stopped the front with points left unused (400 boundary edges).
+bool TestGradientWork()
+{
+  const std::string label = "sphere, density gradient 10^4, work";
+  auto input = MakeInput(GradientSphere(20000, 4.6, 9), false);
+  vtkNew<vtkCDTAdvancingFront> filter;
+  std::vector<std::string> warnings;
+  const Messages messages = Run(filter, input, &warnings);
+  PCS_CHECK(messages.Errors == 0, label << ": errors");
+  PCS_CHECK(!WarnedOutOfWork(warnings), label << ": the front ran out of work");
+  PCS_CHECK(filter->GetNumberOfUnusedPoints() == 0,
+    label << ": " << filter->GetNumberOfUnusedPoints() << " unused points");
+  auto quality = Quality(filter->GetOutput());
+  PCS_CHECK(pcstest::FieldCount(quality, "NumberOfNonManifoldEdges") == 0 &&
+      pcstest::FieldCount(quality, "NumberOfNonManifoldVertices") == 0,
+    label << ": not manifold");
   return CheckConsistentCounts(label, filter);
 }
 
@@ -889,6 +944,7 @@ int TestCDTAdvancingFront(int, char*[])
   failures += TestPilesWithCopies() ? 0 : 1;
   failures += TestFarSpheres() ? 0 : 1;
   failures += TestLatticeVolume() ? 0 : 1;
+  failures += TestGradientWork() ? 0 : 1;
   std::cout << failures << " failure(s)" << std::endl;
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

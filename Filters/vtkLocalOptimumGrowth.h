@@ -95,13 +95,18 @@
  *      projected onto the plane of (a, b, y): the new triangle lies in the free angle between
  *      the front edges at each of its vertices already meshed, its new edges cross no front
  *      edge of the neighbourhood, and no point of the neighbourhood lies in the closed
- *      triangle. Points and front edges of another sheet are ignored: points farther from the
- *      triangle's mean height than its longest edge, front edges whose triangle faces the other
- *      way. (Tried and dropped: also ignoring meshed points whose triangles all face the other
- *      way. It left 3 to 22 % fewer boundary edges on CGAL's camel, elephant, cow, armadillo and
- *      man vertices, but more on 10^5 samples of the armadillo (158 -> 240) and the elephant
- *      (66 -> 148), and let a triangle cut across the elephant's trunk tip, 3.1 mean spacings
- *      off the surface: a strongly curved tip looks like another sheet to that rule.)
+ *      triangle (but a point whose projection is exactly a vertex's does not block when the
+ *      new triangle lies in the plane of (a, b, y) and the point off it, both exact, unless the
+ *      triangle bridges two parts of the front: the point is then on the normal through that
+ *      vertex, as on a box sampled on a grid, where the points beyond an edge project onto the
+ *      edge's points and left them unused). Points and front edges of another sheet are
+ *      ignored: points farther from the triangle's mean height than its longest edge, front
+ *      edges whose triangle faces the other way. (Tried and dropped: also ignoring meshed
+ *      points whose triangles all face the other way. It left 3 to 22 % fewer boundary edges on
+ *      CGAL's camel, elephant, cow, armadillo and man vertices, but more on 10^5 samples of the
+ *      armadillo (158 -> 240) and the elephant (66 -> 148), and let a triangle cut across the
+ *      elephant's trunk tip, 3.1 mean spacings off the surface: a strongly curved tip looks
+ *      like another sheet to that rule.)
  *    Front closing: when the chosen point is the front neighbour of a or b, the triangle is an
  *    ear and closes the angle between two front edges. When it is another front vertex (two
  *    parts of the front meet, e.g. around the tube of a torus), the triangle would pinch that

@@ -12,6 +12,8 @@
 //   by the narrow-loop fill (closed, genus 0, 2V - 4 triangles), those of the wide one (4.79
 //   spacings) and of both with MaximumHoleEdges 0 left open (two loops, Euler characteristic 0);
 // - a planar 20 x 20 grid (cocircular and collinear points everywhere): 722 triangles, one loop;
+// - the surface of a box sampled on an integer grid (12 x 9 x 7 points, 406, points exactly on
+//   its edges), holes not closed: every point used, six disks, every triangle in a face;
 // - a tilted plane scanned in lines of an integer lattice: no zero-area triangle, manifold,
 //   every point used;
 // - a plane scanned in 40 lines 8.8 point spacings apart, tilted along the lines (z = x), where
@@ -37,6 +39,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkIdList.h"
 #include "vtkMath.h"
 #include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
@@ -417,6 +420,72 @@ bool TestPlanarGrid()
   return true;
 }
 
+bool TestGridBox()
+{
+  // The surface of a box sampled on an integer grid: 12 x 9 x 7 points, 406 on the surface, 96
+  // exactly on its edges (corners included). In the frame of a face triangle the points of the
+  // face beyond an edge project exactly onto that edge's points, and blocked every triangle with
+  // a vertex on the edge (35 points were left unused, 10 components). Constraint 1 (60 degrees)
+  // keeps the faces, which meet at 90 degrees, apart: every point is used and the growth makes
+  // the six faces as six disks (Euler characteristic 6), every triangle in a face (its three
+  // vertices share the coordinate of that face). The holes are not closed (MaximumHoleEdges 0):
+  // the narrow-loop fill caps such a flat face's loop with a second layer of triangles on the
+  // face, back to back with the first (a closed flat component).
+  const int size[3] = { 12, 9, 7 };
+  std::vector<double> xyz;
+  for (int i = 0; i < size[0]; ++i)
+  {
+    for (int j = 0; j < size[1]; ++j)
+    {
+      for (int k = 0; k < size[2]; ++k)
+      {
+        if (i == 0 || j == 0 || k == 0 || i == size[0] - 1 || j == size[1] - 1 || k == size[2] - 1)
+        {
+          xyz.insert(xyz.end(), { double(i), double(j), double(k) });
+        }
+      }
+    }
+  }
+  const double points = static_cast<double>(xyz.size() / 3);
+  PCS_CHECK(points == 406, "grid box: 406 points, got " << points);
+  vtkNew<vtkLocalOptimumGrowth> growth;
+  growth->SetInputData(pcstest::MakeCloud(xyz));
+  growth->SetMaximumHoleEdges(0);
+  growth->Update();
+  vtkPolyData* mesh = growth->GetOutput();
+  const Quality q = Measure(mesh);
+  PCS_CHECK(q.UsedPoints == points,
+    "grid box: every point used, " << points - q.UsedPoints << " left unused");
+  PCS_CHECK(q.Components == 6 && q.Loops == 6 && q.Euler == 6,
+    "grid box: six disks, got " << q.Components << " components, " << q.Loops
+                                << " loops, Euler characteristic " << q.Euler);
+  PCS_CHECK(q.NonManifoldEdges == 0 && q.NonManifoldVertices == 0 && q.Orientation == 1.0,
+    "grid box manifold and oriented");
+  PCS_CHECK(q.Degenerate == 0, "grid box: no degenerate triangle");
+  vtkNew<vtkIdList> cell;
+  vtkIdType offFace = 0;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    mesh->GetCellPoints(c, cell);
+    bool inFace = false;
+    for (int axis = 0; axis < 3 && !inFace; ++axis)
+    {
+      for (const double side : { 0.0, size[axis] - 1.0 })
+      {
+        bool all = true;
+        for (vtkIdType v = 0; v < cell->GetNumberOfIds(); ++v)
+        {
+          all = all && mesh->GetPoint(cell->GetId(v))[axis] == side;
+        }
+        inFace = inFace || all;
+      }
+    }
+    offFace += inFace ? 0 : 1;
+  }
+  PCS_CHECK(offFace == 0, "grid box: " << offFace << " triangles across an edge");
+  return true;
+}
+
 bool TestLatticeLines()
 {
   // A tilted plane scanned in 20 lines of 150 points on an integer lattice (2 apart along a
@@ -696,6 +765,7 @@ int TestLocalOptimumGrowth(int, char*[])
   ok = TestOpenPatch() && ok;
   ok = TestNarrowLoops() && ok;
   ok = TestPlanarGrid() && ok;
+  ok = TestGridBox() && ok;
   ok = TestLatticeLines() && ok;
   ok = TestStallingScanLines() && ok;
   ok = TestTwoSpheres() && ok;

@@ -407,7 +407,7 @@ void NearestSearch::FileEntries(const std::vector<uint8_t>* candidates)
 // p's position f in bucket units (PointBins::BucketCoordinate): the whole buckets between them,
 // less 10^-6 of a bucket for the rounding of the index formula. 0 next to p, in the clamped
 // first and last buckets, and on an axis of one bucket.
-double NearestSearch::GapTo(double f, int j, int c) const
+inline double NearestSearch::GapTo(double f, int j, int c) const
 {
   double units = 0.0;
   if (j + 1 < f && j + 1 < this->Bins.GetDivisions()[c])

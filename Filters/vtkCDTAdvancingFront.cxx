@@ -1,6 +1,7 @@
 #include "vtkCDTAdvancingFront.h"
 
 #include "pcsCoordinateScaling.h"
+#include "pcsDisjointSets.h"
 #include "pcsDuplicatePoints.h"
 #include "pcsFieldData.h"
 #include "pcsGatherInput.h"
@@ -748,6 +749,9 @@ public:
   // Accept triangles that pinch a front vertex (see CanAdd).
   bool AllowPinches = true;
 
+  // The mean spacing: loops shorter than 4 pi of it are holes (see KeepsGenus).
+  double HoleSpacing = 0.0;
+
   // The work of the front: the points gathered for candidates and for the projection tests, and
   // the mesh edges listed for the projection tests. Seed and Advance stop (OutOfWork) once it
   // exceeds WorkBudget.
@@ -762,6 +766,7 @@ public:
     ++this->State;
     this->Blocked.Clear();
     this->ForgetWatches();
+    this->PartsValid = false; // (rebuilt when next asked for)
     std::fill(this->AdjacentCount.begin(), this->AdjacentCount.end(), 0);
     for (int64_t t = 0; t < this->Mesh.GetNumberOfTriangleIds(); ++t)
     {
@@ -925,7 +930,56 @@ private:
   const double* Projected0 = nullptr; // a point of the plane of the triangle tested
 
   bool CanAdd(Id a, Id b, Id c) const;
-  int64_t Add(Id a, Id b, Id c, uint8_t origin);
+  // Add the triangle (a, b, c); `across`: the triangle across the front edge it is built on.
+  int64_t Add(Id a, Id b, Id c, uint8_t origin, int64_t across = -1);
+
+  // Handles (ours). A triangle that puts two different front loops of one edge-connected part on
+  // one loop -- at a front vertex it pinches, or at a vertex where it merges two fans -- adds a
+  // handle to the surface. That is how the front closes around the tube of a torus (a loop around
+  // the tube meets the other one), but on genus-0 samples the front also made such triangles
+  // where it met itself across a layer of noise, a second sampling of the surface or a fold of
+  // wrong normals. When one of the two loops is a hole (short, as vtkLocalOptimumGrowth's step 4
+  // defines it) such a triangle does not close around a tube, it jumps across the surface: it is
+  // refused (KeepsGenus), and the hole is closed on its own. A triangle between two longer loops
+  // is made: a loop around a tube shrinks as the front goes on (the caps of a tube sampled by a
+  // few points around), so deferring it lost the true handles of coarse samplings.
+  //
+  // The edge-connected parts: a union-find over the triangle ids. A new triangle joins the part
+  // across the front edge it is built on, and the parts at its joints (FindJoints); an ear's other
+  // edge lies on the same loop, hence in the same part. Rebuilt when triangles are removed.
+  pcs::DisjointSets<int64_t> Parts;
+  bool PartsValid = true;
+  void RebuildParts();
+  int64_t PartOf(Id tail, Id head)
+  {
+    if (!this->PartsValid)
+    {
+      this->RebuildParts();
+    }
+    return this->Parts.Find(this->Mesh.FindTriangle(tail, head));
+  }
+  // The pairs of front half-edges that the triangle v would put on one loop: at a vertex whose two
+  // edges of v are glued to two different fans of the vertex (a merge), and at a front vertex
+  // that v only touches (a pinch: each fan of the vertex against a front edge v is glued to).
+  struct Joint
+  {
+    Id Tail0, Head0, Tail1, Head1;
+    bool Pinch;
+  };
+  std::vector<Joint> Joints;
+  Id JointsOf[3] = { None, None, None }; // the triangle of Joints (State JointsState)
+  uint64_t JointsState = 0;
+  void FindJoints(const Id v[3]);
+  // Are the front half-edges a->b and c->d on two loops (the walk NextBoundaryVertex, which
+  // turns around a vertex through one fan), one of them short: at most HoleEdges edges, or
+  // shorter than 4 pi HoleSpacing (the loop around a tube of radius below 2 spacings, which no
+  // rule tells from a hole; vtkLocalOptimumGrowth's bound, its step 4, with its default
+  // MaximumHoleEdges)? Both loops are walked in step until one closes, or meets the other
+  // half-edge, or both are known not to be short: at most a short loop's length each.
+  static constexpr int64_t HoleEdges = 8;
+  bool JoinsHole(Id a, Id b, Id c, Id d) const;
+  // May the triangle (v0, v1, v2) be added: it joins no hole to another loop of its part?
+  bool KeepsGenus(Id v0, Id v1, Id v2);
   void Progress();
 
   vtkCDTAdvancingFront* Self;
@@ -1671,7 +1725,8 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& global, bo
       {
         continue;
       }
-      if (this->IsValid(e0, e1, candidate->second, opposite, parameters))
+      if (this->IsValid(e0, e1, candidate->second, opposite, parameters) &&
+        this->KeepsGenus(e0, e1, candidate->second))
       {
         return candidate->second;
       }
@@ -1701,12 +1756,195 @@ bool Front::CanAdd(Id a, Id b, Id c) const
       !this->Mesh.IsInterior(a) && !this->Mesh.IsInterior(b) && !this->Mesh.IsInterior(c));
 }
 
-int64_t Front::Add(Id a, Id b, Id c, uint8_t origin)
+void Front::RebuildParts()
 {
+  this->PartsValid = true;
+  this->Parts.Reset(this->Mesh.GetNumberOfTriangleIds());
+  for (int64_t t = 0; t < this->Mesh.GetNumberOfTriangleIds(); ++t)
+  {
+    if (this->Mesh.IsTriangleRemoved(t))
+    {
+      continue;
+    }
+    const int32_t* v = this->Mesh.GetTriangle(t);
+    for (int i = 0; i < 3; ++i)
+    {
+      const int64_t twin = this->Mesh.FindTriangle(v[(i + 1) % 3], v[i]);
+      if (twin >= 0)
+      {
+        this->Parts.Union(t, twin);
+      }
+    }
+  }
+}
+
+void Front::FindJoints(const Id v[3])
+{
+  if (this->JointsState == this->State && std::equal(v, v + 3, this->JointsOf))
+  {
+    return; // (KeepsGenus found them for this triangle, and the mesh has not changed since)
+  }
+  std::copy_n(v, 3, this->JointsOf);
+  this->JointsState = this->State;
+  this->Joints.clear();
+  // A front half-edge the triangle is glued to (for the pinches).
+  Id glueTail = None, glueHead = None;
+  for (int i = 0; i < 3 && glueTail == None; ++i)
+  {
+    if (this->Mesh.IsBoundaryHalfEdge(v[(i + 1) % 3], v[i]))
+    {
+      glueTail = v[(i + 1) % 3];
+      glueHead = v[i];
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    // The triangle owns x->next and previous->x: it is glued at x along next->x and x->previous
+    // where those are front half-edges.
+    const Id x = v[i], next = v[(i + 1) % 3], previous = v[(i + 2) % 3];
+    if (this->Mesh.IsFree(x))
+    {
+      continue;
+    }
+    const bool in = this->Mesh.IsBoundaryHalfEdge(next, x);
+    const bool out = this->Mesh.IsBoundaryHalfEdge(x, previous);
+    if (in && out)
+    {
+      if (this->Mesh.NextBoundaryVertex(next, x) != previous) // two fans of x merged
+      {
+        this->Joints.push_back({ next, x, x, previous, false });
+      }
+    }
+    else if (!in && !out && glueTail != None)
+    {
+      Id fans[4];
+      const int count = std::min(this->Mesh.GetBoundaryOutVertices(x, fans, 4), 4);
+      for (int k = 0; k < count; ++k)
+      {
+        this->Joints.push_back({ glueTail, glueHead, x, fans[k], true });
+      }
+    }
+  }
+}
+
+bool Front::JoinsHole(Id a, Id b, Id c, Id d) const
+{
+  struct Walk
+  {
+    Id Tail, Head;
+    int64_t Edges;
+    double Perimeter;
+    bool Closed;
+  };
+  Walk walks[2] = { { a, b, 0, 0.0, false }, { c, d, 0, 0.0, false } };
+  const Id starts[2][2] = { { a, b }, { c, d } };
+  const double limit = 4.0 * vtkMath::Pi() * this->HoleSpacing;
+  auto isShort = [&](const Walk& w) { return w.Edges <= HoleEdges || w.Perimeter < limit; };
+  const int64_t steps = this->Mesh.GetNumberOfBoundaryHalfEdges() + 1;
+  for (int64_t step = 0; step < steps; ++step)
+  {
+    int walking = 0;
+    for (int i = 0; i < 2; ++i)
+    {
+      Walk& w = walks[i];
+      if (w.Closed || !isShort(w))
+      {
+        continue; // (a loop known not to be short: the other walk decides)
+      }
+      ++walking;
+      w.Perimeter += std::sqrt(Distance2(this->P(w.Tail), this->P(w.Head)));
+      ++w.Edges;
+      const Id next = this->Mesh.NextBoundaryVertex(w.Tail, w.Head);
+      w.Tail = w.Head;
+      w.Head = next;
+      if (next < 0 || (w.Tail == starts[1 - i][0] && w.Head == starts[1 - i][1]))
+      {
+        return false; // one loop (or not a loop: nothing claimed)
+      }
+      w.Closed = w.Tail == starts[i][0] && w.Head == starts[i][1];
+      if (w.Closed && isShort(w))
+      {
+        return true; // two loops (it closed without meeting the other), one short
+      }
+    }
+    if (walking == 0)
+    {
+      return false; // neither loop is short
+    }
+  }
+  return false;
+}
+
+bool Front::KeepsGenus(Id v0, Id v1, Id v2)
+{
+  if (this->Mesh.IsFree(v2))
+  {
+    return true; // (each edge but v1 v0 has a free end point: no joint)
+  }
+  const Id v[3] = { v0, v1, v2 };
+  this->FindJoints(v);
+  for (const Joint& joint : this->Joints)
+  {
+    if (this->PartOf(joint.Tail0, joint.Head0) != this->PartOf(joint.Tail1, joint.Head1))
+    {
+      continue; // two parts joined
+    }
+    if (this->JoinsHole(joint.Tail0, joint.Head0, joint.Tail1, joint.Head1))
+    {
+      this->RefusedForGood = false;
+      return false;
+    }
+  }
+  return true;
+}
+
+int64_t Front::Add(Id a, Id b, Id c, uint8_t origin, int64_t across)
+{
+  // The parts the triangle joins: across its front edge (for a seed, across every edge it is
+  // glued to) and at its joints other than pinches (a pinch joins no part: two fans at a vertex).
+  int64_t joined[8];
+  int count = 0;
+  if (across >= 0)
+  {
+    joined[count++] = across;
+  }
+  if (!this->Mesh.IsFree(c) || across < 0)
+  {
+    const Id v[3] = { a, b, c };
+    for (int i = 0; i < 3 && across < 0; ++i)
+    {
+      const int64_t twin = this->Mesh.FindTriangle(v[(i + 1) % 3], v[i]);
+      if (twin >= 0)
+      {
+        joined[count++] = twin;
+      }
+    }
+    this->FindJoints(v);
+    for (const Joint& joint : this->Joints)
+    {
+      if (!joint.Pinch && count + 2 <= 8)
+      {
+        joined[count++] = this->Mesh.FindTriangle(joint.Tail0, joint.Head0);
+        joined[count++] = this->Mesh.FindTriangle(joint.Tail1, joint.Head1);
+      }
+    }
+  }
   const int64_t t = this->Mesh.AddTriangle(a, b, c);
   if (t < 0)
   {
     return t;
+  }
+  if (this->PartsValid && this->Parts.GetNumberOfIds() == t)
+  {
+    this->Parts.Add();
+    for (int k = 0; k < count; ++k)
+    {
+      this->Parts.Union(t, joined[k]);
+    }
+  }
+  else
+  {
+    this->PartsValid = false; // (triangles made or removed outside the front)
   }
   ++this->State;
   this->Origin.push_back(origin);
@@ -1783,12 +2021,16 @@ bool Front::Advance(const Parameters& parameters, bool relaxed, uint8_t origin)
       continue; // tried since the last change (near it), in vain
     }
     // The new triangle traverses the edge the other way: (b, a, x).
-    const Id opposite = this->Mesh.OppositeVertex(a, b);
+    const int64_t across = this->Mesh.FindTriangle(a, b);
+    const int32_t* triangle = this->Mesh.GetTriangle(across);
+    const Id opposite = triangle[0] != a && triangle[0] != b
+      ? triangle[0]
+      : (triangle[1] != a && triangle[1] != b ? triangle[1] : triangle[2]);
     const Id x = this->BestThirdPoint(b, a, opposite, parameters, relaxed);
     this->OutOfWork = this->Work > this->WorkBudget;
     if (x != None)
     {
-      this->Add(b, a, x, origin);
+      this->Add(b, a, x, origin, across);
     }
     else
     {
@@ -1859,13 +2101,13 @@ bool Front::Seed(Id p, const Parameters& parameters)
       }
       ++examined;
       const Id x = candidate.second;
-      if (this->IsValid(p, q, x, None, atEdge))
+      if (this->IsValid(p, q, x, None, atEdge) && this->KeepsGenus(p, q, x))
       {
         this->Add(p, q, x, 0);
         ++this->NumberOfSeeds;
         return true;
       }
-      if (this->IsValid(q, p, x, None, atEdge))
+      if (this->IsValid(q, p, x, None, atEdge) && this->KeepsGenus(q, p, x))
       {
         this->Add(q, p, x, 0);
         ++this->NumberOfSeeds;
@@ -3146,6 +3388,7 @@ int vtkCDTAdvancingFront::RequestData(
     bins,
     mesh);
   front.SetEdgeReachCellSize(2.0 * strict.Radius);
+  front.HoleSpacing = meanSpacing;
   front.WorkBudget =
     static_cast<uint64_t>(std::max(MinimumWork, MaximumWorkPerPoint * static_cast<double>(usable)));
   for (Id p = 0; p < local && !front.Aborted && !front.OutOfWork; ++p)

@@ -144,6 +144,24 @@
  *   fills 11 to 26 mean spacings long crossed the camel sample with PCA normals, 3.5 mean
  *   spacings off the surface). Note that II.D.1 ignores a point whose normal disagrees with one
  *   of the vertex normals (Fig. 3b), so such a triangle is checked by II.D.2 mainly.
+ * - Handles (ours). A triangle that joins two different front loops of one connected part (it
+ *   pinches a front vertex of the other loop, or merges two fans of a vertex) adds a handle. The
+ *   front closes around the tube of a torus that way, but on genus-0 clouds it also did so where
+ *   it met itself across noise, a second sampling of the surface or a fold of wrong normals, and
+ *   the mesh came out closed and manifold with the wrong genus, which nothing flags: the unit
+ *   sphere sampled twice, 10,000 random points each, 0.1 mean spacings apart, genus 1; a sphere
+ *   whose density grows 1,000-fold from pole to pole, genus 1; a cube and a cone with estimated
+ *   normals, genus 1 and 7. Such a triangle is refused when one of the two loops is a hole, at
+ *   most 8 edges or shorter than 4 pi mean spacings (vtkLocalOptimumGrowth's rule, its step 4;
+ *   a loop around a tube of radius below 2 spacings cannot be told from a hole), and the hole is
+ *   closed on its own: genus 0, 0, 0 and 4 on those clouds. A triangle between two longer loops
+ *   is made when the front finds it: deferred until the front stopped, it lost the true handles
+ *   of coarse samplings (the loops around a thin tube shrink and close as the front goes on), so
+ *   the handles made where the front meets itself across a thick layer of noise remain (Gaussian
+ *   noise of 0.3 mean spacings on 10^5 points of a sphere: genus 352 before, 224 after).
+ *   CGAL's vertex sets of genus 1 and 2 (knot1, knot2, eight, double-torus-3-holes) keep their
+ *   genus; its turbine (genus 11) comes out with 9 handles instead of 11 (Benchmarks/results/
+ *   cdt.md, "False handles").
  * - Manifold result: pinches left when the fronts stop are undone (at such a vertex the
  *   triangles of all fans but the largest are removed, `NumberOfRemovedTriangles`) and the holes
  *   this opens are filled again with the III.C rules, pinches no longer allowed. The output has

@@ -29,6 +29,10 @@
   more clouds it leaves a crack along an arc whose fills are all slivers (18 and 20 boundary
   edges before the loop closer peeled every triangle across such a loop); closed, manifold,
   genus 0, every point used, 2V - 4 triangles.
+- No false handle (issue 6): the unit sphere sampled twice, 10,000 random points each, the
+  second sampling 0.1 mean spacings farther out. The front joined a small hole to the rest of the
+  front across the two layers: closed and manifold, but genus 1. Now closed, manifold, genus 0,
+  every point used, 2V - 4 triangles.
 - Estimated normals on rows that bend with the surface (issue 6, the rings of dense points
   around the camel's body): a capsule sampled as jittered rings 7 ring spacings apart. At most
   2 % of the ring normals more than 30 degrees off the known ones (45 of 304 before the planes of
@@ -290,6 +294,32 @@ for count, seed in ((400, 13), (800, 4), (400, 12), (800, 12)):
           "%s manifold" % label)
     check(summary["Genus"] == 0, "%s genus 0" % label)
     check(summary["NumberOfTriangles"] == 2 * len(arcs) - 4, "%s: 2V - 4 triangles" % label)
+
+# No false handle (issue 6): the unit sphere sampled twice, 10,000 random points each, the second
+# sampling scaled by 1 + 0.1 h (h = sqrt(4 pi / 20,000), the mean spacing: a registration error of
+# a tenth of a spacing). The front met itself across the two layers and joined a small hole to
+# the rest of the front: the mesh was closed and manifold with genus 1 (40,000 triangles). The
+# triangles that join a hole to another loop of its part are refused, and the hole is closed on
+# its own: closed, manifold, genus 0, every point used, 2V - 4 triangles.
+layer_rng = np.random.default_rng(5)
+layers = [layer_rng.normal(size=(10000, 3)) for _ in range(2)]
+layers = [layer / np.linalg.norm(layer, axis=1)[:, None] for layer in layers]
+layers[1] *= 1 + 0.1 * np.sqrt(4 * np.pi / 20000)
+double_layer = np.vstack(layers)
+front = vtkCDTAdvancingFront()
+front.SetInputData(cloud(double_layer))
+front.Update()
+q = quality_of(front.GetOutput())
+summary = {k: int(field(q, k)) for k in ("NumberOfTriangles", "NumberOfBoundaryEdges",
+                                         "NumberOfNonManifoldEdges", "NumberOfNonManifoldVertices",
+                                         "Genus")}
+print("double layer:", summary, "unused", front.GetNumberOfUnusedPoints())
+check(summary["NumberOfBoundaryEdges"] == 0, "double layer closed")
+check(summary["NumberOfNonManifoldEdges"] == 0 and summary["NumberOfNonManifoldVertices"] == 0,
+      "double layer manifold")
+check(summary["Genus"] == 0, "double layer genus 0 (no false handle)")
+check(front.GetNumberOfUnusedPoints() == 0, "double layer: every point used")
+check(summary["NumberOfTriangles"] == 2 * len(double_layer) - 4, "double layer: 2V - 4 triangles")
 
 # Estimated normals on rows that bend with the surface: a capsule (radius 6, axis z) sampled as 8
 # rings of 38 points (spacing 1 along a ring) 7 apart, each point moved along the axis by up to

@@ -433,7 +433,13 @@ public:
    * mean spacing (so at most twice the mean spacing, the bound used before it was made local).
    * Where the sampling is denser than the mean (mesh vertices at details), the bound shrinks with
    * the triangles and so does the neighbourhood each II.D test visits; sparser parts keep the
-   * global bound. A value > 0 is one global bound. Range [0, VTK_DOUBLE_MAX].
+   * global bound, but a triangle whose three vertices have local spacings (the median used by
+   * the automatic NeighborhoodRadius) of at least 2 mean spacings also reaches the surface under
+   * it: its bound is at least its reach (largest distance of a vertex to its centroid) times the
+   * sine of the largest angle between a vertex normal and its normal, the height of the
+   * vertices' tangent planes over it (on a cloud whose density varies by 10^3-10^4, the large
+   * triangles of the sparse part otherwise missed the points under them: handles and holes). A
+   * value > 0 is one global bound. Range [0, VTK_DOUBLE_MAX].
    */
   vtkSetClampMacro(MaximumRayDistance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumRayDistance, double);

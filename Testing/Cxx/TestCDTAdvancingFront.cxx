@@ -905,6 +905,16 @@ int TestCDTAdvancingFront(int, char*[])
   const Cloud jump = TwoDensitySphere(6000, 300, 7);
   failures += TestClosed("sphere, density jump 20, input normals", jump, true, 0) ? 0 : 1;
   failures += TestClosed("sphere, density jump 20, PCA normals", jump, false, 0) ? 0 : 1;
+  // Density gradients of 10^3 and 10^4 pole to pole (spacings 32 and 100 times apart): closed
+  // with genus 0. With a ray bound of twice the mean spacing the large triangles of the sparse
+  // part did not see the points under them (10^4: 4 and 6 boundary edges; other draws handles).
+  for (const auto& gradient : { std::make_pair(3.45, "10^3"), std::make_pair(4.6, "10^4") })
+  {
+    const Cloud cloud = GradientSphere(20000, gradient.first, 9);
+    const std::string label = std::string("sphere, density gradient ") + gradient.second;
+    failures += TestClosed(label + ", input normals", cloud, true, 0) ? 0 : 1;
+    failures += TestClosed(label + ", PCA normals", cloud, false, 0) ? 0 : 1;
+  }
   failures += TestClosed("torus 4000, input normals", Torus(4000, 4), true, 1) ? 0 : 1;
   failures += TestClosed("torus 4000, PCA normals", Torus(4000, 5), false, 1) ? 0 : 1;
   // A sharp rim (normals 120 and 100 degrees apart across it): the front stops there (II.C.1),

@@ -165,6 +165,9 @@ struct Parameters
   double CosBase;
   int MaxHoleEdges;
   bool Relax;
+  // Constraint 2 follows the sampling's anisotropy (Grower::AnisotropyFactor):
+  // vtkLocalOptimumGrowth only; vtkGreedySurfaceTriangulation's growth keeps the paper's ratios.
+  bool FollowAnisotropy;
 };
 
 // The internal form of the constraints (cosines, tangent) for K neighbours per point.
@@ -183,6 +186,7 @@ Parameters MakeParameters(int k, const pcs::FrontGrowthParameters& constraints)
   parameters.CosBase = std::cos(vtkMath::RadiansFromDegrees(constraints.MaximumBaseAngle));
   parameters.MaxHoleEdges = constraints.MaximumHoleEdges;
   parameters.Relax = constraints.RelaxConstraints;
+  parameters.FollowAnisotropy = false;
   return parameters;
 }
 
@@ -209,6 +213,13 @@ public:
   }
 
   void Run();
+  // Whether constraint 2 and the seeds follow the sampling's anisotropy (AnisotropyFactor): only
+  // on clouds sampled in scan lines, i.e. when at least half of a regular subsample of the points
+  // (every 8th internal id) lie on lines next to lines (LineAnisotropy widens there). Elsewhere the
+  // paper's ratios alone: on mesh vertex sets with a few rows of points (CGAL's camel, man, rotor)
+  // the widening there left 20-30 % more boundary edges (Benchmarks/results/local_optimum.md,
+  // task loganiso), and it costs a test per expanded edge.
+  void DecideAnisotropy(bool allowed);
   // The expansion alone (steps 3 and 4 of the class documentation: no hole filling) from the front
   // of `mesh` (when expandFront), which the grower takes over with its triangle ids; then from
   // seeds at the points of SeedOrder when the front has stalled.
@@ -352,6 +363,13 @@ private:
   // normal and its neighbours' (constraint 1), or -2 when invalid.
   double EarScore(Id v, Id u, Id w, double cosNormal, double minimumRatio);
   bool EdgeRatiosOk(Id x, Id y, Id z, double minimum) const;
+  double AnisotropyFactor(Id a, Id b, Id y, double ab2) const;
+  double LineAnisotropy(Id v) const;
+  double PointAnisotropy(Id v, Id& off) const;
+  double ComputePointAnisotropy(Id v, Id& off) const;
+  // Per point, computed when first needed: PointAnisotropy and its off-line neighbour.
+  mutable std::vector<std::pair<float, Id>> AnisotropyCache;
+  double SamplingFactor(double elongation, double anisotropy) const;
   double RatioLength2(Id u, Id v, double length2) const
   {
     return this->Stretched.empty() || !(this->Stretched[u] | this->Stretched[v])
@@ -385,7 +403,7 @@ private:
   const double* Stretch = nullptr; // 3 per point, or nullptr
   std::vector<uint8_t> Stretched; // per point: a stretch not zero (empty: none anywhere)
   const int K;
-  const Parameters Par;
+  Parameters Par;
   vtkAlgorithm* Algorithm;
 
   std::vector<Item> Queue;
@@ -844,6 +862,132 @@ bool Grower::EdgeRatiosOk(Id x, Id y, Id z, double minimum) const
   return shortest >= minimum * minimum * longest;
 }
 
+// The factor f >= 1 that widens constraint 2 to [k1 / f, k2 f] (Euclidean lengths) for the
+// expansion of the edge a-b of the triangle (a, b, y) (`ab2` its squared length): 1, unless that
+// triangle is more elongated than constraint 2 allows (shortest edge below k1 times the longest,
+// elongation E = longest / shortest > 1 / k1) and so is the sampling at a and b (LineAnisotropy A
+// of both above 9 / 4): then f = 4/3 k1 min(E, A), the new triangle may be as elongated as the
+// one across the edge and as the sampling, with a margin of 4/3, but not beyond the first
+// relaxation level (f at most 2). Scan lines A = 3 to 6 times denser along than across (below 5
+// to 6 the scan-line stretch of step 1 does not see them) have every triangle between two lines
+// with an edge along a line A times shorter than its others: with the paper's ratios alone every
+// front edge waited for the relaxed stages, and an edge across the lines skipped a line's point
+// (too close to it) for the next one, leaving that point to a sliver along the line, standing
+// across the surface, whose edges no front could expand (the front broke into thousands of
+// pieces). A candidate admitted only by the widened bounds must lie on such lines too.
+double Grower::AnisotropyFactor(Id a, Id b, Id y, double ab2) const
+{
+  if (!this->Par.FollowAnisotropy)
+  {
+    return 1.0;
+  }
+  const double ay2 = Distance2(this->P3(a), this->P3(y));
+  const double by2 = Distance2(this->P3(b), this->P3(y));
+  const double shortest2 = std::min({ ab2, ay2, by2 }), longest2 = std::max({ ab2, ay2, by2 });
+  const double k1 = this->Par.MinRatio;
+  if (!(shortest2 < k1 * k1 * longest2))
+  {
+    return 1.0;
+  }
+  const double rho = std::sqrt(shortest2 / longest2);
+  return this->SamplingFactor(
+    rho > 0.0 ? 1.0 / rho : 6.0, std::min(this->LineAnisotropy(a), this->LineAnisotropy(b)));
+}
+
+// f = 4/3 k1 min(elongation, anisotropy), within [1, 2] (see AnisotropyFactor).
+double Grower::SamplingFactor(double elongation, double anisotropy) const
+{
+  const double k1 = this->Par.MinRatio;
+  return std::min(2.0, std::max(1.0, (4.0 / 3.0) * k1 * std::min(elongation, anisotropy)));
+}
+
+// The scan-line anisotropy at v: PointAnisotropy of v, and when it is above 9/4 (SamplingFactor
+// would widen), at most that of its nearest point off its line: lines next to lines, a scan's
+// pattern. A lone dense row among scattered points (an arc, a feature curve of a mesh) is not
+// one: there the widening left more boundary edges (arc spheres of
+// Benchmarks/run_arc_spheres.py, LOG: 721 -> 945 over 40 clouds with v alone).
+double Grower::LineAnisotropy(Id v) const
+{
+  Id off = -1;
+  const double own = this->PointAnisotropy(v, off);
+  if (this->SamplingFactor(6.0, own) == 1.0 || off < 0)
+  {
+    return own;
+  }
+  Id unused = -1;
+  const double across = std::min(own, this->PointAnisotropy(off, unused));
+  // The pattern of the region, not of a close pair: at least half of v's K nearest are on lines
+  // too (as pcs::AddOffLineNeighbors' minimumShare).
+  const Id* nb = this->Neighbors(v);
+  int onLines = 0, count = 0;
+  for (int j = 0; j < this->K && nb[j] >= 0; ++j, ++count)
+  {
+    onLines += this->SamplingFactor(6.0, this->PointAnisotropy(nb[j], unused)) > 1.0 ? 1 : 0;
+  }
+  return 2 * onLines >= count ? across : 1.0;
+}
+
+// The sampling's anisotropy at v: the distance to its nearest neighbour off the line through v and
+// its nearest neighbour (more than 45 degrees from it; `off` gets it, else -1), over the distance
+// to that nearest neighbour; when every neighbour is on that line, the farthest's distance.
+double Grower::PointAnisotropy(Id v, Id& off) const
+{
+  if (this->AnisotropyCache.empty())
+  {
+    this->AnisotropyCache.assign(static_cast<size_t>(this->N), std::make_pair(-1.0f, Id(-1)));
+  }
+  auto& cached = this->AnisotropyCache[v];
+  if (cached.first < 0.0f)
+  {
+    cached.first = static_cast<float>(this->ComputePointAnisotropy(v, cached.second));
+  }
+  off = cached.second;
+  return cached.first;
+}
+
+double Grower::ComputePointAnisotropy(Id v, Id& off) const
+{
+  off = -1;
+  const Id* nb = this->Neighbors(v);
+  if (nb[0] < 0)
+  {
+    return 1.0;
+  }
+  double e[3];
+  Sub(this->P3(nb[0]), this->P3(v), e);
+  const double nearest2 = Dot(e, e);
+  double w2 = nearest2;
+  for (int j = 1; j < this->K && nb[j] >= 0; ++j)
+  {
+    double w[3], c[3];
+    Sub(this->P3(nb[j]), this->P3(v), w);
+    Cross(w, e, c);
+    const double along = Dot(w, e);
+    w2 = Dot(w, w);
+    if (Dot(c, c) > along * along)
+    {
+      off = nb[j];
+      break;
+    }
+  }
+  return nearest2 > 0.0 ? std::sqrt(w2 / nearest2) : 1.0;
+}
+
+void Grower::DecideAnisotropy(bool allowed)
+{
+  this->Par.FollowAnisotropy = false;
+  if (!allowed || this->N < 3)
+  {
+    return;
+  }
+  Id sampled = 0, onLines = 0;
+  for (Id v = 0; v < this->N; v += 8, ++sampled)
+  {
+    onLines += this->SamplingFactor(6.0, this->LineAnisotropy(v)) > 1.0 ? 1 : 0;
+  }
+  this->Par.FollowAnisotropy = 2 * onLines >= sampled;
+}
+
 //------------------------------------------------------------------------------------------------
 int64_t Grower::Commit(Id x, Id y, Id z)
 {
@@ -1050,6 +1194,11 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
   const double minimum =
     level == 0 ? this->Par.MinRatio : (level == 1 ? 0.5 * this->Par.MinRatio : 0.0);
   const double maximum = level == 0 ? this->Par.MaxRatio : 2.0 * this->Par.MaxRatio;
+  // On an anisotropic sampling the Euclidean lengths may also meet the bounds widened by the
+  // elongation of the triangle across the edge (AnisotropyFactor).
+  const double widen = this->AnisotropyFactor(a, b, y, d2);
+  const double wideMinimum = std::min(minimum, this->Par.MinRatio / widen);
+  const double wideMaximum = std::max(maximum, widen * this->Par.MaxRatio);
   const double* a2 = this->P2(a);
   const double* b2 = this->P2(b);
   this->Admissible.clear();
@@ -1087,8 +1236,14 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
     const double la2 = Dot(ac, ac), lb2 = Dot(bc, bc);
     const double ra2 = this->RatioLength2(a, c, la2), rb2 = this->RatioLength2(b, c, lb2);
     const bool ear = c == n || c == p;
-    if ((!ear && (ra2 < minimum * minimum * rd2 || rb2 < minimum * minimum * rd2)) ||
-      ra2 > maximum * maximum * rd2 || rb2 > maximum * maximum * rd2)
+    auto within = [ear](double l1, double l2, double base2, double lower, double upper)
+    {
+      return (ear || (l1 >= lower * lower * base2 && l2 >= lower * lower * base2)) &&
+        l1 <= upper * upper * base2 && l2 <= upper * upper * base2;
+    };
+    if (!within(ra2, rb2, rd2, minimum, maximum) &&
+      !(widen > 1.0 && within(la2, lb2, d2, wideMinimum, wideMaximum) &&
+        this->SamplingFactor(6.0, this->LineAnisotropy(c)) > 1.0))
     {
       continue;
     }
@@ -1379,9 +1534,10 @@ double Grower::CloudSpacing()
 // |P1P3| + |P2P3| under constraints 2 and 3; the next neighbour as P2 when no P3 exists.
 bool Grower::TrySeed(Id p1, bool relaxed)
 {
-  const double minimum = relaxed ? 0.5 * this->Par.MinRatio : this->Par.MinRatio;
-  const double maximum = relaxed ? 2.0 * this->Par.MaxRatio : this->Par.MaxRatio;
+  const double strictMinimum = relaxed ? 0.5 * this->Par.MinRatio : this->Par.MinRatio;
+  const double strictMaximum = relaxed ? 2.0 * this->Par.MaxRatio : this->Par.MaxRatio;
   const Id* nb = this->Neighbors(p1);
+  bool firstFree = true;
   for (int j = 0; j < this->K; ++j)
   {
     const Id p2 = nb[j];
@@ -1399,6 +1555,17 @@ bool Grower::TrySeed(Id p1, bool relaxed)
     Sub(x2, x1, e);
     const double d2 = Dot(e, e), d = std::sqrt(d2);
     const double rd2 = this->RatioLength2(p1, p2, d2);
+    // With the nearest free neighbour as P2, constraint 2 widened by the sampling's anisotropy
+    // at P1 and P2 (SamplingFactor): on scan lines 3 to 6 times denser along than across, that
+    // neighbour, on P1's line, has no P3 within [k1 d, k2 d] (the next line is A d away), and the
+    // farther P2 along the line made a seed over a line's point (a sliver, or an edge skipping
+    // it) from which no front grew.
+    const double widen = this->Par.FollowAnisotropy && firstFree
+      ? this->SamplingFactor(this->LineAnisotropy(p1), this->LineAnisotropy(p2))
+      : 1.0;
+    firstFree = false;
+    const double minimum = std::min(strictMinimum, this->Par.MinRatio / widen);
+    const double maximum = std::max(strictMaximum, widen * this->Par.MaxRatio);
     const Id centers[2] = { p1, p2 };
     this->CollectVertices(centers, 2);
     Id best = -1;
@@ -2791,6 +2958,7 @@ int vtkLocalOptimumGrowth::RequestData(
   constraints.RelaxConstraints = this->RelaxConstraints != 0;
   Grower grower(x.data(), n, knn, MakeParameters(k, constraints), this);
   grower.SetStretch(stretch);
+  grower.DecideAnisotropy(true);
   {
     // Seeds: the points in decreasing lexicographic order (internal ids; outliers left out).
     std::vector<Id> internal(static_cast<size_t>(numberOfPoints), -1);

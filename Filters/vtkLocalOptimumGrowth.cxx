@@ -307,6 +307,7 @@ private:
   void InsertOrphans();
   bool InsertOrphan(Id q);
   bool FillHole(const std::vector<Id>& frontLoop);
+  bool FoldsOntoMesh(const std::vector<Id>& triangles, bool allLoopEdges) const;
   bool FillNarrowLoop(const std::vector<Id>& frontLoop);
   void GatherAround(const std::vector<Id>& loop, std::vector<Id>& around);
   void OrientComponents();
@@ -1932,6 +1933,54 @@ bool Grower::RetryDeferred()
 // projection is unambiguous, 2D greedy triangulation with the unused points inside). The
 // triangles are kept only when they all fit the mesh (no edge with a third triangle, no vertex
 // with a second fan) and face the side of the triangles around the loop.
+// Does the fill lie folded back onto the mesh: a fill triangle in the same plane as the mesh
+// triangle across one of its edges (exact Orient3D) and on the same side of that edge (exact
+// Orient2D in the coordinate plane where the fill triangle's projection is largest), so that
+// the two overlap? Such a fill covers the mesh with a second layer, back to back with it: the
+// border loop of a small flat patch (a planar scan, a face of a box) was "closed" that way into a
+// component enclosing no volume, and CAD vertex sets kept such layers on their flat faces
+// (turbine: 213 pairs of overlapping coplanar triangles; Benchmarks/results/local_optimum.md,
+// "Fills folded back onto flat faces"). With `allLoopEdges` the fill counts as folded only when
+// it folds at every loop edge it shares with the mesh in one plane (the whole fill is a second
+// layer), otherwise at any one: the small loops of step 6 (FillHole) include holes next to a fold
+// of the growth itself (a latitude-circle sphere: one of six edges), where the fill closes the
+// surface. Only exact coplanarity counts: a fill bent by any angle is left to the fills' rules.
+bool Grower::FoldsOntoMesh(const std::vector<Id>& triangles, bool allLoopEdges) const
+{
+  int coplanar = 0, folded = 0;
+  for (size_t t = 0; t + 2 < triangles.size(); t += 3)
+  {
+    const Id* v = &triangles[t];
+    for (int i = 0; i < 3; ++i)
+    {
+      const Id a = v[i], b = v[(i + 1) % 3], c = v[(i + 2) % 3];
+      const Id o = this->Mesh.OppositeVertex(b, a);
+      if (o < 0 || o == c || P::Orient3D(this->P3(a), this->P3(b), this->P3(c), this->P3(o)) != 0)
+      {
+        continue;
+      }
+      ++coplanar;
+      double ab[3], ac[3], n[3];
+      Sub(this->P3(b), this->P3(a), ab);
+      Sub(this->P3(c), this->P3(a), ac);
+      Cross(ab, ac, n);
+      int drop = 0;
+      for (int k = 1; k < 3; ++k)
+      {
+        drop = std::fabs(n[k]) > std::fabs(n[drop]) ? k : drop;
+      }
+      const int u = (drop + 1) % 3, w = (drop + 2) % 3;
+      const double a2[2] = { this->P3(a)[u], this->P3(a)[w] };
+      const double b2[2] = { this->P3(b)[u], this->P3(b)[w] };
+      const double c2[2] = { this->P3(c)[u], this->P3(c)[w] };
+      const double o2[2] = { this->P3(o)[u], this->P3(o)[w] };
+      const int sideC = P::Orient2D(a2, b2, c2);
+      folded += sideC != 0 && sideC == P::Orient2D(a2, b2, o2) ? 1 : 0;
+    }
+  }
+  return folded > 0 && (!allLoopEdges || folded == coplanar);
+}
+
 bool Grower::FillHole(const std::vector<Id>& frontLoop)
 {
   const size_t m = frontLoop.size();
@@ -1999,6 +2048,10 @@ bool Grower::FillHole(const std::vector<Id>& frontLoop)
     {
       return false;
     }
+  }
+  if (this->FoldsOntoMesh(result.Triangles, true))
+  {
+    return false;
   }
   std::vector<int64_t> added;
   if (!this->Mesh.AddTriangles(result.Triangles.data(), result.Triangles.size() / 3, added))
@@ -2108,7 +2161,8 @@ bool Grower::FillNarrowLoop(const std::vector<Id>& frontLoop)
         2.0 * spacing,
         std::numeric_limits<double>::infinity(),
         nearSomePoint,
-        triangles))
+        triangles) ||
+    this->FoldsOntoMesh(triangles, false))
   {
     return false;
   }

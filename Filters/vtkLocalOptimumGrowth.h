@@ -223,7 +223,16 @@
  *    -> 20; random tori not closed over every point 1 of 120 -> 0; Hausdorff distances unchanged
  *    (Benchmarks/results/local_optimum.md). Filling a loop never changes the genus: the handles
  *    are made by bridges during the growth (step 4; the armadillo and the diplodocus are genus 0
- *    now, the camel keeps one handle of three, its loops open or closed).
+ *    now, the camel keeps one handle of three, its loops open or closed). Neither fill may fold
+ *    back onto the mesh: a fill triangle in the plane of the mesh triangle across a loop edge
+ *    (exact Orient3D) and on the same side of that edge (exact Orient2D) overlaps it. The border
+ *    of a small flat patch (30 to 200 points of a planar scan, a box's face) was filled that
+ *    way into a second layer back to back with the patch, a closed component enclosing no
+ *    volume, and CAD vertex sets kept such layers on their flat faces (turbine: 213 edges with
+ *    both triangles on one side, 13 now; its boundary edges 635 -> 835, Hausdorff unchanged). A
+ *    narrow-loop fill is refused at the first such edge; a small-loop fill only when it folds at
+ *    every loop edge it shares a plane with (a hole beside a fold of the growth itself, one edge
+ *    of six on a sphere sampled on latitude circles, is still closed).
  * 7. Folds (added): an edge whose two triangles bend by more than MaximumNormalAngle (the
  *    bound of constraint 1) is flipped when the other diagonal of its quadrilateral is not in the
  *    mesh and is shorter, or joins two K nearest neighbours (one is among the other's: an edge

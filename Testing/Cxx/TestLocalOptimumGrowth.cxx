@@ -12,6 +12,8 @@
 //   by the narrow-loop fill (closed, genus 0, 2V - 4 triangles), those of the wide one (4.79
 //   spacings) and of both with MaximumHoleEdges 0 left open (two loops, Euler characteristic 0);
 // - a planar 20 x 20 grid (cocircular and collinear points everywhere): 722 triangles, one loop;
+// - small flat patches (30-200 random points on a square): open, no edge with both triangles on
+//   one side (the border loop was once filled back onto the patch: a closed flat double layer);
 // - the surface of a box sampled on an integer grid (12 x 9 x 7 points, 406, points exactly on
 //   its edges), holes not closed: every point used, six disks, every triangle in a face;
 // - a tilted plane scanned in lines of an integer lattice: no zero-area triangle, manifold,
@@ -420,6 +422,66 @@ bool TestPlanarGrid()
   PCS_CHECK(q.NonManifoldEdges == 0 && q.NonManifoldVertices == 0 && q.Orientation == 1.0,
     "grid manifold and oriented");
   PCS_CHECK(q.Degenerate == 0, "no degenerate triangle");
+  return true;
+}
+
+// Small flat patches (random points on the unit square, z = 0): the border loop is not a hole.
+// A fill of it lay in the patch's plane, folded back onto the patch, and closed the patch into
+// a component enclosing no volume (two layers back to back). An open patch keeps at least one
+// boundary loop, and no edge has its two triangles on the same side of it.
+bool TestSmallFlatPatches()
+{
+  for (int n : { 30, 60, 100, 200 })
+  {
+    for (unsigned seed = 1; seed <= 5; ++seed)
+    {
+      std::mt19937_64 rng(seed);
+      std::uniform_real_distribution<double> unit(0.0, 1.0);
+      std::vector<double> xyz;
+      for (int i = 0; i < n; ++i)
+      {
+        const double x = unit(rng);
+        xyz.insert(xyz.end(), { x, unit(rng), 0.0 });
+      }
+      vtkNew<vtkLocalOptimumGrowth> growth;
+      growth->SetInputData(pcstest::MakeCloud(xyz));
+      growth->Update();
+      vtkPolyData* mesh = growth->GetOutput();
+      const Quality q = Measure(mesh);
+      const std::string what = "flat patch n " + std::to_string(n) + " seed " + std::to_string(seed);
+      PCS_CHECK(q.Triangles > 0 && q.BoundaryEdges > 0 && q.Loops >= 1,
+        what << ": open, got " << q.BoundaryEdges << " boundary edges, " << q.Loops << " loops");
+      // Both triangles of an edge on the same side of it (z = 0: the sign of a 2D cross product).
+      std::map<std::pair<vtkIdType, vtkIdType>, std::vector<vtkIdType>> across;
+      vtkNew<vtkIdList> cell;
+      for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+      {
+        mesh->GetCellPoints(c, cell);
+        for (int k = 0; k < 3; ++k)
+        {
+          const vtkIdType a = cell->GetId(k), b = cell->GetId((k + 1) % 3);
+          across[std::minmax(a, b)].push_back(cell->GetId((k + 2) % 3));
+        }
+      }
+      int sameSide = 0;
+      for (const auto& entry : across)
+      {
+        if (entry.second.size() != 2)
+        {
+          continue;
+        }
+        double a[3], b[3], c[3], d[3];
+        mesh->GetPoint(entry.first.first, a);
+        mesh->GetPoint(entry.first.second, b);
+        mesh->GetPoint(entry.second[0], c);
+        mesh->GetPoint(entry.second[1], d);
+        const double sc = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        const double sd = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+        sameSide += sc * sd > 0.0 ? 1 : 0;
+      }
+      PCS_CHECK(sameSide == 0, what << ": " << sameSide << " edges with both triangles on one side");
+    }
+  }
   return true;
 }
 
@@ -838,6 +900,7 @@ int TestLocalOptimumGrowth(int, char*[])
   ok = TestOpenPatch() && ok;
   ok = TestNarrowLoops() && ok;
   ok = TestPlanarGrid() && ok;
+  ok = TestSmallFlatPatches() && ok;
   ok = TestGridBox() && ok;
   ok = TestLatticeLines() && ok;
   ok = TestStallingScanLines() && ok;

@@ -90,10 +90,11 @@ int64_t RepresentPilesByFirst(Id* representative,
   {
     return 0;
   }
-  std::vector<Id> firstOfCopy(static_cast<size_t>(n), -1);
+  // In the pairs' own id type (int32_t for every filter today): half the memory of vtkIdType.
+  std::vector<PairId> firstOfCopy(static_cast<size_t>(n), -1);
   for (const auto& copy : pileCopies)
   {
-    firstOfCopy[copy.first] = static_cast<Id>(copy.second);
+    firstOfCopy[copy.first] = copy.second;
   }
   int64_t copies = 0;
   for (int64_t i = 0; i < n; ++i)
@@ -101,7 +102,7 @@ int64_t RepresentPilesByFirst(Id* representative,
     const Id r = representative[i];
     if (r >= 0 && firstOfCopy[r] >= 0)
     {
-      representative[i] = firstOfCopy[r];
+      representative[i] = static_cast<Id>(firstOfCopy[r]);
       copies += r == i ? 1 : 0;
     }
   }

@@ -2696,13 +2696,21 @@ int vtkCDTAdvancingFront::RequestData(
   std::vector<Id> inputId; // local id -> input id
   this->NumberOfSkippedPoints = pcs::ReadFiniteCoordinates(input->GetPoints(), all, inputId);
   const Id local = static_cast<Id>(inputId.size());
-  std::vector<double> xyz(3 * static_cast<size_t>(local));
-  for (Id k = 0; k < local; ++k)
+  std::vector<double> xyz;
+  if (this->NumberOfSkippedPoints == 0)
   {
-    std::copy_n(&all[3 * static_cast<size_t>(inputId[k])], 3, &xyz[3 * static_cast<size_t>(k)]);
+    xyz.swap(all); // every point is finite: local ids are input ids
   }
-  all.clear();
-  all.shrink_to_fit();
+  else
+  {
+    xyz.resize(3 * static_cast<size_t>(local));
+    for (Id k = 0; k < local; ++k)
+    {
+      std::copy_n(&all[3 * static_cast<size_t>(inputId[k])], 3, &xyz[3 * static_cast<size_t>(k)]);
+    }
+    all.clear();
+    all.shrink_to_fit();
+  }
   // Coordinates far from 1 in magnitude are scaled by a power of two (exact) so that the exact
   // predicates and the cross products neither overflow nor underflow; lengths are converted
   // back for the counts and the parameters are converted to the scaled units.

@@ -214,11 +214,17 @@ public:
 
   void Run();
   // Whether constraint 2 and the seeds follow the sampling's anisotropy (AnisotropyFactor): only
-  // on clouds sampled in scan lines, i.e. when at least half of a regular subsample of the points
-  // (every 8th internal id) lie on lines next to lines (LineAnisotropy widens there). Elsewhere the
-  // paper's ratios alone: on mesh vertex sets with a few rows of points (CGAL's camel, man, rotor)
-  // the widening there left 20-30 % more boundary edges (Benchmarks/results/local_optimum.md,
-  // task loganiso), and it costs a test per expanded edge.
+  // on clouds sampled in scan lines or on a regular grid, i.e. when at least a third of a regular
+  // subsample of the points (every 8th internal id) lie on lines next to lines (LineAnisotropy
+  // widens there). Elsewhere the paper's ratios alone: on mesh vertex sets with a few rows of
+  // points (CGAL's camel, man) the widening there left 20-30 % more boundary edges
+  // (Benchmarks/results/local_optimum.md, task loganiso), and it costs a test per expanded edge.
+  // Shares measured: CGAL's mesh vertex sets and real scans at most 26 % (turbine; radar 10 %,
+  // man 9 %, camel 3 %) but rotor (81 %); tori sampled on a regular (u, v) grid whose outer band
+  // has cells 2.8 to 3.2 times longer than wide (tube radius 0.45 to 0.54 of the ring's) 36 to
+  // 48 %: with half as the bound there, a cell's diagonal, sqrt(1 + A^2) times its short side,
+  // was left without its other half (its short side under d / 3) and the front made triangles
+  // skipping rows instead (task gridlog).
   void DecideAnisotropy(bool allowed);
   // The expansion alone (steps 3 and 4 of the class documentation: no hole filling) from the front
   // of `mesh` (when expandFront), which the grower takes over with its triangle ids; then from
@@ -986,7 +992,7 @@ void Grower::DecideAnisotropy(bool allowed)
   {
     onLines += this->SamplingFactor(6.0, this->LineAnisotropy(v)) > 1.0 ? 1 : 0;
   }
-  this->Par.FollowAnisotropy = 2 * onLines >= sampled;
+  this->Par.FollowAnisotropy = 3 * onLines >= sampled;
 }
 
 //------------------------------------------------------------------------------------------------

@@ -88,14 +88,22 @@
  *        ratios 3 to 5, 5,000 to 80,000 points, clean or with noise of a tenth of the spacing,
  *        one component and at most 70 boundary edges (one cloud keeps a closed tetrahedron of 4
  *        points besides). The widening (here and for the seeds, step 2) applies only to clouds
- *        sampled in scan lines: when at least half of the points of a regular subsample (every
- *        8th) are on lines next to lines. Applied wherever it could, it left 20-30 % more
- *        boundary edges on mesh vertex sets with a few rows of points (CGAL's camel 89 -> 108,
- *        man 373 -> 475); with the gate those are unchanged (3 and 9 % of their points on
- *        lines), and of the 21 standard clouds only rotor changes, a 600-point CAD vertex set
- *        with 81 % of its points on rows: 170 -> 223 boundary edges, Hausdorff 7.38 -> 7.36
- *        spacings. vtkGreedySurfaceTriangulation's growth (pcs::GrowFront) keeps the paper's
- *        ratios;
+ *        sampled in scan lines or on a regular grid: when at least a third of the points of a
+ *        regular subsample (every 8th) are on lines next to lines (ours). Applied wherever it
+ *        could, it left 20-30 % more boundary edges on mesh vertex sets with a few rows of points
+ *        (CGAL's camel 89 -> 108, man 373 -> 475); with the gate those are unchanged (3 and 9 %
+ *        of their points on lines; no CGAL vertex set or real scan of the standard clouds is
+ *        between 26 %, turbine, and 81 %), and of the 21 standard clouds only rotor changes, a
+ *        600-point CAD vertex set with 81 % of its points on rows: 170 -> 223 boundary edges,
+ *        Hausdorff 7.38 -> 7.36 spacings. A torus sampled on a regular (u, v) grid of n x n
+ *        points has cells (R + r cos v) / r times longer than wide; with a tube radius r of 0.45
+ *        to 0.54 times the ring's R, 36 to 48 % of its points are on such lines, and the cells
+ *        of its outer band, 2.8 to 3.2 times longer than wide, need the widening: the diagonal of
+ *        such a cell is more than 3 times its short side, which is then no candidate to complete
+ *        the cell, and the front made triangles skipping rows instead. With half as the bound
+ *        (before), 21 of 24 such tori (n = 24 to 72, r = 0.45 to 0.54) were not closed over every
+ *        point with genus 1, 0 now (Benchmarks/results/local_optimum.md, task gridlog).
+ *        vtkGreedySurfaceTriangulation's growth (pcs::GrowFront) keeps the paper's ratios;
  *    (3) the angles of (b, a, c) at a and at b are at most MaximumBaseAngle (paper: the
  *        projection of c falls on the edge, 90 degrees; default 120 here, since 90 leaves many
  *        front edges of a random sampling without any candidate);

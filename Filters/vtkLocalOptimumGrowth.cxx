@@ -55,6 +55,10 @@ namespace P = pcs::predicates;
 // Vertex ids are 32-bit, and so are the triangle ids of pcs::SurfaceMesh (about 2 per point).
 constexpr vtkIdType MaximumNumberOfPoints = 500000000;
 
+// Step 5: a separate piece of 2 to this many triangles (a closed polyhedron of up to 10 points)
+// is taken apart when its points can be inserted into the surface around it.
+constexpr int64_t SmallPieceTriangles = 16;
+
 //------------------------------------------------------------------------------------------------
 // Small vector helpers on double[3].
 inline void Sub(const double* a, const double* b, double* r)
@@ -311,7 +315,9 @@ private:
   void CompactDeferred();
   void FillHoles();
   void InsertOrphans();
-  bool InsertOrphan(Id q);
+  bool InsertOrphan(Id q, pcs::PointInsertionResult* record = nullptr);
+  std::vector<std::vector<std::array<Id, 3>>> SmallPieces();
+  void TakeApart(const std::vector<std::array<Id, 3>>& piece);
   bool FillHole(const std::vector<Id>& frontLoop);
   bool FoldsOntoMesh(const std::vector<Id>& triangles, bool allLoopEdges) const;
   bool FillNarrowLoop(const std::vector<Id>& frontLoop);
@@ -2222,9 +2228,10 @@ void Grower::FillHoles()
 // triangle that edge lacks. Points farther from the triangle than its longest edge are not on
 // the surface and stay unused. The new triangles (and any the kernel had to put back) are
 // registered like grown ones.
-bool Grower::InsertOrphan(Id q)
+bool Grower::InsertOrphan(Id q, pcs::PointInsertionResult* record)
 {
-  pcs::PointInsertionResult result;
+  pcs::PointInsertionResult local;
+  pcs::PointInsertionResult& result = record ? *record : local;
   const bool inserted =
     pcs::InsertFreePoint(this->Mesh, this->X, q, this->Neighbors(q), this->K, true, result);
   for (const auto& restored : result.Restored)
@@ -2291,6 +2298,195 @@ void Grower::InsertOrphans()
           ++this->Inserted;
         }
       }
+    }
+  }
+  // Then the other small separate pieces, one at a time (the smallest first): on noisy scans a
+  // seed planted among points the growth left in the noise layer grows a few triangles, which
+  // step 6 would close into a tiny polyhedron (a tetrahedron, a bipyramid) crossing the surface.
+  for (const auto& piece : this->SmallPieces())
+  {
+    this->TakeApart(piece);
+  }
+}
+
+// The separate pieces of 2 to SmallPieceTriangles triangles (no vertex shared with another
+// piece), smallest first, each as its triangles in the order of their ids.
+std::vector<std::vector<std::array<Id, 3>>> Grower::SmallPieces()
+{
+  const int64_t count = this->Mesh.GetNumberOfTriangleIds();
+  // The seed labels join every triangle grown from one seed (and the parts that met): one label
+  // among the triangles, one piece (the usual case, decided without the search below).
+  int32_t single = -1;
+  bool several = false;
+  for (int64_t t = 0; t < count && !several; ++t)
+  {
+    if (!this->Mesh.IsTriangleRemoved(t))
+    {
+      const int32_t label = this->TriangleLabel(t);
+      several = label < 0 || (single >= 0 && label != single);
+      single = label;
+    }
+  }
+  if (!several)
+  {
+    return {};
+  }
+  pcs::DisjointSets<int64_t> pieces(count);
+  for (int64_t t = 0; t < count; ++t)
+  {
+    if (this->Mesh.IsTriangleRemoved(t))
+    {
+      continue;
+    }
+    const int32_t* v = this->Mesh.GetTriangle(t);
+    for (int j = 0; j < 3; ++j)
+    {
+      const int64_t across = this->Mesh.FindTriangle(v[(j + 1) % 3], v[j]);
+      if (across >= 0)
+      {
+        pieces.Union(t, across);
+      }
+    }
+  }
+  constexpr int64_t Pinched = std::numeric_limits<int64_t>::max();
+  std::vector<int64_t> size(static_cast<size_t>(count), 0);
+  std::vector<int64_t> pieceAt(static_cast<size_t>(this->N), -1);
+  for (int64_t t = 0; t < count; ++t)
+  {
+    if (this->Mesh.IsTriangleRemoved(t))
+    {
+      continue;
+    }
+    const int64_t root = pieces.Find(t);
+    size[root] = size[root] == Pinched ? Pinched : size[root] + 1;
+    const int32_t* v = this->Mesh.GetTriangle(t);
+    for (int j = 0; j < 3; ++j)
+    {
+      int64_t& at = pieceAt[v[j]];
+      if (at >= 0 && at != root)
+      {
+        size[at] = Pinched; // (two pieces at a vertex: neither is separate)
+        size[root] = Pinched;
+      }
+      at = root;
+    }
+  }
+  std::vector<std::vector<std::array<Id, 3>>> small;
+  std::vector<int64_t> smallOf(static_cast<size_t>(count), -1);
+  for (int64_t t = 0; t < count; ++t)
+  {
+    const int64_t root = this->Mesh.IsTriangleRemoved(t) ? -1 : pieces.Find(t);
+    if (root < 0 || size[root] < 2 || size[root] > SmallPieceTriangles)
+    {
+      continue;
+    }
+    if (smallOf[root] < 0)
+    {
+      smallOf[root] = static_cast<int64_t>(small.size());
+      small.emplace_back();
+    }
+    const int32_t* v = this->Mesh.GetTriangle(t);
+    small[smallOf[root]].push_back({ { v[0], v[1], v[2] } });
+  }
+  std::stable_sort(small.begin(), small.end(),
+    [](const std::vector<std::array<Id, 3>>& a, const std::vector<std::array<Id, 3>>& b)
+    { return a.size() < b.size(); });
+  return small;
+}
+
+// A small piece taken out and its points inserted into the mesh around it (pcs::InsertFreePoint,
+// as the free points), in passes while one fits. It stays out when at least three quarters of its
+// points went in (the others stay unused: typically one point of a bubble in the noise that no
+// triangle around can take without folding); otherwise the insertions are undone, last first, and
+// the piece is put back as it was (a small object on its own, or a part the surface does not
+// cover: taking it apart would leave points out and holes).
+void Grower::TakeApart(const std::vector<std::array<Id, 3>>& piece)
+{
+  std::vector<Id> points;
+  for (const auto& t : piece)
+  {
+    if (this->Mesh.FindTriangle(t[0], t[1]) < 0)
+    {
+      return; // (changed by an earlier piece's insertions: no longer separate)
+    }
+    points.insert(points.end(), t.begin(), t.end());
+  }
+  std::sort(points.begin(), points.end());
+  // Separate still: no triangle attached to it since (each point's triangles are the piece's).
+  for (size_t i = 0; i < points.size();)
+  {
+    size_t j = i;
+    while (j < points.size() && points[j] == points[i])
+    {
+      ++j;
+    }
+    if (this->Mesh.GetVertexDegree(points[i]) != static_cast<int>(j - i))
+    {
+      return;
+    }
+    i = j;
+  }
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  for (const auto& t : piece)
+  {
+    this->Mesh.RemoveTriangle(this->Mesh.FindTriangle(t[0], t[1]));
+  }
+  struct Step
+  {
+    std::vector<std::array<Id, 3>> Added, Removed;
+  };
+  std::vector<Step> steps;
+  // (A point may fit only once its neighbours are in: passes over the others while one fits.)
+  std::vector<Id> left = points;
+  for (size_t before = 0; !left.empty() && left.size() != before;)
+  {
+    before = left.size();
+    std::vector<Id> next;
+    for (Id q : left)
+    {
+      pcs::PointInsertionResult result;
+      if (!this->InsertOrphan(q, &result))
+      {
+        next.push_back(q);
+        continue;
+      }
+      Step step;
+      for (int64_t t : result.Added)
+      {
+        const int32_t* v = this->Mesh.GetTriangle(t);
+        step.Added.push_back({ { v[0], v[1], v[2] } });
+      }
+      step.Removed = std::move(result.Removed);
+      steps.push_back(std::move(step));
+    }
+    left.swap(next);
+  }
+  if (4 * left.size() <= points.size())
+  {
+    this->Inserted += static_cast<vtkIdType>(points.size() - left.size());
+    return;
+  }
+  for (auto step = steps.rbegin(); step != steps.rend(); ++step)
+  {
+    for (const auto& t : step->Added)
+    {
+      this->Mesh.RemoveTriangle(this->Mesh.FindTriangle(t[0], t[1]));
+    }
+    for (const auto& t : step->Removed)
+    {
+      const int64_t id = this->Mesh.AddTriangle(t[0], t[1], t[2]);
+      if (id >= 0)
+      {
+        this->Register(id);
+      }
+    }
+  }
+  for (const auto& t : piece)
+  {
+    const int64_t id = this->Mesh.AddTriangle(t[0], t[1], t[2]);
+    if (id >= 0)
+    {
+      this->Register(id);
     }
   }
 }

@@ -178,18 +178,17 @@
  *    diameter. On an open border (a scan's edge, nothing beyond the front) such ears otherwise
  *    followed each other, each new edge up to 2 MaximumEdgeRatio times the one it expanded, and
  *    cut chords across the border up to 153 h long (h = sqrt(area / N); random samples of a wavy
- *    square: Benchmarks/results/local_optimum.md, task logrim). A bridge made after the first stage may not join two different front loops of one
- *    part (that would add a handle: there it came only from near-contacts of the front with
- *    itself, which folded the mesh over).
- *    At the first stage such a bridge closes the front around a tube (a torus), but not when
- *    either loop is a hole: at most max(3, MaximumHoleEdges) edges, or shorter than 4 pi mean
- *    spacings (the loop around a tube of radius below 2 spacings, which step 6 cannot tell from
- *    a sampling gap either). A handle to a hole jumps across the surface; the hole is closed on
- *    its own instead. On CGAL's mesh vertex sets each handle of a wrong genus came from such a
- *    first-stage bridge, made between two loops 1-3 spacings apart in space (temporary trace):
- *    armadillo loops of 3 and 5 edges (8.7 and 14 spacings long), diplodocus 9 and 13 edges
- *    (4.1 and 19.8 spacings), camel three (the shortest loops 4, 5 and 14 edges). The
- *    true handles of the elephant join loops of 14 to 64 edges, 21 spacings long or more.
+ *    square: Benchmarks/results/local_optimum.md, task logrim). A bridge made after the first stage
+ * may not join two different front loops of one part (that would add a handle: there it came only
+ * from near-contacts of the front with itself, which folded the mesh over). At the first stage such
+ * a bridge closes the front around a tube (a torus), but not when either loop is a hole: at most
+ * max(3, MaximumHoleEdges) edges, or shorter than 4 pi mean spacings (the loop around a tube of
+ * radius below 2 spacings, which step 6 cannot tell from a sampling gap either). A handle to a hole
+ * jumps across the surface; the hole is closed on its own instead. On CGAL's mesh vertex sets each
+ * handle of a wrong genus came from such a first-stage bridge, made between two loops 1-3 spacings
+ * apart in space (temporary trace): armadillo loops of 3 and 5 edges (8.7 and 14 spacings long),
+ * diplodocus 9 and 13 edges (4.1 and 19.8 spacings), camel three (the shortest loops 4, 5 and 14
+ * edges). The true handles of the elephant join loops of 14 to 64 edges, 21 spacings long or more.
  *    Constraint 4 and the overlap tests are never relaxed. Measured with
  *    Benchmarks/run_local_optimum_closure.py on random (Poisson) samples of 2,000, 5,000, 10,000
  *    and 20,000 points, 30 seeds each, counting the runs not closed over every point with the
@@ -205,6 +204,17 @@
  *    boundary edge, its triangle into two; no new triangle may have zero area (a point that
  *    would need one stays unused). A lone triangle (a seed that could not grow) is taken out
  *    first and its points inserted the same way; it is restored when none of them could be.
+ *    Then each other separate piece of at most 16 triangles (smallest first; no vertex shared
+ *    with another piece) is taken out the same way, and kept out when at least three quarters
+ *    of its points could be inserted (the others stay unused); otherwise the insertions are
+ *    undone and the piece is put back as it was (a small object on its own). On noisy scans a
+ *    seed planted among the points the growth left in the noise closed into a tiny polyhedron
+ *    (4 to 9 points) lying within the surface's noise layer: a sphere with Gaussian noise of
+ *    0.2 mean spacings, 20,000 points, came out in 4 to 11 pieces (10 random clouds), one piece
+ *    now (0 to 2 more unused points); at 0.3 spacings 9 to 24 pieces, one now in 9 of 10 (0 to
+ *    6 more unused points). CGAL's mesh vertex sets lose most of their small pieces (man 19 -> 5,
+ *    lion 7 -> 2, femur 5 -> 1, camel 9 -> 4 with 89 -> 95 boundary edges; Hausdorff distances
+ *    unchanged; Benchmarks/results/local_optimum.md).
  * 6. Holes (added): the boundary loops of at most MaximumHoleEdges edges are closed with the
  *    project's shared hole triangulation (paper 001 steps 5-6: projection on the loop's mean plane,
  *    chord splitting, 2D greedy triangulation, free points inside used), kept only when every
@@ -283,16 +293,16 @@
  *    falls by the factor 0.8) without folding over (normals more than 90 degrees apart) a
  *    quadrilateral that was not folded over, and without making the thinner triangle less than a
  *    quarter as fat as before (twice its area over its longest edge squared: no sliver along a
- *    scan line, which lies on the points but stands across the surface). On random samples such an edge joins the two sides of
- *    a thin, sharply bent tip (a tusk, a claw) and its triangles cut across the inside, 2-3 mean
- *    spacings off the surface. Measured (Benchmarks/run_sample_seeds.py, 20 random 10^5 samples of
- *    CGAL's camel, elephant, armadillo and bunny00, seeds 1-5; Benchmarks/results/
- *    local_optimum.md): Hausdorff distance within 2 mean spacings on 10 -> 12 of them (elephant
- *    seed 2 2.22 -> 1.42, armadillo seed 5 2.03 -> 1.74), none worse by more than 0.01, boundary
- *    edges and coverage unchanged; CGAL's held-out mesh vertex sets (run_mesh_vertex_sweep.py):
- *    boundary edges unchanged, Hausdorff distances equal or lower (ChineseDragon-10kv 1.53 ->
- *    1.32, femur 1.75 -> 1.68). The walls across thin tubes (discs across a leg or a tail
- *    of radius 2-3 spacings) are not quadrilaterals with a wrong diagonal and stay.
+ *    scan line, which lies on the points but stands across the surface). On random samples such an
+ * edge joins the two sides of a thin, sharply bent tip (a tusk, a claw) and its triangles cut
+ * across the inside, 2-3 mean spacings off the surface. Measured (Benchmarks/run_sample_seeds.py,
+ * 20 random 10^5 samples of CGAL's camel, elephant, armadillo and bunny00, seeds 1-5;
+ * Benchmarks/results/ local_optimum.md): Hausdorff distance within 2 mean spacings on 10 -> 12 of
+ * them (elephant seed 2 2.22 -> 1.42, armadillo seed 5 2.03 -> 1.74), none worse by more than 0.01,
+ * boundary edges and coverage unchanged; CGAL's held-out mesh vertex sets
+ * (run_mesh_vertex_sweep.py): boundary edges unchanged, Hausdorff distances equal or lower
+ * (ChineseDragon-10kv 1.53 -> 1.32, femur 1.75 -> 1.68). The walls across thin tubes (discs across
+ * a leg or a tail of radius 2-3 spacings) are not quadrilaterals with a wrong diagonal and stay.
  * 8. Each closed component is oriented outwards (positive signed volume).
  *
  * Output: all input points and point data, the triangles (consistently oriented), point data

@@ -271,6 +271,7 @@ bool InsertFreePoint(SurfaceMesh& mesh, const double* xyz, int32_t q, const int3
     result.OldEdges.clear();
     return false;
   }
+  result.Removed = std::move(restore);
   return true;
 }
 

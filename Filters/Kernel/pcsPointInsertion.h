@@ -51,6 +51,9 @@ struct PointInsertionResult
   /// When an operation had to be undone: (old id, new id) of each triangle put back (the mesh
   /// never reuses ids), so that the caller can carry its per-triangle data over.
   std::vector<std::pair<int64_t, int64_t>> Restored;
+  /// The triangles the added ones replaced (vertex ids, as they were), for a caller that may
+  /// undo the insertion: remove the added triangles, add these back.
+  std::vector<std::array<int32_t, 3>> Removed;
 };
 
 /// Connect the free vertex q of `mesh` (coordinates `xyz`, 3 per vertex) to the nearest

@@ -1799,22 +1799,7 @@ void Front::RebuildParts()
 {
   this->PartsValid = true;
   this->Parts.Reset(this->Mesh.GetNumberOfTriangleIds());
-  for (int64_t t = 0; t < this->Mesh.GetNumberOfTriangleIds(); ++t)
-  {
-    if (this->Mesh.IsTriangleRemoved(t))
-    {
-      continue;
-    }
-    const int32_t* v = this->Mesh.GetTriangle(t);
-    for (int i = 0; i < 3; ++i)
-    {
-      const int64_t twin = this->Mesh.FindTriangle(v[(i + 1) % 3], v[i]);
-      if (twin >= 0)
-      {
-        this->Parts.Union(t, twin);
-      }
-    }
-  }
+  this->Mesh.JoinAcrossEdges(this->Parts);
 }
 
 void Front::FindJoints(const Id v[3])

@@ -2332,22 +2332,7 @@ std::vector<std::vector<std::array<Id, 3>>> Grower::SmallPieces()
     return {};
   }
   pcs::DisjointSets<int64_t> pieces(count);
-  for (int64_t t = 0; t < count; ++t)
-  {
-    if (this->Mesh.IsTriangleRemoved(t))
-    {
-      continue;
-    }
-    const int32_t* v = this->Mesh.GetTriangle(t);
-    for (int j = 0; j < 3; ++j)
-    {
-      const int64_t across = this->Mesh.FindTriangle(v[(j + 1) % 3], v[j]);
-      if (across >= 0)
-      {
-        pieces.Union(t, across);
-      }
-    }
-  }
+  this->Mesh.JoinAcrossEdges(pieces);
   constexpr int64_t Pinched = std::numeric_limits<int64_t>::max();
   std::vector<int64_t> size(static_cast<size_t>(count), 0);
   std::vector<int64_t> pieceAt(static_cast<size_t>(this->N), -1);

@@ -12,6 +12,7 @@
 #ifndef pcsDisjointSets_h
 #define pcsDisjointSets_h
 
+#include <cstddef>
 #include <numeric>
 #include <utility>
 #include <vector>

@@ -480,6 +480,27 @@ void SurfaceMesh::RemoveTriangle(int64_t t)
   --this->NumberOfTriangles;
 }
 
+void SurfaceMesh::JoinAcrossEdges(DisjointSets<int64_t>& pieces) const
+{
+  const int64_t count = this->GetNumberOfTriangleIds();
+  for (int64_t t = 0; t < count; ++t)
+  {
+    if (this->IsTriangleRemoved(t))
+    {
+      continue;
+    }
+    const int32_t* v = this->GetTriangle(t);
+    for (int j = 0; j < 3; ++j)
+    {
+      const int64_t across = this->FindTriangle(v[(j + 1) % 3], v[j]);
+      if (across >= 0)
+      {
+        pieces.Union(t, across);
+      }
+    }
+  }
+}
+
 int64_t SurfaceMesh::ReverseComponent(int64_t t)
 {
   if (t < 0 || t >= this->GetNumberOfTriangleIds() || this->IsTriangleRemoved(t))

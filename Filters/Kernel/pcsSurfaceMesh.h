@@ -42,6 +42,8 @@
 #ifndef pcsSurfaceMesh_h
 #define pcsSurfaceMesh_h
 
+#include "pcsDisjointSets.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -130,6 +132,11 @@ public:
   /// (e.g. to merge two components grown with opposite orientations). Returns the number of
   /// triangles reversed. Cost: linear in the component size.
   int64_t ReverseComponent(int64_t t);
+
+  /// Joins in `pieces` (sets over the triangle ids, at least GetNumberOfTriangleIds() of them)
+  /// each triangle with the triangles across its edges: afterwards the sets of the triangles in
+  /// the mesh are its edge-connected components. Cost: linear in the number of triangle ids.
+  void JoinAcrossEdges(DisjointSets<int64_t>& pieces) const;
 
   //----------------------------------------------------------------------------------------------
   // Edge queries.

@@ -84,6 +84,11 @@ constexpr double LongEdgeSpacings = 4.0;
 // Scan-line sampling is taken for the pattern of a region when at least this share of a point's
 // K nearest lie along their lines too (pcs::AddOffLineNeighbors' minimumShare).
 constexpr double ScanLineShare = 0.5;
+// Step 1 with the crossing test (issue 7): a triangle stands across the surface when its normal
+// makes more than 60 degrees with the normals of its three points and their nearest points lie
+// on both sides of its plane, farther than this fraction of its longest edge.
+constexpr double StandingCosine = 0.5;
+constexpr double StandingSides = 0.5;
 // Point ids are 32-bit in the kernels (pcs::SurfaceMesh).
 constexpr vtkIdType MaximumNumberOfPoints = 500000000;
 
@@ -792,6 +797,52 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
     return false;
   };
 
+  // A triangle abc standing across the surface (issue 7): obtuse at c, its normal more than 60
+  // degrees from the unoriented normals of a, b and c, and the nearest points of a, b and c on
+  // both sides of its plane, farther than half of ab. Three points of a sampling line that curves
+  // out of the surface (a circle around a torus's tube, sampled more densely than the circles
+  // are apart) make one: in the tangent plane it projects onto a segment with c on it, a tie
+  // that the exact crossing test on rounded projections cannot decide. On a sharp edge, where
+  // the normals are those of neither side, a sliver of the face beyond has that face's points in
+  // its plane and the other face's on one side only: it is not refused.
+  auto stands = [&](int32_t a, int32_t b, int32_t c)
+  {
+    double ca[3], cb[3], t[3];
+    vtkMath::Subtract(at(a), at(c), ca);
+    vtkMath::Subtract(at(b), at(c), cb);
+    if (!(vtkMath::Dot(ca, cb) < 0.0))
+    {
+      return false;
+    }
+    vtkMath::Cross(ca, cb, t);
+    if (!(vtkMath::Normalize(t) > 0))
+    {
+      return false;
+    }
+    for (int32_t x : { a, b, c })
+    {
+      if (std::abs(vtkMath::Dot(t, &normals[3 * static_cast<size_t>(x)])) >= StandingCosine)
+      {
+        return false;
+      }
+    }
+    const double reach = StandingSides * Distance(at(a), at(b));
+    bool above = false, below = false;
+    for (int32_t x : { a, b, c })
+    {
+      const int32_t* list = &neighbors[static_cast<size_t>(x) * k];
+      for (int j = 0; j < k && list[j] >= 0 && !(above && below); ++j)
+      {
+        double w[3];
+        vtkMath::Subtract(at(list[j]), at(c), w);
+        const double h = vtkMath::Dot(w, t);
+        above = above || h > reach;
+        below = below || h < -reach;
+      }
+    }
+    return above && below;
+  };
+
   std::vector<int32_t>& result = this->Step1Triangles;
   result.clear();
   result.reserve(2 * static_cast<size_t>(this->N) * 3);
@@ -847,6 +898,20 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
         (!this->Stretch.empty() &&
           pcs::OnOneScanLine(
             this->X.data(), this->Stretch.data(), edges[e].A, edges[e].B, cloudId[common[c]]));
+    }
+    // Guard with the crossing test (issue 7): no triangle standing across the surface made of ab
+    // and an accepted edge at a or b (the triangles ab closes among them).
+    if (crossing && !degenerate &&
+      (this->CrossingPoints.empty() || this->CrossingPoints[edges[e].A] ||
+        this->CrossingPoints[edges[e].B]))
+    {
+      for (int32_t x : { a, b })
+      {
+        for (int64_t s = offsets[x], e2 = offsets[x] + degree[x]; s < e2 && !degenerate; ++s)
+        {
+          degenerate = stands(a, b, adjacent[s]);
+        }
+      }
     }
     if (degenerate)
     {

@@ -3,6 +3,8 @@
 // - 5000 random points on the unit sphere: closed, manifold, oriented outwards, genus 0, every
 //   point used (coverage 1), hence 2V - 4 triangles;
 // - 5000 random points on a torus: the same with genus 1 (2V triangles);
+// - tori sampled on regular (u, v) grids, anisotropic and full of exact ties (issue 7): closed,
+//   manifold, genus 1, every point used, 2 nu nv triangles;
 // - a torus whose tube is cut across by an empty band 6 spacings wide (issue 7): the two rims run
 //   alongside each other around the tube and the band is closed as a strip: closed, genus 1, no
 //   end capped, every triangle vertex and centroid within 3 mean spacings of the torus (capped
@@ -460,6 +462,65 @@ bool TestTorus()
   PCS_CHECK(SignedVolume(mesh) > 0.0, "torus: outward orientation");
   PCS_CHECK(CheckArrays(greedy, "torus"), "");
   return true;
+}
+
+// A torus sampled on a regular (u, v) parameter grid of nu x nv points (u around the axis, v
+// around the tube), turned by a fixed rotation so that no grid line is axis-aligned.
+std::vector<double> GridTorus(int nu, int nv, double big, double small)
+{
+  const double c = std::cos(0.3), s = std::sin(0.3), c2 = std::cos(0.7), s2 = std::sin(0.7);
+  std::vector<double> xyz;
+  for (int j = 0; j < nv; ++j)
+  {
+    for (int i = 0; i < nu; ++i)
+    {
+      const double u = 2.0 * vtkMath::Pi() * i / nu, v = 2.0 * vtkMath::Pi() * j / nv;
+      const double p[3] = { (big + small * std::cos(v)) * std::cos(u),
+        (big + small * std::cos(v)) * std::sin(u), small * std::sin(v) };
+      // About x by 0.3 rad, then about z by 0.7 rad.
+      const double q[3] = { p[0], c * p[1] - s * p[2], s * p[1] + c * p[2] };
+      xyz.insert(xyz.end(), { c2 * q[0] - s2 * q[1], s2 * q[0] + c2 * q[1], q[2] });
+    }
+  }
+  return xyz;
+}
+
+// Issue 7: tori sampled on a regular parameter grid, the most common way to make one. The grid
+// is anisotropic (spacing 2 pi (R + r cos v) / nu along u, 2 pi r / nv along v) and full of exact
+// ties (every cell an isosceles trapezoid, its two diagonals of equal length). Where the spacing
+// along v is under half that along u, three consecutive points of a circle around the tube
+// are nearer to each other than to the next circle, and step 1 closed triangles across the tube
+// (standing across the surface); around the inner equator of a fat tube the circles around the
+// axis did the same across the torus's hole. The result was open (up to 797 boundary edges) or
+// closed with the wrong genus (0: the hole filled; 34 of 200 grids). Each grid must give a closed,
+// manifold torus over every point, with no point added: genus 1 and 2 nu nv triangles.
+bool TestGridTori()
+{
+  auto check = [](int nu, int nv, double small)
+  {
+    vtkNew<vtkGreedySurfaceTriangulation> greedy;
+    greedy->SetInputData(pcstest::MakeCloud(GridTorus(nu, nv, 1.0, small)));
+    greedy->Update();
+    const std::string what = "grid torus " + std::to_string(nu) + " x " + std::to_string(nv) +
+      ", r " + std::to_string(small);
+    const Quality q = Measure(greedy->GetOutput());
+    PCS_CHECK(CheckClosed(q, 1, what), "");
+    PCS_CHECK(q.UsedPoints == nu * nv && q.Coverage == 1.0,
+      what << ": " << q.UsedPoints << " points used of " << nu * nv);
+    PCS_CHECK(q.Triangles == 2 * nu * nv, what << ": " << q.Triangles << " triangles");
+    return true;
+  };
+  const int grids[][2] = { { 24, 24 }, { 32, 32 }, { 40, 40 }, { 56, 56 }, { 48, 36 }, { 36, 48 },
+    { 24, 16 } };
+  bool ok = true;
+  for (const auto& grid : grids)
+  {
+    for (double small : { 0.2, 0.35, 0.5, 0.65 })
+    {
+      ok = check(grid[0], grid[1], small) && ok;
+    }
+  }
+  return ok;
 }
 
 // Issue 7: a band of missing surface around a thin part (on random samples of CGAL's camel, a band
@@ -951,6 +1012,7 @@ int TestGreedySurfaceTriangulation(int, char*[])
   ok = TestMonotoneProgress() && ok;
   ok = TestTorus() && ok;
   ok = TestTorusBand() && ok;
+  ok = TestGridTori() && ok;
   ok = TestDamagedSphere() && ok;
   ok = TestRemovedCap() && ok;
   ok = TestOpenTube() && ok;

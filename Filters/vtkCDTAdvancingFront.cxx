@@ -3490,6 +3490,21 @@ int vtkCDTAdvancingFront::RequestData(
     LoopCloser closer(mesh, xyz.data(), nearest, meanSpacing, status, bins, front.Origin);
     InsertUnusedPoints(mesh, xyz.data(), knn, knnOthers, status, front.Origin);
     closer.CloseAll();
+    // The parts without an interior vertex (lone triangles, strips one triangle wide), which no
+    // fill closes, are taken out while the unused points are inserted, so that their points join
+    // the surface under or beside them; what could not be is put back (pcs::TakeOutStrips,
+    // pcs::PutBackStrips) and its remaining points tried again.
+    pcs::TakenStrips strips;
+    pcs::TakeOutStrips(mesh, strips);
+    InsertUnusedPoints(mesh, xyz.data(), knn, knnOthers, status, front.Origin);
+    std::vector<std::pair<int64_t, int64_t>> restored;
+    pcs::PutBackStrips(mesh, strips, restored);
+    front.Origin.resize(static_cast<size_t>(mesh.GetNumberOfTriangleIds()), 2);
+    for (const auto& pair : restored)
+    {
+      front.Origin[static_cast<size_t>(pair.second)] =
+        front.Origin[static_cast<size_t>(pair.first)];
+    }
     InsertUnusedPoints(mesh, xyz.data(), knn, knnOthers, status, front.Origin);
   }
   if (front.Aborted)

@@ -2061,7 +2061,8 @@ bool Grower::FillHole(const std::vector<Id>& frontLoop)
       return false;
     }
   }
-  if (this->FoldsOntoMesh(result.Triangles, true))
+  if (this->FoldsOntoMesh(result.Triangles, true) ||
+    !pcs::holes::FillIsSmallPartOfSurface(this->X, this->Mesh, result.Triangles))
   {
     return false;
   }

@@ -1338,7 +1338,67 @@ bool FillLoopNearSamples(const double* xyz,
       return false;
     }
   }
+  if (!FillIsSmallPartOfSurface(xyz, mesh, fill))
+  {
+    fill.clear();
+    return false;
+  }
   return true;
+}
+
+//------------------------------------------------------------------------------------------------
+bool FillIsSmallPartOfSurface(
+  const double* xyz, const SurfaceMesh& mesh, const std::vector<int32_t>& fill, double ratio)
+{
+  auto point = [xyz](int32_t v) { return xyz + 3 * static_cast<size_t>(v); };
+  auto area = [&](const int32_t* v)
+  {
+    double n[3];
+    pcs::projected::TriangleNormal(point(v[0]), point(v[1]), point(v[2]), n);
+    return 0.5 * std::sqrt(vtkMath::Dot(n, n));
+  };
+  double fillArea = 0.0;
+  std::vector<int64_t> stack;
+  for (size_t t = 0; t + 2 < fill.size(); t += 3)
+  {
+    fillArea += area(&fill[t]);
+    for (int j = 0; j < 3; ++j)
+    {
+      // The mesh triangle across the fill triangle's edge a -> b owns b -> a.
+      const int64_t across = mesh.FindTriangle(fill[t + (j + 1) % 3], fill[t + j]);
+      if (across >= 0)
+      {
+        stack.push_back(across);
+      }
+    }
+  }
+  const double wanted = ratio * fillArea;
+  if (stack.empty() || !(fillArea > 0.0) || !std::isfinite(wanted))
+  {
+    return false;
+  }
+  std::unordered_set<int64_t> seen(stack.begin(), stack.end());
+  double reached = 0.0;
+  while (!stack.empty())
+  {
+    const int64_t t = stack.back();
+    stack.pop_back();
+    const int32_t* v = mesh.GetTriangle(t);
+    reached += area(v);
+    if (reached > wanted)
+    {
+      return true;
+    }
+    for (int j = 0; j < 3; ++j)
+    {
+      const int64_t next = mesh.FindTriangle(v[(j + 1) % 3], v[j]);
+      if (next >= 0 && seen.insert(next).second)
+      {
+        stack.push_back(next);
+      }
+    }
+  }
+  return false;
 }
 
 } // namespace holes

@@ -226,6 +226,8 @@ double LeastDihedralFill(const double* xyz,
 ///   lone triangle);
 /// - a fill triangle whose centroid, or the midpoint of one of its new edges (not in the mesh),
 ///   has no input point within `reach`: `nearSomePoint(x, reach)` answers that.
+/// - a fill that is not a small part of the surface it completes (FillIsSmallPartOfSurface): the
+///   lid of a bowl, or the second layer that "closes" a flat patch back to back.
 /// A sampling gap on a thin or sharply bent feature passes; a membrane across an open border, a
 /// slit, or between parts that only come close passes through empty space and is refused.
 /// On success the triangles (point ids, 3 per triangle) are in `fill` and true is returned;
@@ -237,6 +239,19 @@ bool FillLoopNearSamples(const double* xyz,
   double maximumDihedral,
   const std::function<bool(const double*, double)>& nearSomePoint,
   std::vector<int32_t>& fill);
+
+/// Does a fill (point ids, 3 per triangle, each triangle across at least one loop edge from a
+/// triangle of `mesh`, or inside the fill) close a true hole? A hole is a gap in a surface: its
+/// fill is a small part of the surface it completes. The border of an open patch is not one: its
+/// least-dihedral fill is a lid over a bowl or a second layer back to back with a flat or saddle
+/// patch (a closed component of no volume, a "pillow"), and either is about as large as the patch
+/// itself. Rule: true when the mesh triangles reached from the fill's loop edges, walking across
+/// edges, have more than `ratio` times the fill's area (default 2: the fill at most a third of the
+/// closed surface). The walk stops as soon as that area is reached, so its cost is bounded by the
+/// size of the fill rather than of the mesh. A fill with no triangle across a mesh edge, or of
+/// zero or non-finite area, is not small (false).
+bool FillIsSmallPartOfSurface(
+  const double* xyz, const SurfaceMesh& mesh, const std::vector<int32_t>& fill, double ratio = 2.0);
 
 } // namespace holes
 } // namespace pcs

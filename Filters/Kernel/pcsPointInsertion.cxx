@@ -1,5 +1,6 @@
 #include "pcsPointInsertion.h"
 
+#include "pcsDisjointSets.h"
 #include "pcsProjectedTests.h"
 
 #include <algorithm>
@@ -273,6 +274,124 @@ bool InsertFreePoint(SurfaceMesh& mesh, const double* xyz, int32_t q, const int3
   }
   result.Removed = std::move(restore);
   return true;
+}
+
+//------------------------------------------------------------------------------------------------
+void TakeOutStrips(SurfaceMesh& mesh, TakenStrips& taken)
+{
+  taken = TakenStrips();
+  const int32_t n = mesh.GetNumberOfVertices();
+  const int64_t count = mesh.GetNumberOfTriangleIds();
+  pcs::DisjointSets<int32_t> parts(n);
+  for (int64_t t = 0; t < count; ++t)
+  {
+    if (!mesh.IsTriangleRemoved(t))
+    {
+      const int32_t* v = mesh.GetTriangle(t);
+      parts.Union(v[0], v[1]);
+      parts.Union(v[1], v[2]);
+    }
+  }
+  // A part is a strip when none of its vertices is interior.
+  std::vector<char> patch(static_cast<size_t>(n), 0);
+  for (int32_t v = 0; v < n; ++v)
+  {
+    if (mesh.IsInterior(v))
+    {
+      patch[parts.Find(v)] = 1;
+    }
+  }
+  std::vector<std::vector<int64_t>> strips;
+  std::vector<int32_t> index(static_cast<size_t>(n), -1);
+  for (int64_t t = 0; t < count; ++t)
+  {
+    if (mesh.IsTriangleRemoved(t))
+    {
+      continue;
+    }
+    const int32_t root = parts.Find(mesh.GetTriangle(t)[0]);
+    if (patch[root])
+    {
+      continue;
+    }
+    if (index[root] < 0)
+    {
+      index[root] = static_cast<int32_t>(strips.size());
+      strips.emplace_back();
+    }
+    strips[index[root]].push_back(t);
+  }
+  for (const auto& strip : strips)
+  {
+    taken.Starts.push_back(taken.Ids.size());
+    for (int64_t t : strip)
+    {
+      const int32_t* v = mesh.GetTriangle(t);
+      taken.Triangles.insert(taken.Triangles.end(), { v[0], v[1], v[2] });
+      taken.Ids.push_back(t);
+    }
+  }
+  taken.Starts.push_back(taken.Ids.size());
+  for (int64_t t : taken.Ids)
+  {
+    mesh.RemoveTriangle(t);
+  }
+  std::vector<int32_t> points(taken.Triangles);
+  std::sort(points.begin(), points.end());
+  taken.NumberOfPoints =
+    static_cast<int64_t>(std::unique(points.begin(), points.end()) - points.begin());
+}
+
+int64_t PutBackStrips(
+  SurfaceMesh& mesh, const TakenStrips& taken, std::vector<std::pair<int64_t, int64_t>>& restored)
+{
+  int64_t used = 0;
+  for (size_t s = 0; s + 1 < taken.Starts.size(); ++s)
+  {
+    // Decided before any of the strip's triangles is back: which of them keep all three points
+    // free (every one, when no point of the strip was inserted).
+    std::vector<size_t> back;
+    for (size_t t = taken.Starts[s]; t < taken.Starts[s + 1]; ++t)
+    {
+      const int32_t* v = &taken.Triangles[3 * t];
+      if (mesh.IsFree(v[0]) && mesh.IsFree(v[1]) && mesh.IsFree(v[2]))
+      {
+        back.push_back(t);
+      }
+    }
+    std::vector<int32_t> vertices;
+    for (size_t t : back)
+    {
+      vertices.insert(vertices.end(), &taken.Triangles[3 * t], &taken.Triangles[3 * t] + 3);
+    }
+    std::vector<int64_t> added;
+    if (!back.empty() && !mesh.AddTriangles(vertices.data(), back.size(), added))
+    {
+      // Not a manifold piece on its own (a subset of a strip pinched at a vertex): one by one,
+      // those that fit.
+      added.assign(back.size(), -1);
+      for (size_t k = 0; k < back.size(); ++k)
+      {
+        const int32_t* v = &vertices[3 * k];
+        if (mesh.CanAddTriangle(v[0], v[1], v[2]) == SurfaceMesh::Check::Ok)
+        {
+          added[k] = mesh.AddTriangle(v[0], v[1], v[2]);
+        }
+      }
+    }
+    std::vector<int32_t> points;
+    for (size_t k = 0; k < added.size(); ++k)
+    {
+      if (added[k] >= 0)
+      {
+        restored.emplace_back(taken.Ids[back[k]], added[k]);
+        points.insert(points.end(), &vertices[3 * k], &vertices[3 * k] + 3);
+      }
+    }
+    std::sort(points.begin(), points.end());
+    used += static_cast<int64_t>(std::unique(points.begin(), points.end()) - points.begin());
+  }
+  return used;
 }
 
 } // namespace pcs

@@ -64,6 +64,30 @@ struct PointInsertionResult
 bool InsertFreePoint(SurfaceMesh& mesh, const double* xyz, int32_t q, const int32_t* neighbors,
   int count, bool attachToBoundary, PointInsertionResult& result);
 
+/// Pieces of a mesh that are not surface patches: the connected components (through shared
+/// vertices) none of whose vertices is interior -- a lone triangle, or a strip one triangle wide
+/// (a seed that could barely grow among points that another part of the mesh passes over).
+/// TakeOutStrips removes them from the mesh so that their points can be inserted into the
+/// surface under them (InsertFreePoint), and PutBackStrips restores what was not: a strip none of
+/// whose points was inserted is put back whole; otherwise its triangles whose three vertices are
+/// all still free are put back, and the caller tries its remaining free points again. Points that
+/// no triangle takes are left unused (the filters report them).
+struct TakenStrips
+{
+  std::vector<int32_t> Triangles; ///< 3 point ids per removed triangle
+  std::vector<int64_t> Ids;       ///< each removed triangle's id in the mesh
+  std::vector<size_t> Starts;     ///< first triangle of each strip, and the total at the end
+  int64_t NumberOfPoints = 0;     ///< distinct points of the removed triangles
+};
+
+/// Remove the strips (see above) of `mesh` into `taken`.
+void TakeOutStrips(SurfaceMesh& mesh, TakenStrips& taken);
+
+/// Put back what `taken` holds as described above; `restored` gets (old id, new id) of each
+/// triangle put back. Returns the number of distinct points that the put-back triangles use.
+int64_t PutBackStrips(
+  SurfaceMesh& mesh, const TakenStrips& taken, std::vector<std::pair<int64_t, int64_t>>& restored);
+
 } // namespace pcs
 
 #endif

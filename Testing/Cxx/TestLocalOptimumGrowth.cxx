@@ -485,6 +485,36 @@ bool TestSmallFlatPatches()
   return true;
 }
 
+// Small open patches (issue 5): random points on a bowl and on a tilted disc (20 to 200 points,
+// seeds 1-5) are one open surface: one component with exactly one boundary loop (so no closed
+// component). The border of such a patch used to be "closed" by a fill as large as the patch: a
+// lid over the bowl, a second layer back to back with the disc (on 9819af6 the bowl and the
+// tilted disc of 20 points, seed 1, came back closed; the exactly coplanar square of
+// TestSmallFlatPatches was caught by the fold rule, the tilted disc was not).
+bool TestSmallOpenPatches()
+{
+  for (bool bowl : { true, false })
+  {
+    for (int n : { 20, 30, 60, 100, 200 })
+    {
+      for (unsigned seed = 1; seed <= 5; ++seed)
+      {
+        std::vector<double> xyz, normals;
+        pcstest::SmallOpenPatch(bowl, n, seed, xyz, normals);
+        vtkNew<vtkLocalOptimumGrowth> growth;
+        growth->SetInputData(pcstest::MakeCloud(xyz));
+        growth->Update();
+        const Quality q = Measure(growth->GetOutput());
+        PCS_CHECK(q.Components == 1 && q.Loops == 1,
+          (bowl ? "bowl" : "tilted disc")
+            << " n " << n << " seed " << seed << ": " << q.Components << " components, " << q.Loops
+            << " boundary loops (one open patch expected)");
+      }
+    }
+  }
+  return true;
+}
+
 bool TestGridBox()
 {
   // The surface of a box sampled on an integer grid: 12 x 9 x 7 points, 406 on the surface, 96
@@ -901,6 +931,7 @@ int TestLocalOptimumGrowth(int, char*[])
   ok = TestNarrowLoops() && ok;
   ok = TestPlanarGrid() && ok;
   ok = TestSmallFlatPatches() && ok;
+  ok = TestSmallOpenPatches() && ok;
   ok = TestGridBox() && ok;
   ok = TestLatticeLines() && ok;
   ok = TestStallingScanLines() && ok;

@@ -77,6 +77,31 @@ inline std::vector<double> UniformCube(int n, unsigned seed)
   return xyz;
 }
 
+/// `n` uniform random points on a small open patch over the unit disc, with the exact unit
+/// normals (upwards): the bowl z = 0.2 (x^2 + y^2) or the tilted plane z = 0.3 x + 0.2 y (a disc
+/// whose points are not exactly coplanar in floating point). Packed x, y, z.
+inline void SmallOpenPatch(
+  bool bowl, int n, unsigned seed, std::vector<double>& xyz, std::vector<double>& normals)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  xyz.clear();
+  normals.clear();
+  while (static_cast<int>(xyz.size() / 3) < n)
+  {
+    const double x = u(rng), y = u(rng);
+    if (x * x + y * y > 1.0)
+    {
+      continue;
+    }
+    const double gx = bowl ? 0.4 * x : 0.3, gy = bowl ? 0.4 * y : 0.2;
+    const double z = bowl ? 0.2 * (x * x + y * y) : 0.3 * x + 0.2 * y;
+    const double length = std::sqrt(gx * gx + gy * gy + 1.0);
+    xyz.insert(xyz.end(), { x, y, z });
+    normals.insert(normals.end(), { -gx / length, -gy / length, 1.0 / length });
+  }
+}
+
 /// Cells of a data set as fixed-size id tuples (N = 3 or 4).
 template <int N, typename DataSetT>
 std::vector<std::array<vtkIdType, N>> CellTuples(DataSetT* data)

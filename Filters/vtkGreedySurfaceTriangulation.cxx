@@ -84,10 +84,12 @@ constexpr double LongEdgeSpacings = 4.0;
 // Scan-line sampling is taken for the pattern of a region when at least this share of a point's
 // K nearest lie along their lines too (pcs::AddOffLineNeighbors' minimumShare).
 constexpr double ScanLineShare = 0.5;
-// Step 1 with the crossing test (issue 7): a triangle stands across the surface when its normal
-// makes more than 60 degrees with the normals of its three points and their nearest points lie
-// on both sides of its plane, farther than this fraction of its longest edge.
-constexpr double StandingCosine = 0.5;
+// Step 1 with the crossing test (issue 7): a triangle stands across the surface when its angle
+// at its third point exceeds 150 degrees (StandingAngleCosine), its normal makes more than 70
+// degrees with the normals of its three points (StandingCosine) and their nearest points lie on
+// both sides of its plane, farther than StandingSides times its edge ab.
+constexpr double StandingCosine = 0.3420201433256687;       // cos 70 degrees
+constexpr double StandingAngleCosine = -0.8660254037844386; // cos 150 degrees
 constexpr double StandingSides = 0.5;
 // Point ids are 32-bit in the kernels (pcs::SurfaceMesh).
 constexpr vtkIdType MaximumNumberOfPoints = 500000000;
@@ -797,12 +799,12 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
     return false;
   };
 
-  // A triangle abc standing across the surface (issue 7): obtuse at c, its normal more than 60
-  // degrees from the unoriented normals of a, b and c, and the nearest points of a, b and c on
-  // both sides of its plane, farther than half of ab. Three points of a sampling line that curves
-  // out of the surface (a circle around a torus's tube, sampled more densely than the circles
-  // are apart) make one: in the tangent plane it projects onto a segment with c on it, a tie
-  // that the exact crossing test on rounded projections cannot decide. On a sharp edge, where
+  // A triangle abc standing across the surface (issue 7): its angle at c above 150 degrees, its
+  // normal more than 70 degrees from the unoriented normals of a, b and c, and the nearest points
+  // of a, b and c on both sides of its plane, farther than half of ab. Three points of a sampling
+  // line that curves out of the surface (a circle around a torus's tube, sampled more densely than
+  // the circles are apart) make one: in the tangent plane it projects onto a segment with c on it,
+  // a tie that the exact crossing test on rounded projections cannot decide. On a sharp edge, where
   // the normals are those of neither side, a sliver of the face beyond has that face's points in
   // its plane and the other face's on one side only: it is not refused.
   auto stands = [&](int32_t a, int32_t b, int32_t c)
@@ -810,7 +812,8 @@ void Reconstruction::Step1GreedyEdges(double begin, double end)
     double ca[3], cb[3], t[3];
     vtkMath::Subtract(at(a), at(c), ca);
     vtkMath::Subtract(at(b), at(c), cb);
-    if (!(vtkMath::Dot(ca, cb) < 0.0))
+    if (!(vtkMath::Dot(ca, cb) <
+          StandingAngleCosine * std::sqrt(vtkMath::Dot(ca, ca) * vtkMath::Dot(cb, cb))))
     {
       return false;
     }

@@ -38,20 +38,24 @@
  *   for other clouds ("for other cases at the given step another algorithm can be used").
  *   With the crossing test, an edge ab is also refused when it would make a triangle abc
  *   standing across the surface (ours, issue 7), closed by ab or made of ab and an accepted edge
- *   at a or b: obtuse at c, its normal more than 60 degrees from the unoriented normals of a, b
- *   and c, and the nearest points of a, b and c on both sides of its plane, farther than half of
- *   ab. Three points of a sampling line that curves out of the surface make one: on a torus
- *   sampled on a regular (u, v) grid, the circles around the tube where they are sampled more
- *   than about twice as densely as they are apart (and, around the inner equator of a fat tube,
- *   the circles around the axis), whose chords across the tube (or across the torus's hole) are
- *   shorter than the way to the next circle. In the tangent plane such a triangle projects onto a
- *   segment with c on it, a tie that the exact crossing test on rounded projections cannot
- *   decide; step 1 took the chords, closing the tube or the hole with discs, and the umbrella
- *   test then lost the points around them. On 200 such grids (24 to 96 by 12 to 48 points, tube
- *   radius 0.25 to 0.7 of the axis radius) 60 results were open and 37 closed with the wrong
- *   genus (34 spheres); now 4 are open (bands of lost points where the paper's test alone left
- *   more than AutomaticCorrectFraction of the points correct, so the crossing test did not run)
- *   and none has the wrong genus (Benchmarks/results/greedy.md). The side condition spares the
+ *   at a or b: its angle at c above 150 degrees, its normal more than 70 degrees from the
+ *   unoriented normals of a, b and c, and the nearest points of a, b and c on both sides of its
+ *   plane, farther than half of ab. Three points of a sampling line that curves out of the
+ *   surface make one: on a torus sampled on a regular (u, v) grid, the circles around the tube
+ *   where they are sampled more than about twice as densely as they are apart (and, around the
+ *   inner equator of a fat tube, the circles around the axis), whose chords across the tube (or
+ *   across the torus's hole) are shorter than the way to the next circle. In the tangent plane
+ *   such a triangle projects onto a segment with c on it, a tie that the exact crossing test on
+ *   rounded projections cannot decide; step 1 took the chords, closing the tube or the hole with
+ *   discs, and the umbrella test then lost the points around them. On 200 such grids (24 to 96 by
+ *   12 to 48 points, tube radius 0.25 to 0.7 of the axis radius) 60 results were open and 37
+ *   closed with the wrong genus (34 spheres); now 6 are open (bands of lost points where the
+ *   paper's test alone left more than AutomaticCorrectFraction of the points correct, so the
+ *   crossing test did not run) and none has the wrong genus (Benchmarks/results/greedy.md). The
+ *   grids' triangles have angles at c of 166 degrees and more and normals within 1 degree of
+ *   perpendicular to their points' normals; "obtuse" and 60 degrees (the first bounds) also
+ *   refused ordinary obtuse triangles of noisy clouds (a noisy torus: 599 boundary edges, now
+ *   0). The side condition spares the
  *   slivers of a face beyond a sharp edge, where the normals are those of neither face: that
  *   face's points lie in the sliver's plane and the other face's on one side only.
  * - Scan-line sampling (laser-line and LiDAR scans: points 6 to 20 times denser along lines than

@@ -62,6 +62,16 @@ def cloud_from_array(xyz):
     return cloud
 
 
+def random_torus(rng, count):
+    """count points uniform on the torus R 1, r 0.35 (tube angle accepted by circumference)."""
+    a, b, w = (rng.uniform(0, 2 * math.pi, 3 * count), rng.uniform(0, 2 * math.pi, 3 * count),
+               rng.uniform(0, 1, 3 * count))
+    keep = w * 1.35 <= 1 + 0.35 * numpy.cos(b)
+    a, b = a[keep][:count], b[keep][:count]
+    return numpy.c_[(1 + 0.35 * numpy.cos(b)) * numpy.cos(a),
+                    (1 + 0.35 * numpy.cos(b)) * numpy.sin(a), 0.35 * numpy.sin(b)]
+
+
 def quality(mesh):
     q = vtkReconstructionQuality()
     q.SetInputData(mesh)
@@ -175,13 +185,8 @@ for seed in range(6):
         if shape == "sphere":
             xyz = rng.normal(size=(count, 3))
             xyz /= numpy.linalg.norm(xyz, axis=1)[:, None]
-        else:  # uniform on the torus (R 1, r 0.35): tube angle accepted by circumference
-            a, b, w = (rng.uniform(0, 2 * math.pi, 3 * count), rng.uniform(0, 2 * math.pi, 3 * count),
-                       rng.uniform(0, 1, 3 * count))
-            keep = w * 1.35 <= 1 + 0.35 * numpy.cos(b)
-            a, b = a[keep][:count], b[keep][:count]
-            xyz = numpy.c_[(1 + 0.35 * numpy.cos(b)) * numpy.cos(a),
-                           (1 + 0.35 * numpy.cos(b)) * numpy.sin(a), 0.35 * numpy.sin(b)]
+        else:
+            xyz = random_torus(rng, count)
         xyz = xyz + rng.normal(scale=0.125 * math.sqrt(4 * math.pi / count), size=xyz.shape)
         cloud = cloud_from_array(xyz)
         noisy = vtkGreedySurfaceTriangulation()
@@ -203,12 +208,7 @@ check(closed_loops > 0, "noisy spheres and tori: small loops closed (%d)" % clos
 for seed in (1, 2, 3):
     rng = numpy.random.default_rng(seed)
     count = 20000
-    a, b, w = (rng.uniform(0, 2 * math.pi, 3 * count), rng.uniform(0, 2 * math.pi, 3 * count),
-               rng.uniform(0, 1, 3 * count))
-    keep = w * 1.35 <= 1 + 0.35 * numpy.cos(b)
-    a, b = a[keep][:count], b[keep][:count]
-    xyz = numpy.c_[(1 + 0.35 * numpy.cos(b)) * numpy.cos(a),
-                   (1 + 0.35 * numpy.cos(b)) * numpy.sin(a), 0.35 * numpy.sin(b)]
+    xyz = random_torus(rng, count)
     xyz = xyz + rng.normal(scale=0.2 * math.sqrt(4 * math.pi ** 2 * 0.35 / count), size=xyz.shape)
     noisy = vtkGreedySurfaceTriangulation()
     noisy.SetInputData(cloud_from_array(xyz))

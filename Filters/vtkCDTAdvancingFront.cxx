@@ -997,8 +997,8 @@ private:
   // turns around a vertex through one fan), one of them short: at most HoleEdges edges, or
   // shorter than 4 pi HoleSpacing (the loop around a tube of radius below 2 spacings, which no
   // rule tells from a hole; vtkLocalOptimumGrowth's bound, its step 4, with its default
-  // MaximumHoleEdges)? Both loops are walked in step until one closes, or meets the other
-  // half-edge, or both are known not to be short: at most a short loop's length each.
+  // MaximumHoleEdges)? pcs::holes::IsShortLoop walks each loop, avoiding the other half-edge,
+  // at most a short loop's length.
   static constexpr int64_t HoleEdges = 8;
   bool JoinsHole(Id a, Id b, Id c, Id d) const;
   // May the triangle (v0, v1, v2) be added: it joins no hole to another loop of its part?
@@ -1853,50 +1853,10 @@ void Front::FindJoints(const Id v[3])
 
 bool Front::JoinsHole(Id a, Id b, Id c, Id d) const
 {
-  struct Walk
-  {
-    Id Tail, Head;
-    int64_t Edges;
-    double Perimeter;
-    bool Closed;
-  };
-  Walk walks[2] = { { a, b, 0, 0.0, false }, { c, d, 0, 0.0, false } };
-  const Id starts[2][2] = { { a, b }, { c, d } };
+  // (Two loops, one short: a loop that closes short without passing the other half-edge.)
   const double limit = 4.0 * vtkMath::Pi() * this->HoleSpacing;
-  auto isShort = [&](const Walk& w) { return w.Edges <= HoleEdges || w.Perimeter < limit; };
-  const int64_t steps = this->Mesh.GetNumberOfBoundaryHalfEdges() + 1;
-  for (int64_t step = 0; step < steps; ++step)
-  {
-    int walking = 0;
-    for (int i = 0; i < 2; ++i)
-    {
-      Walk& w = walks[i];
-      if (w.Closed || !isShort(w))
-      {
-        continue; // (a loop known not to be short: the other walk decides)
-      }
-      ++walking;
-      w.Perimeter += std::sqrt(Distance2(this->P(w.Tail), this->P(w.Head)));
-      ++w.Edges;
-      const Id next = this->Mesh.NextBoundaryVertex(w.Tail, w.Head);
-      w.Tail = w.Head;
-      w.Head = next;
-      if (next < 0 || (w.Tail == starts[1 - i][0] && w.Head == starts[1 - i][1]))
-      {
-        return false; // one loop (or not a loop: nothing claimed)
-      }
-      w.Closed = w.Tail == starts[i][0] && w.Head == starts[i][1];
-      if (w.Closed && isShort(w))
-      {
-        return true; // two loops (it closed without meeting the other), one short
-      }
-    }
-    if (walking == 0)
-    {
-      return false; // neither loop is short
-    }
-  }
-  return false;
+  return pcs::holes::IsShortLoop(this->Mesh, this->XYZ, a, b, HoleEdges, limit, c, d) ||
+    pcs::holes::IsShortLoop(this->Mesh, this->XYZ, c, d, HoleEdges, limit, a, b);
 }
 
 bool Front::KeepsGenus(Id v0, Id v1, Id v2)

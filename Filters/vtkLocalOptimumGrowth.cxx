@@ -1496,29 +1496,8 @@ bool Grower::OnFrontLoop(Id a, Id b, Id c) const
 // 2 spacings, which step 6 cannot tell from a sampling gap either).
 bool Grower::ShortLoop(Id a, Id b)
 {
-  const int bound = std::max(3, this->Par.MaxHoleEdges);
-  const double limit = 4.0 * vtkMath::Pi() * this->CloudSpacing();
-  double perimeter = 0.0;
-  Id s = a, e = b;
-  for (int edges = 1;; ++edges)
-  {
-    perimeter += std::sqrt(Distance2(this->P3(s), this->P3(e)));
-    if (edges > bound && !(perimeter < limit))
-    {
-      return false;
-    }
-    const Id next = this->Mesh.NextBoundaryVertex(s, e);
-    s = e;
-    e = next;
-    if (e < 0)
-    {
-      return false;
-    }
-    if (s == a && e == b)
-    {
-      return true;
-    }
-  }
+  return pcs::holes::IsShortLoop(this->Mesh, this->X, a, b, std::max(3, this->Par.MaxHoleEdges),
+    4.0 * vtkMath::Pi() * this->CloudSpacing());
 }
 
 // The cloud's mean nearest-neighbour distance (computed once).

@@ -1401,5 +1401,36 @@ bool FillIsSmallPartOfSurface(
   return false;
 }
 
+//------------------------------------------------------------------------------------------------
+bool IsShortLoop(const SurfaceMesh& mesh, const double* xyz, int32_t a, int32_t b, int64_t maxEdges,
+  double maxLength, int32_t avoidTail, int32_t avoidHead)
+{
+  double length = 0.0;
+  int32_t tail = a, head = b;
+  const int64_t steps = mesh.GetNumberOfBoundaryHalfEdges() + 1;
+  for (int64_t edges = 1; edges <= steps; ++edges)
+  {
+    double d[3];
+    vtkMath::Subtract(xyz + 3 * static_cast<size_t>(head), xyz + 3 * static_cast<size_t>(tail), d);
+    length += std::sqrt(vtkMath::Dot(d, d));
+    if (edges > maxEdges && !(length < maxLength))
+    {
+      return false;
+    }
+    const int32_t next = mesh.NextBoundaryVertex(tail, head);
+    tail = head;
+    head = next;
+    if (next < 0 || (tail == avoidTail && head == avoidHead))
+    {
+      return false;
+    }
+    if (tail == a && head == b)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 } // namespace holes
 } // namespace pcs

@@ -253,6 +253,16 @@ bool FillLoopNearSamples(const double* xyz,
 bool FillIsSmallPartOfSurface(
   const double* xyz, const SurfaceMesh& mesh, const std::vector<int32_t>& fill, double ratio = 2.0);
 
+/// Is the boundary loop through the half-edge a -> b of `mesh` (coordinates `xyz`) a hole: at
+/// most `maxEdges` edges, or shorter than `maxLength`? The bound shared by the growing filters'
+/// handle rules (vtkLocalOptimumGrowth step 4, vtkCDTAdvancingFront's KeepsGenus): a loop around
+/// a tube of radius below 2 spacings (4 pi spacings long) cannot be told from a sampling gap. The
+/// walk (NextBoundaryVertex) stops as soon as the loop has more edges and is longer, so it costs
+/// at most a short loop's length. False when the walk meets the half-edge `avoidTail` ->
+/// `avoidHead` (the same loop as that one) or leaves the boundary.
+bool IsShortLoop(const SurfaceMesh& mesh, const double* xyz, int32_t a, int32_t b, int64_t maxEdges,
+  double maxLength, int32_t avoidTail = -1, int32_t avoidHead = -1);
+
 } // namespace holes
 } // namespace pcs
 

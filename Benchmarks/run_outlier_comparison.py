@@ -7,7 +7,8 @@ Rules (k = 8 nearest neighbours; a point's reach = mean distance to them):
            8 nearest non-sparse points (pcs::FindOutliers until 2026-11-24)
   DP Fx    the rule kept (pcs::FindOutliers): D Fx, except a point whose 8 nearest points are all
            sparse and a flat disc (covariance eigenvalues: smallest < 0.02, middle >=
-           0.1 of the sum) with the point within 0.1 x its reach of their plane, and at least
+           0.1 of the sum) with the point within 0.3 x its reach of their plane (DP F8 H0.1:
+           0.1, the rule until 2026-11-25), and at least
            half of those 8 passing the same test (a sparse part of a sampled surface)
 Modes:
   fp MODE  false positives on the vertex sets of every CGAL demo mesh of >= 32 distinct points
@@ -80,9 +81,10 @@ def dense_rule(p, F, S=4.0, k=8):
     return flag
 
 
-def dense_plane_rule(p, F, S=4.0, k=8):
+def dense_plane_rule(p, F, S=4.0, k=8, H=0.3):
     """The rule kept since 2026-11-24: dense_rule, except points on the flat sample of their
-    own nearest points (a sparse part of the surface)."""
+    own nearest points (a sparse part of the surface), the point within H x its reach of their
+    plane (H 0.1 until 2026-11-25, 0.3 since)."""
     if len(p) < 4 * k:
         return np.zeros(len(p), bool)
     _, r, i = reach_of(p, k)
@@ -99,7 +101,7 @@ def dense_plane_rule(p, F, S=4.0, k=8):
         sparse = r > S * upper_median(r, 0)
         among = sparse[i[idx]].all(axis=1)
         ok = np.zeros(len(p), bool)
-        ok[idx[flat & among & (h < 0.1 * r[idx])]] = True
+        ok[idx[flat & among & (h < H * r[idx])]] = True
         surface = ok & (2 * ok[i].sum(axis=1) >= k)
         flag[surface] = False
     return flag
@@ -130,6 +132,7 @@ RULES = {
     "SOR25x10": lambda p: sor(p, 10.0), "L F5 G20": lambda p: local_rule(p, 5.0, 20.0),
     "D F6": lambda p: dense_rule(p, 6.0), "D F8": lambda p: dense_rule(p, 8.0),
     "D F10": lambda p: dense_rule(p, 10.0), "DP F8": lambda p: dense_plane_rule(p, 8.0),
+    "DP F8 H0.1": lambda p: dense_plane_rule(p, 8.0, H=0.1),
 }
 
 

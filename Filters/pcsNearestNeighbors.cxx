@@ -103,6 +103,19 @@ void PointBins::Build(vtkStaticPointLocator* locator,
 {
   locator->GetDivisions(this->Divisions);
   const double* bounds = locator->GetBounds();
+  double grid[6];
+  BulkBounds(xyz, n, bounds, grid);
+  if (!std::equal(grid, grid + 6, bounds))
+  {
+    // A few points far from the rest: the locator's buckets over the whole box would put the
+    // rest into a few of them. As many buckets over the bulk box instead (see BulkBounds).
+    const double buckets =
+      static_cast<double>(this->Divisions[0]) * this->Divisions[1] * this->Divisions[2];
+    int divisions[3];
+    SurfaceSampleDivisions(grid, n, buckets / std::max<int32_t>(n, 1), divisions);
+    this->Build(grid, divisions, xyz, n, withCoordinates);
+    return;
+  }
   double spacing[3];
   locator->GetSpacing(spacing);
   for (int c = 0; c < 3; ++c)
@@ -1052,9 +1065,59 @@ void BuildSurfaceSampleBins(
       bounds[2 * c + 1] = std::max(bounds[2 * c + 1], p[c]);
     }
   }
+  double grid[6];
+  BulkBounds(xyz, n, bounds, grid);
   int divisions[3];
-  SurfaceSampleDivisions(bounds, n, 4.0, divisions);
-  bins.Build(bounds, divisions, xyz, n, withCoordinates);
+  SurfaceSampleDivisions(grid, n, 4.0, divisions);
+  bins.Build(grid, divisions, xyz, n, withCoordinates);
+}
+
+void BulkBounds(const double* xyz, int32_t n, const double bounds[6], double grid[6])
+{
+  std::copy_n(bounds, 6, grid);
+  constexpr int32_t sampleSize = 65536;
+  const int32_t step = std::max<int32_t>(1, n / sampleSize);
+  std::vector<double> values;
+  values.reserve(static_cast<size_t>(n / step + 1));
+  double low[3], high[3], widest = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    values.clear();
+    for (int32_t i = 0; i < n; i += step)
+    {
+      const double v = xyz[3 * static_cast<size_t>(i) + c];
+      if (std::isfinite(v))
+      {
+        values.push_back(v);
+      }
+    }
+    if (values.size() < 100)
+    {
+      return; // (too few points to tell a bulk from strays)
+    }
+    const size_t first = values.size() / 100, last = values.size() - 1 - values.size() / 100;
+    std::nth_element(values.begin(), values.begin() + first, values.end());
+    low[c] = values[first];
+    std::nth_element(values.begin() + first, values.begin() + last, values.end());
+    high[c] = values[last];
+    widest = std::max(widest, high[c] - low[c]);
+  }
+  if (!(widest > 0.0) || !std::isfinite(widest))
+  {
+    return; // (the bulk is one position: nothing to shrink to)
+  }
+  double bulk[6];
+  bool shrinks = false;
+  for (int c = 0; c < 3; ++c)
+  {
+    bulk[2 * c] = std::max(bounds[2 * c], low[c] - 0.5 * widest);
+    bulk[2 * c + 1] = std::min(bounds[2 * c + 1], high[c] + 0.5 * widest);
+    shrinks = shrinks || bulk[2 * c + 1] - bulk[2 * c] < 0.5 * (bounds[2 * c + 1] - bounds[2 * c]);
+  }
+  if (shrinks)
+  {
+    std::copy_n(bulk, 6, grid);
+  }
 }
 
 void SetSurfaceSampleDivisions(vtkStaticPointLocator* locator,

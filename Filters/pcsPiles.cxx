@@ -201,6 +201,11 @@ int32_t FindPiles(const double* x,
     }
   }
   auto diagonal = [&](int32_t r) { return BoxDiagonal(&box[6 * static_cast<size_t>(r)]); };
+  // A group holding more than half of the points is never a pile: it is most of the cloud, and
+  // what lies beyond its gap are stray points (the outlier rule's to judge), not the other way
+  // round. Without this one far point (a scanner's failed return at 10^12) made the whole
+  // sampled object one "pile", and no surface was made.
+  auto mayBePile = [n](int32_t size) { return 2 * static_cast<int64_t>(size) <= n; };
   std::vector<uint8_t> pile(n, 0); // by tree node
   for (const Edge& e : edges)
   {
@@ -211,7 +216,8 @@ int32_t FindPiles(const double* x,
     }
     for (const int32_t r : { a, b })
     {
-      pile[top[r]] = pile[top[r]] || (sets.GetSize(r) > 1 && diagonal(r) < PileRatio * e.Length);
+      pile[top[r]] = pile[top[r]] ||
+        (sets.GetSize(r) > 1 && mayBePile(sets.GetSize(r)) && diagonal(r) < PileRatio * e.Length);
     }
     const int32_t kept = sets.Link(a, b);
     const int32_t absorbed = kept == a ? b : a;
@@ -248,7 +254,7 @@ int32_t FindPiles(const double* x,
   std::vector<int32_t> partRoots;
   for (int32_t i = 0; i < n; ++i)
   {
-    if (sets.Find(i) == i && sets.GetSize(i) > 1 && sets.GetSize(i) < n &&
+    if (sets.Find(i) == i && sets.GetSize(i) > 1 && mayBePile(sets.GetSize(i)) &&
       diagonal(i) < PileRatio * cloudDiagonal)
     {
       partRoots.push_back(i);

@@ -47,7 +47,9 @@ constexpr double PileRatio = 1e-4;
 /// first leaves a group of two or more points (its shortest edge to the rest), the group is a
 /// pile if the diagonal of its bounding box is under PileRatio times that edge. A group no edge
 /// leaves (a separate part of the graph) is a pile if no other point lies within its diagonal x
-/// (1 + 1 / PileRatio) of one of its points. A point belongs to the largest pile that holds it.
+/// (1 + 1 / PileRatio) of one of its points. A group holding more than half of the `n` points is
+/// never a pile (it is most of the cloud; the far points beyond its gap are strays for the
+/// outlier rule). A point belongs to the largest pile that holds it.
 ///
 /// Output: `groupOf` gets each point's group, numbered in the order of their first points (a
 /// point in no pile is a group of its own); returns the number of groups. n (no pile) leaves

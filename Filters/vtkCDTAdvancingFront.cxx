@@ -8,6 +8,7 @@
 #include "pcsHoleFilling.h"
 #include "pcsNearestNeighbors.h"
 #include "pcsNormalEstimation.h"
+#include "pcsOutliers.h"
 #include "pcsPiles.h"
 #include "pcsPointInsertion.h"
 #include "pcsProjectedTests.h"
@@ -2537,6 +2538,7 @@ int vtkCDTAdvancingFront::RequestData(
   this->NumberOfUnusedPoints = 0;
   this->NumberOfDuplicatePoints = 0;
   this->NumberOfSkippedPoints = 0;
+  this->NumberOfOutliers = 0;
   this->NumberOfRemovedTriangles = 0;
   this->MeanSpacing = 0.0;
   this->NeighborhoodRadiusUsed = 0.0;
@@ -2584,6 +2586,7 @@ int vtkCDTAdvancingFront::RequestData(
     pcs::AddFieldCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
     pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", this->NumberOfDuplicatePoints);
     pcs::AddFieldCount(fd, "NumberOfSkippedPoints", this->NumberOfSkippedPoints);
+    pcs::AddFieldCount(fd, "NumberOfOutliers", this->NumberOfOutliers);
     pcs::AddFieldCount(fd, "NumberOfRemovedTriangles", this->NumberOfRemovedTriangles);
     double mean = std::numeric_limits<double>::quiet_NaN(), deviation = mean, low = mean,
            high = mean;
@@ -2640,7 +2643,7 @@ int vtkCDTAdvancingFront::RequestData(
       { "MinimumTriangleArea", this->MinimumTriangleArea },
       { "HoleFillingRadiusFactor", this->HoleFillingRadiusFactor },
       { "HoleFillingMinimumNormalDot", this->HoleFillingMinimumNormalDot },
-      { "NoiseBandFactor", this->NoiseBandFactor } });
+      { "NoiseBandFactor", this->NoiseBandFactor }, { "OutlierFactor", this->OutlierFactor } });
   if (!nanParameters.empty())
   {
     vtkErrorMacro(<< nanParameters);
@@ -2652,7 +2655,7 @@ int vtkCDTAdvancingFront::RequestData(
   std::vector<double> all;
   std::vector<Id> inputId; // local id -> input id
   this->NumberOfSkippedPoints = pcs::ReadFiniteCoordinates(input->GetPoints(), all, inputId);
-  const Id local = static_cast<Id>(inputId.size());
+  Id local = static_cast<Id>(inputId.size());
   std::vector<double> xyz;
   if (this->NumberOfSkippedPoints == 0)
   {
@@ -2685,6 +2688,38 @@ int vtkCDTAdvancingFront::RequestData(
   {
     vtkWarningMacro(
       "Skipped " << this->NumberOfSkippedPoints << " point(s) with NaN or infinite coordinates.");
+  }
+  // Far outliers (ours, the rule and parameter of the other surface filters,
+  // pcs::FindOutliersAndPiles): left out like non-finite points, so that no front edge reaches
+  // them (clutter around a sphere was meshed into pieces of long triangles, and one point 10^4
+  // radii away gave the front a ball holding every point).
+  if (this->OutlierFactor > 0.0 && local > pcs::PileNeighbors)
+  {
+    std::vector<int32_t> ids(static_cast<size_t>(local));
+    std::iota(ids.begin(), ids.end(), 0);
+    std::vector<uint8_t> outlier;
+    std::vector<int32_t> firstOf; // (the piles are merged below, on the normals' table)
+    int64_t copies = 0;
+    this->NumberOfOutliers =
+      pcs::FindOutliersAndPiles(xyz.data(), ids, this->OutlierFactor, outlier, firstOf, copies);
+    if (this->NumberOfOutliers > 0)
+    {
+      Id kept = 0;
+      for (Id k = 0; k < local; ++k)
+      {
+        if (!outlier[k])
+        {
+          std::copy_n(&xyz[3 * static_cast<size_t>(k)], 3, &xyz[3 * static_cast<size_t>(kept)]);
+          inputId[kept++] = inputId[k];
+        }
+      }
+      local = kept;
+      xyz.resize(3 * static_cast<size_t>(local));
+      inputId.resize(static_cast<size_t>(local));
+      vtkWarningMacro("Excluded " << this->NumberOfOutliers << " far outlier(s) (OutlierFactor "
+                                  << this->OutlierFactor
+                                  << "): point data Used = 0, field data NumberOfOutliers.");
+    }
   }
   if (local < 3)
   {
@@ -3555,6 +3590,7 @@ void vtkCDTAdvancingFront::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumTriangleArea: " << this->MinimumTriangleArea << "\n";
   os << indent << "MaximumNumberOfCandidates: " << this->MaximumNumberOfCandidates << "\n";
   os << indent << "NoiseBandFactor: " << this->NoiseBandFactor << "\n";
+  os << indent << "OutlierFactor: " << this->OutlierFactor << "\n";
   os << indent << "HoleFilling: " << (this->HoleFilling ? "On" : "Off") << "\n";
   os << indent << "HoleFillingRadiusFactor: " << this->HoleFillingRadiusFactor << "\n";
   os << indent << "HoleFillingMinimumNormalDot: " << this->HoleFillingMinimumNormalDot << "\n";
@@ -3566,6 +3602,7 @@ void vtkCDTAdvancingFront::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfUnusedPoints: " << this->NumberOfUnusedPoints << "\n";
   os << indent << "NumberOfDuplicatePoints: " << this->NumberOfDuplicatePoints << "\n";
   os << indent << "NumberOfSkippedPoints: " << this->NumberOfSkippedPoints << "\n";
+  os << indent << "NumberOfOutliers: " << this->NumberOfOutliers << "\n";
   os << indent << "NumberOfRemovedTriangles: " << this->NumberOfRemovedTriangles << "\n";
   os << indent << "MeanSpacing: " << this->MeanSpacing << "\n";
   os << indent << "NeighborhoodRadiusUsed: " << this->NeighborhoodRadiusUsed << "\n";

@@ -262,6 +262,7 @@
  * copies, see below),
  * `NumberOfSkippedPoints` (non-finite coordinates; a point whose normal could not be estimated
  * either),
+ * `NumberOfOutliers` (far outliers, OutlierFactor),
  * `NumberOfRemovedTriangles` (pinch repair),
  * `MeanSpacing` and `NeighborhoodRadiusUsed`.
  *
@@ -441,6 +442,23 @@ public:
 
   ///@{
   /**
+   * Far outliers (ours, beyond the paper) are left out of the front and reported (point data
+   * Used = 0, field data NumberOfOutliers, counted in NumberOfUnusedPoints, a warning): the rule
+   * of vtkPerimeterPeelSurface::OutlierFactor (pcs::FindOutliersAndPiles), same meaning: a point
+   * whose reach (mean distance to its 8 nearest points) is over 4 times the cloud's median reach
+   * and over OutlierFactor times the median reach of its 8 nearest points that are not, unless it
+   * lies on a sparse part of the surface (its 8 nearest sparse too and flat around it: see the
+   * peel's docs); a pile of near-coincident points counts as one point. It costs one search of
+   * the 8 nearest neighbours before the normal estimation. Without it, clutter around a surface
+   * was meshed into pieces of long triangles, and one point 10^4 radii away gave the front a
+   * ball holding every point. Default 8.0; range [0, 1000]; 0: off.
+   */
+  vtkSetClampMacro(OutlierFactor, double, 0.0, 1000.0);
+  vtkGetMacro(OutlierFactor, double);
+  ///@}
+
+  ///@{
+  /**
    * Sections II.D.1-2: a neighbouring point or edge end point blocks a triangle only when its
    * normal ray reaches the triangle's plane within this distance. Default 0: automatic and
    * local, twice the local spacing at the triangle: the largest, over its three vertices, of the
@@ -532,6 +550,7 @@ public:
   vtkGetMacro(NumberOfUnusedPoints, vtkIdType);
   vtkGetMacro(NumberOfDuplicatePoints, vtkIdType);
   vtkGetMacro(NumberOfSkippedPoints, vtkIdType);
+  vtkGetMacro(NumberOfOutliers, vtkIdType);
   vtkGetMacro(NumberOfRemovedTriangles, vtkIdType);
   vtkGetMacro(MeanSpacing, double);
   vtkGetMacro(NeighborhoodRadiusUsed, double);
@@ -550,6 +569,7 @@ protected:
   double NeighborhoodRadiusFactor = 5.0;
   double MinimumNormalDot = 0.5;
   double NoiseBandFactor = 3.0;
+  double OutlierFactor = 8.0;
   double MaximumRayDistance = 0.0;
   double MinimumTriangleArea = 0.0;
   int MaximumNumberOfCandidates = 20;
@@ -565,6 +585,7 @@ protected:
   vtkIdType NumberOfUnusedPoints = 0;
   vtkIdType NumberOfDuplicatePoints = 0;
   vtkIdType NumberOfSkippedPoints = 0;
+  vtkIdType NumberOfOutliers = 0;
   vtkIdType NumberOfRemovedTriangles = 0;
   double MeanSpacing = 0.0;
   double NeighborhoodRadiusUsed = 0.0;

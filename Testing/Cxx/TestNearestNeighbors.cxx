@@ -24,7 +24,14 @@
 //   of the identity and the zero matrix (the fallback) give unit vectors;
 // - pcs::DistinctNeighbors (the table of the distinct positions of a cloud with exact copies,
 //   taken from the table of its points) equals the search on the positions
-//   (CheckDistinctNeighbors).
+//   (CheckDistinctNeighbors);
+// - a few stray points far from the rest (10^4, 10^6 and 10^12 times the cloud's size away):
+//   the bins (pcs::BuildSurfaceSampleBins, and those filed from a locator's grid) cover the bulk
+//   of the points (pcs::BulkBounds, a box up to twice the cloud's along each axis), so no bucket
+//   holds more than 8 times the fullest bucket of the cloud without the strays (before, the grid
+//   spanned the strays and one bucket held every other point: the search became quadratic), and
+//   the table still equals brute force, the strays filed in the clamped border buckets
+//   (CheckFarStrays).
 #include "pcsNearestNeighbors.h"
 #include "pcsNormalEstimation.h"
 
@@ -480,6 +487,51 @@ bool CheckDistinctNeighbors(double copiedShare)
 }
 }
 
+// The largest number of points in one bucket of `bins`.
+int32_t FullestBucket(const pcs::PointBins& bins)
+{
+  int32_t fullest = 0;
+  for (int64_t b = 0; b < bins.GetNumberOfBuckets(); ++b)
+  {
+    fullest = std::max(fullest, bins.GetOffsets()[b + 1] - bins.GetOffsets()[b]);
+  }
+  return fullest;
+}
+
+bool CheckFarStrays()
+{
+  std::vector<double> xyz = TiesAndDuplicates();
+  pcs::PointBins bins;
+  double bounds[6];
+  pcs::BuildSurfaceSampleBins(
+    bins, xyz.data(), static_cast<int32_t>(xyz.size() / 3), false, bounds);
+  const int32_t fullestWithout = FullestBucket(bins);
+  xyz.insert(xyz.end(), { 1e5, 2e5, -3e5, -4e7, 1e7, 5e6, 3e13, -1e13, 2e13 });
+  const int32_t n = static_cast<int32_t>(xyz.size() / 3);
+  const int k = 12;
+  const std::vector<int32_t> expected = BruteForce(xyz, k);
+  pcs::BuildSurfaceSampleBins(bins, xyz.data(), n, false, bounds);
+  PCS_CHECK(bounds[1] == 3e13 && bounds[2] == -1e13 && bounds[5] == 2e13,
+    "BuildSurfaceSampleBins returns the points' bounding box");
+  std::cout << "fullest bucket: " << fullestWithout << " points without the strays, "
+            << FullestBucket(bins) << " with them" << std::endl;
+  PCS_CHECK(FullestBucket(bins) <= 8 * fullestWithout,
+    "a bucket holds " << FullestBucket(bins) << " points");
+  std::vector<int32_t> table;
+  pcs::FindNearestNeighbors(bins, xyz.data(), n, k, table);
+  bool ok = SameTable(table, expected, k, "far strays, own grid");
+  vtkSmartPointer<vtkPolyData> cloud = pcstest::MakeCloud(xyz);
+  vtkSmartPointer<vtkStaticPointLocator> locator = Locator(xyz, cloud);
+  locator->BuildLocator();
+  pcs::PointBins fromLocator;
+  fromLocator.Build(locator, xyz.data(), n, false);
+  PCS_CHECK(FullestBucket(fromLocator) <= 8 * fullestWithout,
+    "a bucket of the locator's bins holds " << FullestBucket(fromLocator) << " points");
+  pcs::FindNearestNeighbors(locator, xyz.data(), n, k, table);
+  ok = SameTable(table, expected, k, "far strays, locator's grid") && ok;
+  return ok;
+}
+
 int TestNearestNeighbors(int, char*[])
 {
   bool ok = CheckAgainstBruteForce();
@@ -488,5 +540,6 @@ int TestNearestNeighbors(int, char*[])
   ok = CheckExtremeEigenvectors() && ok;
   ok = CheckDistinctNeighbors(2.0 / 3.0) && ok;
   ok = CheckDistinctNeighbors(1.0 / 200.0) && ok;
+  ok = CheckFarStrays() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

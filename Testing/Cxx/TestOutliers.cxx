@@ -1,6 +1,6 @@
 // Far outliers (OutlierFactor, the shared rule of pcsOutliers) in vtkPerimeterPeelSurface,
-// vtkLocalOptimumGrowth and vtkGreedySurfaceTriangulation, on clouds whose outliers are known by
-// construction:
+// vtkLocalOptimumGrowth, vtkGreedySurfaceTriangulation and vtkCDTAdvancingFront, on clouds whose
+// outliers are known by construction:
 // - 3,000 random points of the unit sphere plus 3 % outliers uniform in the box [-3, 3]^3 (three
 //   times the sphere's bounding box), none within 0.8 of the sphere (25 mean spacings; the rule
 //   leaves points within about 8 reaches, some 20 spacings, alone):
@@ -15,7 +15,12 @@
 //   (the flat-sample exemption of pcs::FindOutliersAndPiles);
 // - piles of near-coincident points that outnumber the surface count once each
 //   (pcs::FindPiles): 1,000 sphere points plus 4 piles of 600 distinct points within 3e-9
-//   of 4 of them flag nothing; a fifth pile of 600 far from the sphere is flagged whole.
+//   of 4 of them flag nothing; a fifth pile of 600 far from the sphere is flagged whole;
+// - one stray point far from the sphere (10^4 and 10^12 radii away): each filter gives the sphere
+//   and reports the stray. Before, at 10^12 the sphere itself was taken for a pile (its extent
+//   under 1/10,000 of its distance to the stray) and merged into one point: no triangle at all;
+//   at 10^4 vtkCDTAdvancingFront, which had no outlier rule, meshed the stray with the sphere.
+#include "vtkCDTAdvancingFront.h"
 #include "vtkGreedySurfaceTriangulation.h"
 #include "vtkLocalOptimumGrowth.h"
 #include "vtkPerimeterPeelSurface.h"
@@ -31,6 +36,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <random>
+#include <sstream>
 #include <string>
 
 namespace
@@ -126,6 +132,25 @@ bool CheckExcluded(const std::string& name, unsigned seed)
   filter->SetOutlierFactor(0.0);
   PCS_CHECK(FieldCount(Run(filter, xyz), "NumberOfOutliers") == 0, name << ", OutlierFactor 0");
   return true;
+}
+
+// One stray point `distance` radii from the sphere: the sphere, the stray reported.
+template <typename Filter>
+bool CheckFarStray(const std::string& name, double distance)
+{
+  std::vector<double> xyz = SpherePoints(SpherePointCount, 11);
+  xyz.insert(xyz.end(), { 0.6 * distance, -0.8 * distance, 0.0 });
+  vtkNew<Filter> filter;
+  std::ostringstream label;
+  label << name << ", one stray point " << distance << " radii away";
+  return CheckSphereSurface(label.str(), Run(filter, xyz), 1);
+}
+
+template <typename Filter>
+bool CheckFarStrays(const std::string& name)
+{
+  const bool near = CheckFarStray<Filter>(name, 1e4);
+  return CheckFarStray<Filter>(name, 1e12) && near;
 }
 
 // vtkLocalOptimumGrowth takes the rule's neighbours from its own table when NumberOfNeighbors >= 8,
@@ -300,6 +325,11 @@ int TestOutliers(int, char*[])
   bool ok = CheckExcluded<vtkPerimeterPeelSurface>("peel", 3);
   ok = CheckExcluded<vtkLocalOptimumGrowth>("local optimum growth", 4) && ok;
   ok = CheckExcluded<vtkGreedySurfaceTriangulation>("greedy", 5) && ok;
+  ok = CheckExcluded<vtkCDTAdvancingFront>("CDT", 6) && ok;
+  ok = CheckFarStrays<vtkPerimeterPeelSurface>("peel") && ok;
+  ok = CheckFarStrays<vtkLocalOptimumGrowth>("local optimum growth") && ok;
+  ok = CheckFarStrays<vtkGreedySurfaceTriangulation>("greedy") && ok;
+  ok = CheckFarStrays<vtkCDTAdvancingFront>("CDT") && ok;
   ok = CheckFewNeighbors() && ok;
   ok = CheckCleanClouds() && ok;
   ok = CheckDensePatch() && ok;

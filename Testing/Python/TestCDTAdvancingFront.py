@@ -277,9 +277,13 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
                                 "Benchmarks"))
 from run_arc_spheres import sphere_with_arcs  # noqa: E402
 
+# (OutlierFactor 0: on seed 12 with 400 points the far-outlier rule shared by every filter flags one
+# random point beside an arc, whose reach is over 8 times that of the arc points around it; these
+# clouds test the folds, the outlier rule has its own test, TestOutliers.)
 for count, seed in ((400, 13), (800, 4), (400, 12), (800, 12)):
     arcs = sphere_with_arcs(count, 8, 60, seed)
     front = vtkCDTAdvancingFront()
+    front.SetOutlierFactor(0)
     front.SetInputData(cloud(arcs))
     front.Update()
     q = quality_of(front.GetOutput())

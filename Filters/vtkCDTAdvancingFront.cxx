@@ -964,7 +964,9 @@ private:
   // where it met itself across a layer of noise, a second sampling of the surface or a fold of
   // wrong normals. When one of the two loops is a hole (short, as vtkLocalOptimumGrowth's step 4
   // defines it) such a triangle does not close around a tube, it jumps across the surface: it is
-  // refused (KeepsGenus), and the hole is closed on its own. A triangle between two longer loops
+  // refused (KeepsGenus), and the hole is closed on its own -- unless both loops go around a tube
+  // (pcs::holes::JoinsLoopsAroundTube: a loop around a thin tube is as short as a hole, and
+  // refusing the join capped the tube twice). A triangle between two longer loops
   // is made: a loop around a tube shrinks as the front goes on (the caps of a tube sampled by a
   // few points around), so deferring it lost the true handles of coarse samplings.
   //
@@ -1856,8 +1858,9 @@ bool Front::JoinsHole(Id a, Id b, Id c, Id d) const
 {
   // (Two loops, one short: a loop that closes short without passing the other half-edge.)
   const double limit = 4.0 * vtkMath::Pi() * this->HoleSpacing;
-  return pcs::holes::IsShortLoop(this->Mesh, this->XYZ, a, b, HoleEdges, limit, c, d) ||
-    pcs::holes::IsShortLoop(this->Mesh, this->XYZ, c, d, HoleEdges, limit, a, b);
+  return (pcs::holes::IsShortLoop(this->Mesh, this->XYZ, a, b, HoleEdges, limit, c, d) ||
+           pcs::holes::IsShortLoop(this->Mesh, this->XYZ, c, d, HoleEdges, limit, a, b)) &&
+    !pcs::holes::JoinsLoopsAroundTube(this->Mesh, this->XYZ, a, b, c, d);
 }
 
 bool Front::KeepsGenus(Id v0, Id v1, Id v2)

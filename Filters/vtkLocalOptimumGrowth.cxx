@@ -1431,10 +1431,16 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
     // At the first stage it is also refused when either loop is a hole (ShortLoop): a handle
     // between a hole and the rest of the front does not close around a tube, it jumps across the
     // surface (CGAL's armadillo vertices: loops of 3 and 5 edges; diplodocus: 9 and 13 edges,
-    // 4.1 and 19.8 mean spacings long); the hole is closed on its own (step 6).
+    // 4.1 and 19.8 mean spacings long); the hole is closed on its own (step 6). Unless both loops
+    // go around a tube (pcs::holes::JoinsLoopsAroundTube, ours): a loop around a thin tube is as
+    // short as a hole, and refusing the join capped the tube twice (a knot tube of 12 points
+    // around came out genus 0).
     if (this->TriangleLabel(this->Mesh.FindTriangle(c, nc)) ==
         this->TriangleLabel(this->Mesh.FindTriangle(a, b)) &&
-      (stage > 0 || this->ShortLoop(a, b) || this->ShortLoop(c, nc)) && !this->OnFrontLoop(a, b, c))
+      (stage > 0 ||
+        ((this->ShortLoop(a, b) || this->ShortLoop(c, nc)) &&
+          !pcs::holes::JoinsLoopsAroundTube(this->Mesh, this->X, a, b, c, nc))) &&
+      !this->OnFrontLoop(a, b, c))
     {
       continue;
     }

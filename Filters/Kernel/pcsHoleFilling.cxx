@@ -1402,6 +1402,75 @@ bool FillIsSmallPartOfSurface(
 }
 
 //------------------------------------------------------------------------------------------------
+namespace
+{
+// The loop alignment LV of the boundary loop through the half-edge a -> b (see
+// JoinsLoopsAroundTube), or -1 when the loop has more than maxEdges edges, leaves the boundary or
+// has no triangle of non-zero area on its edges.
+double LoopAlignment(
+  const SurfaceMesh& mesh, const double* xyz, int32_t a, int32_t b, int64_t maxEdges)
+{
+  // First walk: the centroid of the loop's vertices.
+  double centroid[3] = { 0.0, 0.0, 0.0 };
+  int64_t edges = 0;
+  int32_t tail = a, head = b;
+  do
+  {
+    if (head < 0 || edges >= maxEdges)
+    {
+      return -1.0;
+    }
+    vtkMath::Add(centroid, xyz + 3 * static_cast<size_t>(tail), centroid);
+    ++edges;
+    const int32_t next = mesh.NextBoundaryVertex(tail, head);
+    tail = head;
+    head = next;
+  } while (!(tail == a && head == b));
+  vtkMath::MultiplyScalar(centroid, 1.0 / static_cast<double>(edges));
+  // Second walk: per edge, abs(n . (centroid - m)) and abs(centroid - m), with m the edge's
+  // midpoint and n the unit normal of the mesh triangle on the edge.
+  double along = 0.0, total = 0.0;
+  do
+  {
+    const double* p = xyz + 3 * static_cast<size_t>(tail);
+    const double* q = xyz + 3 * static_cast<size_t>(head);
+    const int32_t opposite = mesh.OppositeVertex(tail, head);
+    if (opposite < 0)
+    {
+      return -1.0;
+    }
+    double edge[3], side[3], normal[3], toCentroid[3];
+    vtkMath::Subtract(q, p, edge);
+    vtkMath::Subtract(xyz + 3 * static_cast<size_t>(opposite), p, side);
+    vtkMath::Cross(edge, side, normal);
+    for (int k = 0; k < 3; ++k)
+    {
+      toCentroid[k] = centroid[k] - 0.5 * (p[k] + q[k]);
+    }
+    const double area2 = vtkMath::Norm(normal);
+    if (area2 > 0.0)
+    {
+      along += std::fabs(vtkMath::Dot(normal, toCentroid)) / area2;
+      total += vtkMath::Norm(toCentroid);
+    }
+    const int32_t next = mesh.NextBoundaryVertex(tail, head);
+    tail = head;
+    head = next;
+  } while (!(tail == a && head == b));
+  const double alignment = along / total;
+  return total > 0.0 && std::isfinite(alignment) ? alignment : -1.0;
+}
+} // namespace
+
+bool JoinsLoopsAroundTube(
+  const SurfaceMesh& mesh, const double* xyz, int32_t a, int32_t b, int32_t c, int32_t d)
+{
+  const int64_t maxEdges = static_cast<int64_t>(MaximumFillLoopEdges);
+  return LoopAlignment(mesh, xyz, a, b, maxEdges) >= TubeLoopAlignment &&
+    LoopAlignment(mesh, xyz, c, d, maxEdges) >= TubeLoopAlignment;
+}
+
+//------------------------------------------------------------------------------------------------
 bool IsShortLoop(const SurfaceMesh& mesh, const double* xyz, int32_t a, int32_t b, int64_t maxEdges,
   double maxLength, int32_t avoidTail, int32_t avoidHead)
 {

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace pcstest
@@ -137,6 +138,37 @@ inline double QualityValue(vtkPolyData* mesh, const char* name)
   quality->Update();
   vtkDataArray* array = quality->GetOutput()->GetFieldData()->GetArray(name);
   return array ? array->GetTuple1(0) : -1.0;
+}
+
+/// `mesh` is one closed, manifold, consistently oriented surface of the given genus over `points`
+/// vertices, hence with 2 points - 4 + 4 genus triangles (Euler: V - E + T = 2 - 2 genus, 3 T = 2
+/// E), all checked with vtkReconstructionQuality (no distances); `what` names the case in the
+/// message.
+inline bool CheckClosedSurface(
+  vtkPolyData* mesh, vtkIdType points, int genus, const std::string& what)
+{
+  vtkNew<vtkReconstructionQuality> quality;
+  quality->SetInputData(mesh);
+  quality->ComputeDistancesOff();
+  quality->Update();
+  vtkFieldData* field = quality->GetOutput()->GetFieldData();
+  auto value = [field](const char* name)
+  {
+    vtkDataArray* array = field->GetArray(name);
+    return array ? array->GetTuple1(0) : -1.0;
+  };
+  PCS_CHECK(value("NumberOfNonManifoldEdges") == 0 && value("NumberOfNonManifoldVertices") == 0,
+    what << ": not manifold");
+  PCS_CHECK(value("OrientationConsistency") == 1.0, what << ": not oriented");
+  PCS_CHECK(value("NumberOfConnectedComponents") == 1,
+    what << ": " << value("NumberOfConnectedComponents") << " components, expected 1");
+  PCS_CHECK(value("NumberOfBoundaryEdges") == 0 && value("Genus") == genus,
+    what << ": " << value("NumberOfBoundaryEdges") << " boundary edges, genus " << value("Genus")
+         << ", expected closed genus " << genus);
+  const double triangles = 2.0 * static_cast<double>(points) - 4.0 + 4.0 * genus;
+  PCS_CHECK(value("NumberOfTriangles") == triangles,
+    what << ": " << value("NumberOfTriangles") << " triangles, expected " << triangles);
+  return true;
 }
 
 /// The largest `distance` (a function of a point, e.g. to a known surface) over the centroids of

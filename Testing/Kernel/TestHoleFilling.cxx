@@ -1118,6 +1118,89 @@ void TestLoopVectorArea()
   CHECK(area[2] == -3.0 * s * s, "reversed loop's area %g, expected %g", area[2], -3.0 * s * s);
 }
 
+// JoinsLoopsAroundTube on one mesh of three pieces: an open cylinder (radius 1, 4 rings of 12
+// points), a flat annulus (radii 1 and 2, 12 points each) and a shallow cap (a disc of 12 points
+// of radius 1 lifted to the sphere of radius 4: its border is a hole of a curved surface). The two
+// rims of the cylinder go around a tube (LV above 0.99, see below); the annulus's loops and the
+// cap's border do not (LV 0 and about 0.13), whichever loop they are paired with.
+void TestJoinsLoopsAroundTube()
+{
+  const int m = 12;
+  const double pi = std::acos(-1.0);
+  std::vector<double> xyz;
+  auto angle = [&](int j) { return 2.0 * pi * j / m; };
+  for (int k = 0; k < 4; ++k) // cylinder: points k m + j
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      xyz.insert(xyz.end(), { std::cos(angle(j)), std::sin(angle(j)), 0.5 * k });
+    }
+  }
+  const int annulus = 4 * m; // inner ring, then outer ring, at z = 10
+  for (double radius : { 1.0, 2.0 })
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      xyz.insert(xyz.end(), { radius * std::cos(angle(j)), radius * std::sin(angle(j)), 10.0 });
+    }
+  }
+  const int cap = annulus + 2 * m; // centre, then the border ring, on the sphere of radius 4
+  xyz.insert(xyz.end(), { 0.0, 0.0, 24.0 });
+  for (int j = 0; j < m; ++j)
+  {
+    xyz.insert(xyz.end(), { std::cos(angle(j)), std::sin(angle(j)), 20.0 + std::sqrt(15.0) });
+  }
+  pcs::SurfaceMesh mesh(static_cast<int32_t>(xyz.size() / 3));
+  bool built = true;
+  auto quads = [&](int first, int second)
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      const int32_t a = first + j, b = first + (j + 1) % m, c = second + (j + 1) % m,
+                    d = second + j;
+      built = mesh.AddTriangle(a, b, c) >= 0 && mesh.AddTriangle(a, c, d) >= 0 && built;
+    }
+  };
+  for (int k = 0; k < 3; ++k)
+  {
+    quads(k * m, (k + 1) * m);
+  }
+  quads(annulus, annulus + m);
+  for (int j = 0; j < m; ++j)
+  {
+    built = mesh.AddTriangle(cap, cap + 1 + j, cap + 1 + (j + 1) % m) >= 0 && built;
+  }
+  CHECK(built, "tube test mesh: a triangle was refused");
+  // Each loop by one of its boundary half-edges.
+  std::map<int, std::pair<int32_t, int32_t>> loops; // first point of the piece's ring -> half-edge
+  for (int32_t v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    for (int32_t w = 0; w < mesh.GetNumberOfVertices(); ++w)
+    {
+      if (v != w && mesh.FindTriangle(v, w) >= 0 && mesh.IsBoundaryHalfEdge(v, w))
+      {
+        loops.emplace(v < cap ? v - v % m : cap + 1, std::make_pair(v, w));
+      }
+    }
+  }
+  CHECK(loops.size() == 5, "tube test mesh: %d loops, expected 5", static_cast<int>(loops.size()));
+  if (loops.size() != 5)
+  {
+    return;
+  }
+  const auto bottom = loops[0], top = loops[3 * m], inner = loops[annulus],
+             outer = loops[annulus + m], rim = loops[cap + 1];
+  auto joins = [&](const std::pair<int32_t, int32_t>& e, const std::pair<int32_t, int32_t>& f)
+  {
+    return pcs::holes::JoinsLoopsAroundTube(mesh, xyz.data(), e.first, e.second, f.first, f.second);
+  };
+  CHECK(joins(bottom, top) && joins(top, bottom), "the cylinder's rims go around a tube");
+  CHECK(!joins(bottom, inner) && !joins(inner, top), "the annulus's inner loop is a hole");
+  CHECK(!joins(outer, top) && !joins(inner, outer), "the annulus's loops are not around a tube");
+  CHECK(!joins(rim, bottom) && !joins(top, rim), "the cap's border is a hole of a curved surface");
+  CHECK(!joins(rim, rim), "the cap's border paired with itself");
+}
+
 int main()
 {
   TestPolygonPredicates();
@@ -1129,6 +1212,7 @@ int main()
   TestLoopVectorArea();
   TestDegenerateFills();
   TestTrianglesIntersect();
+  TestJoinsLoopsAroundTube();
   std::printf("%d failure(s)\n", Failures);
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -619,7 +619,8 @@ bool EstimateNormals(PointBins& bins,
   double scanLineRadiusFactor,
   double rowLinearity,
   double rowRadiusFactor,
-  double rowShare)
+  double rowShare,
+  bool neighborsGiven)
 {
   normals.assign(3 * static_cast<size_t>(std::max(n, 0)), 0.0);
   variation.assign(static_cast<size_t>(std::max(n, 0)), 1.0);
@@ -632,7 +633,9 @@ bool EstimateNormals(PointBins& bins,
     return [&progress, from, to](double fraction)
     { return !progress || progress(from + (to - from) * fraction); };
   };
-  if (!FindNearestNeighbors(bins, xyz, n, others, neighbors, progressIn(0.0, 0.8)))
+  const bool given =
+    neighborsGiven && neighbors.size() == static_cast<size_t>(std::max(n, 0)) * others;
+  if (!given && !FindNearestNeighbors(bins, xyz, n, others, neighbors, progressIn(0.0, 0.8)))
   {
     return false;
   }

@@ -118,7 +118,10 @@ bool OrientNormals(const double* xyz,
 ///
 /// `bins`: PointBins::Build on the same `xyz` and `n`, with or without coordinates (the off-line
 /// passes file them when they need them); one grid for the search, both off-line passes and the
-/// caller's own radius queries.
+/// caller's own radius queries. With `neighborsGiven`, `neighbors` already holds that table
+/// (FindNearestNeighbors on the same bins, points and min(sampleSize, n) - 1 neighbours, e.g.
+/// searched by the caller for its outlier rule) and the search is skipped; a table of another
+/// size is searched again.
 bool EstimateNormals(PointBins& bins,
   const double* xyz,
   int32_t n,
@@ -134,7 +137,8 @@ bool EstimateNormals(PointBins& bins,
   double scanLineRadiusFactor = 4.0,
   double rowLinearity = 0.0,
   double rowRadiusFactor = 2.0,
-  double rowShare = 0.5);
+  double rowShare = 0.5,
+  bool neighborsGiven = false);
 }
 
 #endif

@@ -2692,38 +2692,6 @@ int vtkCDTAdvancingFront::RequestData(
     vtkWarningMacro(
       "Skipped " << this->NumberOfSkippedPoints << " point(s) with NaN or infinite coordinates.");
   }
-  // Far outliers (ours, the rule and parameter of the other surface filters,
-  // pcs::FindOutliersAndPiles): left out like non-finite points, so that no front edge reaches
-  // them (clutter around a sphere was meshed into pieces of long triangles, and one point 10^4
-  // radii away gave the front a ball holding every point).
-  if (this->OutlierFactor > 0.0 && local > pcs::PileNeighbors)
-  {
-    std::vector<int32_t> ids(static_cast<size_t>(local));
-    std::iota(ids.begin(), ids.end(), 0);
-    std::vector<uint8_t> outlier;
-    std::vector<int32_t> firstOf; // (the piles are merged below, on the normals' table)
-    int64_t copies = 0;
-    this->NumberOfOutliers =
-      pcs::FindOutliersAndPiles(xyz.data(), ids, this->OutlierFactor, outlier, firstOf, copies);
-    if (this->NumberOfOutliers > 0)
-    {
-      Id kept = 0;
-      for (Id k = 0; k < local; ++k)
-      {
-        if (!outlier[k])
-        {
-          std::copy_n(&xyz[3 * static_cast<size_t>(k)], 3, &xyz[3 * static_cast<size_t>(kept)]);
-          inputId[kept++] = inputId[k];
-        }
-      }
-      local = kept;
-      xyz.resize(3 * static_cast<size_t>(local));
-      inputId.resize(static_cast<size_t>(local));
-      vtkWarningMacro("Excluded " << this->NumberOfOutliers << " far outlier(s) (OutlierFactor "
-                                  << this->OutlierFactor
-                                  << "): point data Used = 0, field data NumberOfOutliers.");
-    }
-  }
   if (local < 3)
   {
     vtkWarningMacro(
@@ -2747,12 +2715,103 @@ int vtkCDTAdvancingFront::RequestData(
   // the estimated normals and the duplicates below. Exactly equal points
   // (pcs::FindExactDuplicates), and piles of near-coincident points (MergePiles, on the table of
   // the normal estimation, else on the table for the local spacing below).
-  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
-    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  auto boxDiagonal = [&bounds]()
+  {
+    return std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+      (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+      (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  };
+  double diagonal = boxDiagonal();
   std::vector<Id> firstCopy;
   pcs::FindExactDuplicates(xyz.data(), 3, nullptr, local, firstCopy);
   bool pilesChecked = false;
+
+  // Far outliers (ours; OutlierFactor, the rule and parameter of the other surface filters):
+  // left out like non-finite points, so that no front edge reaches them (clutter around a sphere
+  // was meshed into pieces of long triangles, and one point 10^4 radii away gave the front a ball
+  // holding every point). On a cloud without exact copies the rule reads the first table the
+  // filter searches anyway (of the normal estimation, or of the local spacing when the normals
+  // are given), searched here on the same bins and handed on (the same rows); otherwise, or when
+  // that table is narrower than the rule's 8 neighbours, a search of its own over the distinct
+  // positions (pcs::FindOutliersAndPiles). With outliers, the bins and copies are made again
+  // without them (the table too).
+  const bool givenNormals = this->UseInputNormals && this->GetInputArrayToProcess(0, input);
+  std::vector<int32_t> firstTable; // the table handed on (empty: none)
+  int firstTableOthers = 0;
+  if (this->OutlierFactor > 0.0 && local > pcs::PileNeighbors)
+  {
+    bool distinct = true;
+    for (Id k = 0; k < local && distinct; ++k)
+    {
+      distinct = firstCopy[k] == k;
+    }
+    const int others = givenNormals ? std::min<int>(9, local - 1)
+                                    : std::max(0, std::min<int>(this->NormalSampleSize, local) - 1);
+    std::vector<uint8_t> outlier;
+    if (distinct && others >= pcs::OutlierNeighbors)
+    {
+      std::vector<int32_t> table;
+      if (!pcs::FindNearestNeighbors(bins,
+            xyz.data(),
+            static_cast<int32_t>(local),
+            others,
+            table,
+            [this](double) { return !this->GetAbortExecute(); }))
+      {
+        return finish();
+      }
+      std::vector<int32_t> firstOfPile;
+      int64_t pileCopies = 0;
+      this->NumberOfOutliers = pcs::FlagOutliersAndPiles(xyz.data(),
+        static_cast<int32_t>(local),
+        table,
+        others,
+        this->OutlierFactor,
+        outlier,
+        firstOfPile,
+        pileCopies);
+      if (this->NumberOfOutliers == 0)
+      {
+        firstTable.swap(table);
+        firstTableOthers = others;
+      }
+    }
+    else
+    {
+      std::vector<int32_t> ids(static_cast<size_t>(local));
+      std::iota(ids.begin(), ids.end(), 0);
+      std::vector<int32_t> firstOfPile; // (the piles are merged below, on the normals' table)
+      int64_t pileCopies = 0;
+      this->NumberOfOutliers = pcs::FindOutliersAndPiles(
+        xyz.data(), ids, this->OutlierFactor, outlier, firstOfPile, pileCopies);
+    }
+    if (this->NumberOfOutliers > 0)
+    {
+      Id kept = 0;
+      for (Id k = 0; k < local; ++k)
+      {
+        if (!outlier[k])
+        {
+          std::copy_n(&xyz[3 * static_cast<size_t>(k)], 3, &xyz[3 * static_cast<size_t>(kept)]);
+          inputId[kept++] = inputId[k];
+        }
+      }
+      local = kept;
+      xyz.resize(3 * static_cast<size_t>(local));
+      inputId.resize(static_cast<size_t>(local));
+      vtkWarningMacro("Excluded " << this->NumberOfOutliers << " far outlier(s) (OutlierFactor "
+                                  << this->OutlierFactor
+                                  << "): point data Used = 0, field data NumberOfOutliers.");
+      if (local < 3)
+      {
+        vtkWarningMacro("Fewer than 3 points left (" << local << "): no triangle is made.");
+        return finish();
+      }
+      pcs::BuildSurfaceSampleBins(bins, xyz.data(), local, /*withCoordinates=*/true, bounds);
+      diagonal = boxDiagonal();
+      pcs::FindExactDuplicates(xyz.data(), 3, nullptr, local, firstCopy);
+    }
+  }
 
   // Normals: the input's, else estimated (vtkPCANormalEstimation, consistently oriented). Input
   // normals that are zero-length or not finite count as missing: those are estimated too.
@@ -2796,7 +2855,8 @@ int vtkCDTAdvancingFront::RequestData(
                              std::vector<double>& estimatedNormals,
                              std::vector<int32_t>& table,
                              int& tableOthers,
-                             std::vector<double>* tableStretch)
+                             std::vector<double>* tableStretch,
+                             bool tableGiven = false)
   {
     // The neighbourhood of a point: itself and its NormalSampleSize - 1 nearest other points (the
     // NormalSampleSize nearest points of vtkPCANormalEstimation, which include the point), for
@@ -2822,7 +2882,8 @@ int vtkCDTAdvancingFront::RequestData(
       ScanLineRadiusFactor,
       RowLinearity,
       RowRadiusFactor,
-      RowShare);
+      RowShare,
+      tableGiven);
   };
   // The distinct positions (one per group of copies, firstCopy), their coordinates and (withBins)
   // bins.
@@ -2897,8 +2958,17 @@ int vtkCDTAdvancingFront::RequestData(
       distinctPositions(positions, /*withBins=*/true);
       if (static_cast<Id>(positions.Ids.size()) == local)
       {
-        // The front's grid (the same bins): one grid for both.
-        estimateNormalsOn(xyz.data(), local, bins, estimatedNormals, knn, knnOthers, &stretch);
+        // The front's grid (the same bins): one grid for both. The table searched for the
+        // outlier rule when it has the estimation's width (the same rows).
+        const bool given = !firstTable.empty() &&
+          firstTableOthers == std::max(0, std::min<int>(this->NormalSampleSize, local) - 1);
+        if (given)
+        {
+          knn.swap(firstTable);
+          firstTable.clear();
+        }
+        estimateNormalsOn(
+          xyz.data(), local, bins, estimatedNormals, knn, knnOthers, &stretch, given);
         scanLinesChecked = knnOthers > 0;
         if (pilesChecked || knnOthers == 0)
         {
@@ -3116,6 +3186,13 @@ int vtkCDTAdvancingFront::RequestData(
   }
   positionRows = std::vector<int32_t>();
   positionRowsStretch = std::vector<double>();
+  if ((localRay || localRadius || noiseBand || !scanLinesChecked) && knnOthers != localOthers &&
+    !firstTable.empty() && firstTableOthers == localOthers)
+  {
+    knn.swap(firstTable); // (searched for the outlier rule: the same rows)
+    firstTable.clear();
+    knnOthers = localOthers;
+  }
   if ((localRay || localRadius || noiseBand || !scanLinesChecked) && knnOthers != localOthers)
   {
     knnOthers = 0;

@@ -458,10 +458,13 @@ public:
    * whose reach (mean distance to its 8 nearest points) is over 4 times the cloud's median reach
    * and over OutlierFactor times the median reach of its 8 nearest points that are not, unless it
    * lies on a sparse part of the surface (its 8 nearest sparse too and flat around it: see the
-   * peel's docs); a pile of near-coincident points counts as one point. It costs one search of
-   * the 8 nearest neighbours before the normal estimation. Without it, clutter around a surface
-   * was meshed into pieces of long triangles, and one point 10^4 radii away gave the front a
-   * ball holding every point. Default 8.0; range [0, 1000]; 0: off.
+   * peel's docs); a pile of near-coincident points counts as one point. The rule reads the
+   * first table of nearest neighbours the filter searches anyway (the normal estimation's, or the
+   * local spacing's when the normals are given; a search of its own when the cloud has exact
+   * copies or NormalSampleSize is under 9), and with outliers the filter goes on without them.
+   * Without it, clutter around a surface was meshed into pieces of long triangles, and one point
+   * 10^4 radii away gave the front a ball holding every point. Default 8.0; range [0, 1000];
+   * 0: off.
    */
   vtkSetClampMacro(OutlierFactor, double, 0.0, 1000.0);
   vtkGetMacro(OutlierFactor, double);

@@ -91,6 +91,9 @@ constexpr double ScanLineShare = 0.5;
 constexpr double StandingCosine = 0.3420201433256687;       // cos 70 degrees
 constexpr double StandingAngleCosine = -0.8660254037844386; // cos 150 degrees
 constexpr double StandingSides = 0.5;
+// Step 7 on every triangle (SwapObtuseEdges): the two new triangles of a swap fold by at most
+// this many degrees.
+constexpr double ObtuseSwapFold = 30.0;
 // Point ids are 32-bit in the kernels (pcs::SurfaceMesh).
 constexpr vtkIdType MaximumNumberOfPoints = 500000000;
 
@@ -255,7 +258,7 @@ public:
 
   // Counts.
   vtkIdType LostPoints = 0, Islands = 0, Holes = 0, Bridges = 0, Chords = 0, HolesFilled = 0,
-            HolesLeftOpen = 0, Swaps = 0, Inserted = 0, Added = 0, LoopsClosed = 0,
+            HolesLeftOpen = 0, Swaps = 0, ObtuseSwaps = 0, Inserted = 0, Added = 0, LoopsClosed = 0,
             LoopsFilledByDihedral = 0, EndsCapped = 0, Grown = 0, FillsRefused = 0;
   bool Aborted = false;
   struct LongTriangle
@@ -356,6 +359,11 @@ public:
     const double centre[3],
     double outward) const;
   void Step7Swaps();
+  bool SwapEdge(int32_t a, int32_t b, uint8_t stage, bool byAngle, int64_t made[2]);
+  void TriangleNormal(int32_t a, int32_t b, int32_t c, double n[3]) const;
+  void AngleCosines(int32_t a, int32_t b, int32_t c, double cosines[3]) const;
+  double LargestCosine(int32_t a, int32_t b, int32_t c) const;
+  void SwapObtuseEdges();
   void OrientOutwards();
   void RefineAndFairFills(std::vector<int32_t>& triangles, std::vector<uint8_t>& stages,
     std::vector<double>& added, double begin, double end);
@@ -3856,6 +3864,113 @@ bool Reconstruction::IsNaturalBorder(const std::vector<int32_t>& loop,
 }
 
 //------------------------------------------------------------------------------------------------
+// The edge ab of the triangles (a, b, c) and (b, a, d) replaced by cd (triangles (c, a, d) and
+// (d, b, c)) when cd is not an edge yet, the new triangles face like the old ones, are not
+// degenerate (exact) and leave a, b, c and d with one fan each, and: cd is shorter than ab
+// (byAngle false, the paper's step 7), or the smallest angle of the pair grows (byAngle true).
+// The new triangles get `stage`, or with 0 the stages of the triangles they replace; their ids
+// are written to `made`.
+bool Reconstruction::SwapEdge(int32_t a, int32_t b, uint8_t stage, bool byAngle, int64_t made[2])
+{
+  if (this->Mesh.GetEdgeValence(a, b) != 2)
+  {
+    return false;
+  }
+  const int64_t t1 = this->Mesh.FindTriangle(a, b), t2 = this->Mesh.FindTriangle(b, a);
+  const int32_t c = this->Mesh.OppositeVertex(a, b), d = this->Mesh.OppositeVertex(b, a);
+  if (c < 0 || d < 0 || c == d || this->Mesh.GetEdgeValence(c, d) > 0)
+  {
+    return false;
+  }
+  if (byAngle ? !(std::max(this->LargestCosine(c, a, d), this->LargestCosine(d, b, c)) <
+                  std::max(this->LargestCosine(a, b, c), this->LargestCosine(b, a, d)))
+              : !(Distance(this->P(c), this->P(d)) < Distance(this->P(a), this->P(b))))
+  {
+    return false;
+  }
+  // New triangles (c, a, d) and (d, b, c) must face like the old ones.
+  double n1[3], n2[3], old1[3], old2[3], sum[3];
+  this->TriangleNormal(a, b, c, old1);
+  this->TriangleNormal(b, a, d, old2);
+  vtkMath::Add(old1, old2, sum);
+  this->TriangleNormal(c, a, d, n1);
+  this->TriangleNormal(d, b, c, n2);
+  if (!(vtkMath::Dot(n1, sum) > 0 && vtkMath::Dot(n2, sum) > 0) ||
+    pcs::projected::Collinear(this->P(c), this->P(a), this->P(d)) ||
+    pcs::projected::Collinear(this->P(d), this->P(b), this->P(c)))
+  {
+    return false;
+  }
+  const uint8_t s1 = this->Stage[t1], s2 = this->Stage[t2];
+  this->Mesh.RemoveTriangle(t1);
+  this->Mesh.RemoveTriangle(t2);
+  const int64_t u1 = this->Mesh.AddTriangle(c, a, d);
+  const int64_t u2 = u1 >= 0 ? this->Mesh.AddTriangle(d, b, c) : -1;
+  bool ok = u1 >= 0 && u2 >= 0;
+  for (int32_t v : { a, b, c, d })
+  {
+    ok = ok && this->Mesh.GetNumberOfFans(v) == 1;
+  }
+  if (!ok)
+  {
+    if (u2 >= 0)
+    {
+      this->Mesh.RemoveTriangle(u2);
+    }
+    if (u1 >= 0)
+    {
+      this->Mesh.RemoveTriangle(u1);
+    }
+    const int64_t r1 = this->Mesh.AddTriangle(a, b, c);
+    const int64_t r2 = this->Mesh.AddTriangle(b, a, d);
+    this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 6);
+    if (r1 >= 0 && r2 >= 0)
+    {
+      this->Stage[r1] = s1;
+      this->Stage[r2] = s2;
+    }
+    return false;
+  }
+  this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 6);
+  this->Stage[u1] = stage > 0 ? stage : s1;
+  this->Stage[u2] = stage > 0 ? stage : s2;
+  made[0] = u1;
+  made[1] = u2;
+  return true;
+}
+
+// The normal of the triangle (a, b, c), not normalised.
+void Reconstruction::TriangleNormal(int32_t a, int32_t b, int32_t c, double n[3]) const
+{
+  double u[3], v[3];
+  vtkMath::Subtract(this->P(b), this->P(a), u);
+  vtkMath::Subtract(this->P(c), this->P(a), v);
+  vtkMath::Cross(u, v, n);
+}
+
+// The cosines of the angles of the triangle (a, b, c) at a, b and c (1 at a repeated point).
+void Reconstruction::AngleCosines(int32_t a, int32_t b, int32_t c, double cosines[3]) const
+{
+  const int32_t ids[3] = { a, b, c };
+  for (int i = 0; i < 3; ++i)
+  {
+    double u[3], v[3];
+    vtkMath::Subtract(this->P(ids[(i + 1) % 3]), this->P(ids[i]), u);
+    vtkMath::Subtract(this->P(ids[(i + 2) % 3]), this->P(ids[i]), v);
+    const double nu = vtkMath::Norm(u), nv = vtkMath::Norm(v);
+    cosines[i] = nu > 0 && nv > 0 ? vtkMath::Dot(u, v) / (nu * nv) : 1.0;
+  }
+}
+
+// The cosine of the smallest angle of the triangle (a, b, c).
+double Reconstruction::LargestCosine(int32_t a, int32_t b, int32_t c) const
+{
+  double cosines[3];
+  this->AngleCosines(a, b, c, cosines);
+  return std::max(std::max(cosines[0], cosines[1]), cosines[2]);
+}
+
+//------------------------------------------------------------------------------------------------
 // Step 7: bridge and chord edges replaced by the shorter diagonal of their two triangles.
 void Reconstruction::Step7Swaps()
 {
@@ -3863,70 +3978,85 @@ void Reconstruction::Step7Swaps()
   {
     return;
   }
-  auto normal = [this](int32_t a, int32_t b, int32_t c, double n[3]) {
-    double u[3], v[3];
-    vtkMath::Subtract(this->P(b), this->P(a), u);
-    vtkMath::Subtract(this->P(c), this->P(a), v);
-    vtkMath::Cross(u, v, n);
-  };
   for (const auto& link : this->Links)
   {
-    const int32_t a = link[0], b = link[1];
-    if (this->Mesh.GetEdgeValence(a, b) != 2)
+    int64_t made[2];
+    if (this->SwapEdge(link[0], link[1], 7, false, made))
+    {
+      ++this->Swaps;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+// Step 7 on every triangle (ours, issue 7): the edge ab opposite an obtuse angle at c is swapped
+// for cd when the smallest angle of the two triangles grows (Lawson's local max-min angle swap)
+// and the new triangles fold by at most ObtuseSwapFold (they stay in the surface the old pair
+// lies in), for two triangles of one stage other than hole filling. Step 1 joins three nearly
+// collinear points of a regular sampling by their two short edges and the long one (the
+// shortest-edge order takes ab before the edges to d); the paper's "cd shorter than ab" does not
+// hold there (cd is as long as ab). New triangles are examined in turn; every swap raises the
+// sorted vector of the mesh's angles, so the pass ends.
+void Reconstruction::SwapObtuseEdges()
+{
+  if (!this->Self->GetSwapBridgeEdges())
+  {
+    return;
+  }
+  const double cosineFold = std::cos(vtkMath::RadiansFromDegrees(ObtuseSwapFold));
+  std::vector<int64_t> pending;
+  for (int64_t t = this->Mesh.GetNumberOfTriangleIds() - 1; t >= 0; --t)
+  {
+    if (!this->Mesh.IsTriangleRemoved(t))
+    {
+      pending.push_back(t);
+    }
+  }
+  while (!pending.empty())
+  {
+    const int64_t t = pending.back();
+    pending.pop_back();
+    if (this->Mesh.IsTriangleRemoved(t))
     {
       continue;
     }
-    const int64_t t1 = this->Mesh.FindTriangle(a, b), t2 = this->Mesh.FindTriangle(b, a);
-    const int32_t c = this->Mesh.OppositeVertex(a, b), d = this->Mesh.OppositeVertex(b, a);
-    if (c < 0 || d < 0 || c == d || this->Mesh.GetEdgeValence(c, d) > 0 ||
-      !(Distance(this->P(c), this->P(d)) < Distance(this->P(a), this->P(b))))
+    const int32_t* tri = this->Mesh.GetTriangle(t);
+    double cosines[3];
+    this->AngleCosines(tri[0], tri[1], tri[2], cosines);
+    const int corner =
+      static_cast<int>(std::min_element(cosines, cosines + 3) - cosines); // the largest angle
+    if (!(cosines[corner] < 0.0))
     {
       continue;
     }
-    // New triangles (c, a, d) and (d, b, c) must face like the old ones.
-    double n1[3], n2[3], old1[3], old2[3], sum[3];
-    normal(a, b, c, old1);
-    normal(b, a, d, old2);
-    vtkMath::Add(old1, old2, sum);
-    normal(c, a, d, n1);
-    normal(d, b, c, n2);
-    if (!(vtkMath::Dot(n1, sum) > 0 && vtkMath::Dot(n2, sum) > 0) ||
-      pcs::projected::Collinear(this->P(c), this->P(a), this->P(d)) ||
-      pcs::projected::Collinear(this->P(d), this->P(b), this->P(c)))
+    const int32_t c = tri[corner], a = tri[(corner + 1) % 3], b = tri[(corner + 2) % 3];
+    const int32_t d = this->Mesh.OppositeVertex(b, a);
+    if (d < 0 || d == c)
     {
       continue;
     }
-    this->Mesh.RemoveTriangle(t1);
-    this->Mesh.RemoveTriangle(t2);
-    const int64_t u1 = this->Mesh.AddTriangle(c, a, d);
-    const int64_t u2 = u1 >= 0 ? this->Mesh.AddTriangle(d, b, c) : -1;
-    bool ok = u1 >= 0 && u2 >= 0;
-    for (int32_t v : { a, b, c, d })
+    // Pairs of one stage, not of hole filling: the stages stay true (a step 1 triangle has only
+    // correct or boundary points), and the fills are refined and faired afterwards.
+    const uint8_t stage = this->Stage[t];
+    if (stage == 6 || stage == 7 || this->Stage[this->Mesh.FindTriangle(b, a)] != stage)
     {
-      ok = ok && this->Mesh.GetNumberOfFans(v) == 1;
-    }
-    if (!ok)
-    {
-      if (u2 >= 0)
-      {
-        this->Mesh.RemoveTriangle(u2);
-      }
-      if (u1 >= 0)
-      {
-        this->Mesh.RemoveTriangle(u1);
-      }
-      const int64_t r1 = this->Mesh.AddTriangle(a, b, c);
-      const int64_t r2 = this->Mesh.AddTriangle(b, a, d);
-      this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 6);
-      if (r1 >= 0 && r2 >= 0)
-      {
-        this->Stage[r1] = this->Stage[t1];
-        this->Stage[r2] = this->Stage[t2];
-      }
       continue;
     }
-    this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 7);
-    ++this->Swaps;
+    double n1[3], n2[3];
+    this->TriangleNormal(c, a, d, n1);
+    this->TriangleNormal(d, b, c, n2);
+    if (!(vtkMath::Normalize(n1) > 0 && vtkMath::Normalize(n2) > 0 &&
+          vtkMath::Dot(n1, n2) >= cosineFold))
+    {
+      continue;
+    }
+    int64_t made[2];
+    if (this->SwapEdge(a, b, 0, true, made))
+    {
+      ++this->ObtuseSwaps;
+      pending.push_back(made[0]);
+      pending.push_back(made[1]);
+    }
   }
 }
 
@@ -4684,6 +4814,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
     pcs::AddFieldCount(fd, "NumberOfHolesFilled", r.HolesFilled);
     pcs::AddFieldCount(fd, "NumberOfHolesLeftOpen", r.HolesLeftOpen);
     pcs::AddFieldCount(fd, "NumberOfSwaps", r.Swaps);
+    pcs::AddFieldCount(fd, "NumberOfObtuseSwaps", r.ObtuseSwaps);
     pcs::AddFieldCount(fd, "NumberOfInsertedPoints", r.Inserted);
     pcs::AddFieldCount(fd, "NumberOfAddedPoints", r.Added);
     pcs::AddFieldCount(fd, "NumberOfSmallLoopsClosed", r.LoopsClosed);
@@ -5038,6 +5169,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
     }
     grown.reset();
   }
+  r.SwapObtuseEdges();
   if (r.Bridges > 0)
   {
     steps += ", 3, 4";
@@ -5050,7 +5182,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
   {
     steps += ", 6";
   }
-  if (r.Bridges + r.Chords > 0)
+  if (r.Bridges + r.Chords + r.ObtuseSwaps > 0)
   {
     steps += ", 7";
   }

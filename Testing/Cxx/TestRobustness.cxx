@@ -4,9 +4,10 @@
 // - a warning or an error is reported where the input is unusable (no input, no points, one or
 //   two points, all points identical, collinear points);
 // - the output is valid: a vtkPolyData with all the input points (filters pass every point
-//   through), every cell id in range, no cell on a non-finite point, no triangle with a repeated
-//   vertex, and for the filters that promise a manifold surface no non-manifold edge or vertex
-//   and no zero-area triangle (exactly collinear vertices) (vtkReconstructionQuality);
+//   through) and only the points it reports as added (NumberOfAddedPoints), every cell id in range,
+//   no cell on a non-finite point, no triangle with a repeated vertex, and for the filters that
+//   promise a manifold surface no non-manifold edge or vertex and no zero-area triangle (exactly
+//   collinear vertices) (vtkReconstructionQuality);
 // - point data arrays of every common type pass through unchanged; one of the wrong length (a
 //   corrupt input) is dropped with a warning.
 // Pairs of inputs that describe the same surface must give the same result: a 10^6 offset on
@@ -659,9 +660,15 @@ bool CheckOutput(const FilterEntry& filter, const std::string& label, vtkPolyDat
   vtkPolyData* output, bool checkArrays)
 {
   PCS_CHECK(output != nullptr, label << ": no output");
-  const vtkIdType n = input->GetNumberOfPoints();
-  PCS_CHECK(output->GetNumberOfPoints() == n,
-    label << ": " << output->GetNumberOfPoints() << " output points for " << n << " input points");
+  // The input points, then the points the filter reports as added (vtkGreedySurfaceTriangulation
+  // refines its hole fills: NumberOfAddedPoints, Status 5).
+  const vtkIdType added = output->GetFieldData()->GetArray("NumberOfAddedPoints")
+    ? pcstest::FieldCount(output, "NumberOfAddedPoints")
+    : 0;
+  const vtkIdType n = input->GetNumberOfPoints() + added;
+  PCS_CHECK(added >= 0 && output->GetNumberOfPoints() == n,
+    label << ": " << output->GetNumberOfPoints() << " output points for "
+          << input->GetNumberOfPoints() << " input points and " << added << " added");
   for (vtkIdType c = 0; c < output->GetNumberOfCells(); ++c)
   {
     vtkIdType npts;
@@ -707,8 +714,9 @@ bool CheckOutput(const FilterEntry& filter, const std::string& label, vtkPolyDat
       }
       vtkDataArray* passed = output->GetPointData()->GetArray(source->GetName());
       PCS_CHECK(passed, label << ": point data " << source->GetName() << " not passed");
+      // One tuple per output point: the input's, then those of the added points.
       PCS_CHECK(passed->GetDataType() == source->GetDataType() &&
-          passed->GetNumberOfTuples() == source->GetNumberOfTuples() &&
+          passed->GetNumberOfTuples() == source->GetNumberOfTuples() + added &&
           passed->GetNumberOfComponents() == source->GetNumberOfComponents(),
         label << ": point data " << source->GetName() << " changed type or size");
       for (vtkIdType i = 0; i < source->GetNumberOfTuples(); ++i)

@@ -14,7 +14,8 @@ that its capped ends face each other 1 to 1.5 spacings apart comes back closed, 
 point used; a ring whose flared hole's mouth is left open by a missing ring of the top face gets
 no cap bulging above that face; the vertices of CGAL's camel (a closed genus-0 mesh, when libcgal-demo is installed)
 give a closed genus-0 mesh, and those of its elephant (genus 3) a closed genus-3 mesh that uses
-every point; the copies of a pile of near-coincident points are Status 4 with the values of the
+every point; tori sampled on regular grids, closer along the axis than around the tube, have no
+triangle whose smallest angle is under half that of the grid's own cells; the copies of a pile of near-coincident points are Status 4 with the values of the
 pile's meshed point.
 """
 import math
@@ -22,7 +23,7 @@ import sys
 
 import numpy
 
-from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 
@@ -398,6 +399,42 @@ if elephant_data:
           and q["NumberOfBoundaryEdges"] == 0 and q["Genus"] == genus
           and q["NumberOfNonManifoldEdges"] == 0 and q["OrientationConsistency"] == 1.0,
           "elephant: every point used, closed, genus %d (%s)" % (genus, q))
+
+# Tori sampled on regular (u, v) grids, closer along u than around the tube: step 1 joins three
+# nearly collinear points of a u line by their two short edges and the long one (before the
+# edges to the next v line, about as long), slivers of up to 178 degrees that the paper's step 7
+# would not swap (the other diagonal is no shorter). The obtuse-angle swaps of step 7 must leave
+# no triangle whose smallest angle is under half that of the grid's own cells split by a diagonal
+# (the narrowest cells, on the inner equator: atan(u step / v step)), closed, genus 1, 2V
+# triangles, every point used.
+def smallest_angles(points, triangles):
+    corners = points[triangles]
+    least = numpy.full(len(triangles), 180.0)
+    for i in range(3):
+        u = corners[:, (i + 1) % 3] - corners[:, i]
+        v = corners[:, (i + 2) % 3] - corners[:, i]
+        cosine = (u * v).sum(1) / (numpy.linalg.norm(u, axis=1) * numpy.linalg.norm(v, axis=1))
+        least = numpy.minimum(least, numpy.degrees(numpy.arccos(numpy.clip(cosine, -1, 1))))
+    return least
+
+
+for nu, nv, r in ((200, 20, 0.35), (120, 12, 0.3)):
+    u, v = numpy.meshgrid(numpy.arange(nu) * 2 * math.pi / nu, numpy.arange(nv) * 2 * math.pi / nv)
+    u, v = u.ravel(), v.ravel()
+    grid = numpy.c_[(1 + r * numpy.cos(v)) * numpy.cos(u), (1 + r * numpy.cos(v)) * numpy.sin(u),
+                    r * numpy.sin(v)]
+    bound = 0.5 * math.degrees(math.atan((2 * math.pi * (1 - r) / nu) / (2 * math.pi * r / nv)))
+    gridded = vtkGreedySurfaceTriangulation()
+    gridded.SetInputData(cloud_from_array(grid))
+    gridded.Update()
+    out = gridded.GetOutput()
+    least = smallest_angles(grid, vtk_to_numpy(out.GetPolys().GetConnectivityArray()).reshape(-1, 3))
+    q = quality(out)
+    check(out.GetNumberOfPolys() == 2 * nu * nv and q["NumberOfBoundaryEdges"] == 0
+          and q["Genus"] == 1 and q["NumberOfUsedPoints"] == nu * nv,
+          "grid torus %d x %d: closed, genus 1, 2V triangles, every point used (%s)" % (nu, nv, q))
+    check(least.min() >= bound, "grid torus %d x %d: smallest angle %.2f degrees, under half the "
+          "grid cells' (%.2f)" % (nu, nv, least.min(), bound))
 
 # A pile's copies take the pile's meshed point as representative even when the compaction of the
 # ids moved that point: a far outlier first, then one pile point, the sphere, the pile's other 7

@@ -128,6 +128,18 @@ constexpr double SparseSpacingRatio = 1.5;
 // keeps its bound (its normals are those of its triangles); at 1.5 more clean clouds changed
 // (CGAL's spool vertex set: Hausdorff distance 8.05 -> 8.50 mean spacings).
 constexpr double CurvedRaySpacingRatio = 2.0;
+// Fans across a concave rim (ours; III.B only). Where the front runs along the rim of a real
+// hole, the valid candidate nearest to a front edge's midpoint is the next point along the rim,
+// across the hole: the triangle's new edge from the far end of the front edge is longer than the
+// edge, it becomes a front edge itself, and the next triangle repeats it, so that one vertex fans
+// out to a run of rim points with edges growing to the neighbourhood radius and beyond (a 60 x 60
+// grid with a hole of radius 10: 14 slivers over the hole with edges up to 9 spacings, which the
+// hole filling then extended into a lid with edges of 20 spacings). A front edge longer than this
+// many local spacings (the median nearest-point distance over the point and its 9 nearest, the
+// largest of the three vertices') takes no candidate that makes a longer new edge in a triangle
+// with an angle below 15 degrees: the fan stops after its first triangle (RefuseRimFans, off by
+// default: on clean random samples it left small holes, Benchmarks/results/cdt.md).
+constexpr double FanEdgeSpacingRatio = 2.0;
 
 // The squared distance between points a and b of `xyz` in the scan-line sampling's metric
 // (pcs::StretchedLength2; `stretch` 3 values per point).
@@ -683,6 +695,8 @@ struct Parameters
   // Scan lines: a triangle of three points of one line is refused (pcs::OnOneScanLine). Not in
   // hole filling, where the cap inside a closed line (a pole's circle) has only such ears.
   bool RefuseOneLineTriangles = true;
+  // III.B: no fan across the rim of a hole (Front::ExtendsFan; RefuseRimFans).
+  bool RefuseRimFans = false;
 };
 
 class Front
@@ -765,6 +779,9 @@ public:
 
   // The mean spacing: loops shorter than 4 pi of it are holes (see KeepsGenus).
   double HoleSpacing = 0.0;
+  // Per point: the median nearest-point distance over it and its 9 nearest, over HoleSpacing
+  // (null: 1 everywhere). For ExtendsFan.
+  const double* SpacingRatio = nullptr;
 
   // The work of the front: the points gathered for candidates and for the projection tests, and
   // the mesh edges listed for the projection tests. Seed and Advance stop (OutOfWork) once it
@@ -857,6 +874,21 @@ private:
           Distance2(this->P(end), this->P(x)) > parameters.LongEar * parameters.LongEar);
     }
     return !longEdge || this->HasNoAngleBelow(e0, e1, x, parameters.MaximumLongEarCos);
+  }
+
+  // Would the strict front's triangle (e0, e1, x) extend a fan across a concave rim: is the
+  // front edge longer than FanEdgeSpacingRatio local spacings, and does the triangle add a longer
+  // edge and have an angle below 15 degrees? (See FanEdgeSpacingRatio.)
+  bool ExtendsFan(Id e0, Id e1, Id x, const Parameters& parameters) const
+  {
+    const double *a = this->P(e0), *b = this->P(e1), *c = this->P(x);
+    const double edge2 = Distance2(a, b);
+    const double spacing = FanEdgeSpacingRatio * this->HoleSpacing *
+      (this->SpacingRatio
+          ? std::max({ this->SpacingRatio[e0], this->SpacingRatio[e1], this->SpacingRatio[x] })
+          : 1.0);
+    return edge2 > spacing * spacing && std::max(Distance2(a, c), Distance2(b, c)) > edge2 &&
+      !this->HasNoAngleBelow(e0, e1, x, parameters.MaximumLongEarCos);
   }
 
   // Has the triangle (e0, e1, x) no angle whose cosine exceeds maximumCos?
@@ -1764,6 +1796,12 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& global, bo
       if (!relaxed && parameters.Radius > global.Radius &&
         Distance2(this->P(candidate->second), midpoint) > global.Radius * global.Radius &&
         !this->HasNoAngleBelow(e0, e1, candidate->second, parameters.MaximumLongEarCos))
+      {
+        continue;
+      }
+      // Nor may it extend a fan across the rim of a hole (see FanEdgeSpacingRatio).
+      if (!relaxed && parameters.RefuseRimFans &&
+        this->ExtendsFan(e0, e1, candidate->second, parameters))
       {
         continue;
       }
@@ -3418,8 +3456,10 @@ int vtkCDTAdvancingFront::RequestData(
   //   affected by it either).
   std::vector<double> scale(static_cast<size_t>(local), 1.0);
   std::vector<double> radiusScale(static_cast<size_t>(local), 1.0);
+  std::vector<double> spacingRatio; // the median over the mean, for Front::ExtendsFan
   if (localRay || localRadius)
   {
+    spacingRatio.assign(static_cast<size_t>(local), 1.0);
     const int others = knnOthers;
     vtkSMPTools::For(0, local,
       [&](Id begin, Id end)
@@ -3446,6 +3486,7 @@ int vtkCDTAdvancingFront::RequestData(
             std::nth_element(values.begin(), values.begin() + count / 2, values.begin() + count);
             const double ratio = values[count / 2] / meanSpacing;
             radiusScale[i] = ratio >= SparseSpacingRatio ? ratio : 1.0;
+            spacingRatio[i] = ratio;
           }
         }
       });
@@ -3473,6 +3514,7 @@ int vtkCDTAdvancingFront::RequestData(
     : 2.0 * meanSpacing;
   strict.MaximumCandidates = this->MaximumNumberOfCandidates;
   strict.MaximumLongEarCos = std::cos(vtkMath::RadiansFromDegrees(15.0));
+  strict.RefuseRimFans = this->RefuseRimFans;
   // II.E: an explicit smallest area, or by default a shape bound that holds at every scale of a
   // cloud of mixed density (area at least 1e-6 times the squared longest edge: a height of at
   // least 2e-6 times that edge).
@@ -3496,6 +3538,7 @@ int vtkCDTAdvancingFront::RequestData(
     mesh);
   front.SetEdgeReachCellSize(2.0 * strict.Radius);
   front.HoleSpacing = meanSpacing;
+  front.SpacingRatio = spacingRatio.empty() ? nullptr : spacingRatio.data();
   front.WorkBudget =
     static_cast<uint64_t>(std::max(MinimumWork, MaximumWorkPerPoint * static_cast<double>(usable)));
   for (Id p = 0; p < local && !front.Aborted && !front.OutOfWork; ++p)
@@ -3671,6 +3714,7 @@ void vtkCDTAdvancingFront::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNumberOfCandidates: " << this->MaximumNumberOfCandidates << "\n";
   os << indent << "NoiseBandFactor: " << this->NoiseBandFactor << "\n";
   os << indent << "OutlierFactor: " << this->OutlierFactor << "\n";
+  os << indent << "RefuseRimFans: " << (this->RefuseRimFans ? "On" : "Off") << "\n";
   os << indent << "HoleFilling: " << (this->HoleFilling ? "On" : "Off") << "\n";
   os << indent << "HoleFillingRadiusFactor: " << this->HoleFillingRadiusFactor << "\n";
   os << indent << "HoleFillingMinimumNormalDot: " << this->HoleFillingMinimumNormalDot << "\n";

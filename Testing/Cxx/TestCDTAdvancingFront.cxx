@@ -842,6 +842,73 @@ bool TestGradientWork()
   return CheckConsistentCounts(label, filter);
 }
 
+// A plane with a real hole (a bolt hole, a window): a 60 x 60 square sampled 1 apart, on a grid or
+// at random (3,600 uniform points, the same density), without the points within 10 of its
+// centre. With RefuseRimFans on the hole must stay open under the default HoleFilling: two
+// boundary loops (the square's and the hole's), every point used, no triangle over the hole (each
+// centroid at least 9.75 from the centre; the rim points are at least 10 away). Without it (and
+// before it existed) the strict front fans from single rim vertices to runs of rim points across
+// the grid's hole (14 slivers with edges up to 9 spacings, centroids 9.5 from the centre), and the
+// hole filling closes the rest; the random plane gets a triangle 9.6 from the centre.
+bool TestRealHole(bool random, bool withNormals)
+{
+  const std::string label = std::string(random ? "random" : "grid") + " plane with a hole" +
+    (withNormals ? ", input normals" : ", PCA normals");
+  const double radius = 10.0;
+  Cloud c;
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> u(-30.0, 30.0);
+  for (int i = 0; i < 3600; ++i)
+  {
+    const double x = random ? u(rng) : (i % 60) - 29.5;
+    const double y = random ? u(rng) : (i / 60) - 29.5;
+    if (std::hypot(x, y) > radius)
+    {
+      c.XYZ.insert(c.XYZ.end(), { x, y, 0.0 });
+      c.Normals.insert(c.Normals.end(), { 0.0, 0.0, 1.0 });
+    }
+  }
+  vtkNew<vtkCDTAdvancingFront> filter;
+  filter->RefuseRimFansOn();
+  const Messages messages = Run(filter, MakeInput(c, withNormals));
+  PCS_CHECK(messages.Errors == 0, label << ": errors");
+  vtkPolyData* out = filter->GetOutput();
+  const double loops = pcstest::QualityValue(out, "NumberOfBoundaryLoops");
+  PCS_CHECK(
+    loops == 2, label << ": " << loops << " boundary loops instead of 2 (the hole closed?)");
+  PCS_CHECK(filter->GetNumberOfUnusedPoints() == 0,
+    label << ": " << filter->GetNumberOfUnusedPoints() << " unused points");
+  int over = 0;
+  double closest = std::numeric_limits<double>::infinity();
+  for (vtkIdType cell = 0; cell < out->GetNumberOfCells(); ++cell)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    out->GetCellPoints(cell, npts, pts);
+    double centroid[3] = { 0.0, 0.0, 0.0 };
+    for (vtkIdType k = 0; k < npts; ++k)
+    {
+      double p[3];
+      out->GetPoint(pts[k], p);
+      for (int j = 0; j < 3; ++j)
+      {
+        centroid[j] += p[j] / npts;
+      }
+    }
+    const double distance = std::hypot(centroid[0], centroid[1]);
+    closest = std::min(closest, distance);
+    over += distance < radius - 0.25 ? 1 : 0;
+  }
+  PCS_CHECK(over == 0,
+    label << ": " << over << " triangles over the hole (closest centroid " << closest
+          << " from the centre)");
+  auto quality = Quality(out);
+  PCS_CHECK(pcstest::FieldCount(quality, "NumberOfNonManifoldEdges") == 0 &&
+      pcstest::FieldCount(quality, "NumberOfNonManifoldVertices") == 0,
+    label << ": not manifold");
+  return CheckConsistentCounts(label, filter);
+}
+
 bool TestBadInput()
 {
   {
@@ -988,6 +1055,11 @@ int TestCDTAdvancingFront(int, char*[])
   failures += TestFarSpheres() ? 0 : 1;
   failures += TestLatticeVolume() ? 0 : 1;
   failures += TestGradientWork() ? 0 : 1;
+  for (bool random : { false, true })
+  {
+    failures += TestRealHole(random, true) ? 0 : 1;
+    failures += TestRealHole(random, false) ? 0 : 1;
+  }
   std::cout << failures << " failure(s)" << std::endl;
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

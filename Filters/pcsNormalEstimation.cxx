@@ -1,6 +1,7 @@
 #include "pcsNormalEstimation.h"
 
 #include "pcsDisjointSets.h"
+#include "pcsDuplicatePoints.h"
 #include "pcsNearestNeighbors.h"
 #include "pcsSpatialSort.h"
 
@@ -323,6 +324,203 @@ double QuadricHeightNoise(const double* xyz,
 }
 
 // The covariance of a neighbourhood and the point (OffsetCovariance).
+namespace
+{
+// The least-squares plane of the point `i` and its first `count` neighbours in `row`: the unit
+// normal, the offset from the point to the centroid and the eigenvalues of the covariance
+// (decreasing). Returns false when there is no plane (fewer than 3 points, or all on a line).
+bool LocalPlane(const double* xyz, Id i, const int32_t* table, int count, const double* normals,
+  double minimumNormalDot, double normal[3], double centroidOffset[3], double values[3])
+{
+  const double* p = &xyz[3 * static_cast<size_t>(i)];
+  // The neighbours of the same sheet (with `normals`: those within the bound of the point's).
+  std::array<int32_t, MaximumPlaneNeighbors> kept;
+  count = std::min<int>(count, MaximumPlaneNeighbors);
+  const int32_t* row = table;
+  if (normals)
+  {
+    const double* own = &normals[3 * static_cast<size_t>(i)];
+    int m = 0;
+    for (int j = 0; j < count; ++j)
+    {
+      if (table[j] >= 0 &&
+        Dot(&normals[3 * static_cast<size_t>(table[j])], own) >= minimumNormalDot)
+      {
+        kept[m++] = table[j];
+      }
+    }
+    row = kept.data();
+    count = m;
+  }
+  double covariance[3][3];
+  const double s0 = OffsetCovariance(xyz, p, row, count, true, covariance);
+  if (!(s0 >= 3.0))
+  {
+    return false;
+  }
+  double sum[3] = { 0.0, 0.0, 0.0 }; // the offsets OffsetCovariance summed (p's own is 0)
+  for (int j = 0; j < count; ++j)
+  {
+    if (row[j] < 0)
+    {
+      continue;
+    }
+    const double* q = &xyz[3 * static_cast<size_t>(row[j])];
+    const double d[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+    if (std::isfinite(d[0]) && std::isfinite(d[1]) && std::isfinite(d[2]))
+    {
+      sum[0] += d[0];
+      sum[1] += d[1];
+      sum[2] += d[2];
+    }
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    centroidOffset[c] = sum[c] / s0;
+  }
+  SmallestEigenvector(covariance, values, normal);
+  return values[1] > 0.0 && std::isfinite(normal[0]) && std::isfinite(normal[1]) &&
+    std::isfinite(normal[2]);
+}
+
+double Median(std::vector<double>& values)
+{
+  if (values.empty())
+  {
+    return 0.0;
+  }
+  auto middle = values.begin() + values.size() / 2;
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+}
+
+SamplingNoiseMeasure SamplingNoise(const double* xyz, Id n, const std::vector<int32_t>& neighbors,
+  int k, int planeOthers, int stride, const double* normals, double minimumNormalDot)
+{
+  SamplingNoiseMeasure measure;
+  const int count = std::min(k, planeOthers);
+  stride = std::max(1, stride);
+  if (n <= 0 || count <= 0)
+  {
+    return measure;
+  }
+  // QuadricHeightNoise reads the neighbours' normals to leave out another sheet; without
+  // `normals` every neighbour is taken (zero normals, minimum dot product -2).
+  const std::vector<double> anyNormal(normals ? 0 : 3 * static_cast<size_t>(n), 0.0);
+  const Id samples = (n + stride - 1) / stride;
+  std::vector<double> noise(static_cast<size_t>(samples), -1.0);
+  std::vector<double> plane(static_cast<size_t>(samples), -1.0);
+  std::vector<double> spacing(static_cast<size_t>(samples), -1.0);
+  vtkSMPTools::For(0, samples,
+    [&](Id begin, Id end)
+    {
+      for (Id s = begin; s < end; ++s)
+      {
+        const Id i = s * stride;
+        const double* p = &xyz[3 * static_cast<size_t>(i)];
+        const int32_t* row = neighbors.data() + static_cast<size_t>(i) * k;
+        double normal[3], offset[3], values[3];
+        if (!LocalPlane(xyz, i, row, count, normals, minimumNormalDot, normal, offset, values))
+        {
+          continue;
+        }
+        plane[s] = std::sqrt(std::max(0.0, values[2]));
+        noise[s] = normals ? QuadricHeightNoise(xyz, normals, p,
+                               &normals[3 * static_cast<size_t>(i)], row, count, minimumNormalDot)
+                           : QuadricHeightNoise(xyz, anyNormal.data(), p, normal, row, count, -2.0);
+        double sum = 0.0;
+        int m = 0;
+        for (int j = 0; j < count; ++j)
+        {
+          if (row[j] >= 0)
+          {
+            const double* q = &xyz[3 * static_cast<size_t>(row[j])];
+            const double d[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
+            sum += std::sqrt(Dot(d, d));
+            ++m;
+          }
+        }
+        spacing[s] = m > 0 && std::isfinite(sum) ? sum / m : -1.0;
+      }
+    });
+  std::vector<double> noiseValues, planeValues, spacingValues;
+  for (Id s = 0; s < samples; ++s)
+  {
+    if (noise[s] >= 0.0 && spacing[s] > 0.0)
+    {
+      noiseValues.push_back(noise[s]);
+      planeValues.push_back(plane[s]);
+      spacingValues.push_back(spacing[s]);
+    }
+  }
+  measure.Measured = static_cast<int64_t>(noiseValues.size());
+  const double medianNoise = Median(noiseValues);
+  const double medianPlane = Median(planeValues);
+  const double medianSpacing = Median(spacingValues);
+  measure.Level = medianSpacing > 0.0 ? medianNoise / medianSpacing : 0.0;
+  measure.Share = medianPlane > 0.0 ? medianNoise / medianPlane : 0.0;
+  measure.Noisy = measure.Level > NoisyLevel && measure.Share > NoisyShare;
+  return measure;
+}
+
+void ProjectOntoLocalPlanes(const double* xyz, Id n, const std::vector<int32_t>& neighbors, int k,
+  int planeOthers, std::vector<double>& projected, const double* normals, double minimumNormalDot)
+{
+  projected.assign(xyz, xyz + 3 * static_cast<size_t>(std::max<Id>(n, 0)));
+  const int count = std::min(k, planeOthers);
+  if (n <= 0 || count <= 0)
+  {
+    return;
+  }
+  vtkSMPTools::For(0, n,
+    [&](Id begin, Id end)
+    {
+      for (Id i = begin; i < end; ++i)
+      {
+        double normal[3], offset[3], values[3];
+        if (LocalPlane(xyz, i, neighbors.data() + static_cast<size_t>(i) * k, count, normals,
+              minimumNormalDot, normal, offset, values))
+        {
+          // p - ((p - c) . n) n with c = p + offset.
+          const double height = Dot(offset, normal);
+          double* x = &projected[3 * static_cast<size_t>(i)];
+          for (int c = 0; c < 3; ++c)
+          {
+            x[c] += height * normal[c];
+          }
+        }
+      }
+    });
+  // Distinct points stay distinct: points whose projections coincide exactly (two points on
+  // one normal line with the same plane, e.g. the two sides of a plate thinner than the
+  // neighbourhood) keep their own coordinates, until no two distinct input points share a
+  // projected position (each pass restores at least one point, so this ends). Copies of one
+  // input position may share one.
+  std::vector<int32_t> first;
+  for (bool restored = true; restored;)
+  {
+    restored = false;
+    if (FindExactDuplicates(projected.data(), 3, nullptr, n, first) == n)
+    {
+      break;
+    }
+    for (Id j = 0; j < n; ++j)
+    {
+      const Id r = first[j];
+      if (r != j &&
+        !SamePosition(&xyz[3 * static_cast<size_t>(j)], &xyz[3 * static_cast<size_t>(r)], 3))
+      {
+        for (const Id t : { j, r })
+        {
+          std::copy_n(&xyz[3 * static_cast<size_t>(t)], 3, &projected[3 * static_cast<size_t>(t)]);
+        }
+        restored = true;
+      }
+    }
+  }
+}
+
 void EstimatePlaneNormals(const double* pts,
   Id count,
   const std::vector<int32_t>& table,

@@ -8,6 +8,7 @@
 #include "pcsGatherInput.h"
 #include "pcsHoleFilling.h"
 #include "pcsNearestNeighbors.h"
+#include "pcsNormalEstimation.h"
 #include "pcsOutliers.h"
 #include "pcsPiles.h"
 #include "pcsPointInsertion.h"
@@ -217,6 +218,9 @@ public:
   }
 
   void Run();
+  // The input points when the growth runs on points projected onto their local planes
+  // (LocalPlaneProjection): the folds (step 7) and the long edges are those of the output.
+  const double* InputX = nullptr;
   // Whether constraint 2 and the seeds follow the sampling's anisotropy (AnisotropyFactor): only
   // on clouds sampled in scan lines or on a regular grid, i.e. when at least a third of a regular
   // subsample of the points (every 8th internal id) lie on lines next to lines (LineAnisotropy
@@ -2829,6 +2833,10 @@ void Grower::Run()
   {
     this->InsertOrphans();
     this->FillHoles();
+    if (this->InputX)
+    {
+      this->X = this->InputX; // the folds and long edges of the output's points
+    }
     this->Unfold();
     this->ShortenLongEdges();
   }
@@ -2924,6 +2932,8 @@ int vtkLocalOptimumGrowth::RequestData(
   this->NumberOfInputPoints = this->NumberOfTriangles = this->NumberOfSeeds = 0;
   this->NumberOfHolesClosed = this->NumberOfUnusedPoints = this->NumberOfDuplicatePoints = 0;
   this->NumberOfSkippedPoints = this->NumberOfBoundaryEdges = this->NumberOfOutliers = 0;
+  this->ProjectedOntoLocalPlanes = false;
+  this->NoiseLevel = this->NoiseShare = 0.0;
 
   const vtkIdType numberOfPoints = input->GetNumberOfPoints();
   this->NumberOfInputPoints = numberOfPoints;
@@ -2955,6 +2965,9 @@ int vtkLocalOptimumGrowth::RequestData(
     pcs::AddFieldCount(fd, "NumberOfSkippedPoints", this->NumberOfSkippedPoints);
     pcs::AddFieldCount(fd, "NumberOfBoundaryEdges", this->NumberOfBoundaryEdges);
     pcs::AddFieldCount(fd, "NumberOfOutliers", this->NumberOfOutliers);
+    pcs::AddFieldCount(fd, "ProjectedOntoLocalPlanes", this->ProjectedOntoLocalPlanes ? 1 : 0);
+    pcs::AddFieldValue(fd, "NoiseLevel", this->NoiseLevel);
+    pcs::AddFieldValue(fd, "NoiseShare", this->NoiseShare);
     return 1;
   };
 
@@ -3174,6 +3187,29 @@ int vtkLocalOptimumGrowth::RequestData(
                                 << "): point data Used = 0, field data NumberOfOutliers.");
   }
   this->NumberOfUnusedPoints = this->NumberOfOutliers;
+  // Noisy clouds: the triangles are chosen on the points projected onto their local planes
+  // (LocalPlaneProjection); the table, the scan-line stretch and the seed order stay those of
+  // the input points.
+  std::vector<double> inputX; // the input points when x is projected
+  if (neighborsFound && !this->GetAbortExecute() &&
+    this->LocalPlaneProjection != pcs::ProjectionOff)
+  {
+    bool project = this->LocalPlaneProjection == pcs::ProjectionOn;
+    if (this->LocalPlaneProjection == pcs::ProjectionAutomatic)
+    {
+      const pcs::SamplingNoiseMeasure noise = pcs::SamplingNoise(
+        x.data(), n, knn, k, pcs::NoiseNeighbors, std::max<Id>(1, n / pcs::SamplingNoiseSamples));
+      this->NoiseLevel = noise.Level;
+      this->NoiseShare = noise.Share;
+      project = noise.Noisy;
+    }
+    if (project)
+    {
+      pcs::ProjectOntoLocalPlanes(x.data(), n, knn, k, pcs::ProjectionNeighbors, inputX);
+      x.swap(inputX);
+      this->ProjectedOntoLocalPlanes = true;
+    }
+  }
   this->UpdateProgress(0.15);
 
   pcs::FrontGrowthParameters constraints;
@@ -3185,6 +3221,7 @@ int vtkLocalOptimumGrowth::RequestData(
   constraints.RelaxConstraints = this->RelaxConstraints != 0;
   Grower grower(x.data(), n, knn, MakeParameters(k, constraints), this);
   grower.SetStretch(stretch);
+  grower.InputX = this->ProjectedOntoLocalPlanes ? inputX.data() : nullptr;
   grower.DecideAnisotropy(true);
   {
     // Seeds: the points in decreasing lexicographic order (internal ids; outliers left out).
@@ -3261,6 +3298,7 @@ void vtkLocalOptimumGrowth::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfNeighbors: " << this->NumberOfNeighbors << "\n";
   os << indent << "OutlierFactor: " << this->OutlierFactor << "\n";
+  os << indent << "LocalPlaneProjection: " << this->LocalPlaneProjection << "\n";
   os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";
   os << indent << "MinimumEdgeRatio: " << this->MinimumEdgeRatio << "\n";
   os << indent << "MaximumEdgeRatio: " << this->MaximumEdgeRatio << "\n";
@@ -3276,4 +3314,7 @@ void vtkLocalOptimumGrowth::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfDuplicatePoints: " << this->NumberOfDuplicatePoints << "\n";
   os << indent << "NumberOfSkippedPoints: " << this->NumberOfSkippedPoints << "\n";
   os << indent << "NumberOfBoundaryEdges: " << this->NumberOfBoundaryEdges << "\n";
+  os << indent << "ProjectedOntoLocalPlanes: " << this->ProjectedOntoLocalPlanes << "\n";
+  os << indent << "NoiseLevel: " << this->NoiseLevel << "\n";
+  os << indent << "NoiseShare: " << this->NoiseShare << "\n";
 }

@@ -361,6 +361,11 @@ void FindPointsWithinRadius(const pcs::PointBins& bins,
 // circles, 1,101 points: 11 million); a volume has several times as many points in each ball and
 // took 22,558 per point on the 18^3 lattice, and its front ran away on the 30^3 lattice (310 s).
 constexpr double MaximumWorkPerPoint = 10000.0;
+
+// The nearest others of a point for its local spacing (the automatic NeighborhoodRadius and
+// MaximumRayDistance) and its noise band; also the width of the table the outlier rule reads
+// when the normals are given.
+constexpr int LocalSpacingNeighbors = 9;
 constexpr double MinimumWork = 5e7;
 
 // Piles of near-coincident points (a scanner's repeated returns at one spot, points merged from
@@ -2783,6 +2788,12 @@ int vtkCDTAdvancingFront::RequestData(
   // positions (pcs::FindOutliersAndPiles). With outliers, the bins and copies are made again
   // without them (the table too).
   const bool givenNormals = this->UseInputNormals && this->GetInputArrayToProcess(0, input);
+  // The table of the `others` nearest of every point on the current bins (stopped by an abort).
+  auto searchNeighbors = [&](int others, std::vector<int32_t>& table)
+  {
+    return pcs::FindNearestNeighbors(bins, xyz.data(), static_cast<int32_t>(local), others, table,
+      [this](double) { return !this->GetAbortExecute(); });
+  };
   std::vector<int32_t> firstTable; // the table handed on (empty: none)
   int firstTableOthers = 0;
   if (this->OutlierFactor > 0.0 && local > pcs::PileNeighbors)
@@ -2792,18 +2803,13 @@ int vtkCDTAdvancingFront::RequestData(
     {
       distinct = firstCopy[k] == k;
     }
-    const int others = givenNormals ? std::min<int>(9, local - 1)
+    const int others = givenNormals ? std::min<int>(LocalSpacingNeighbors, local - 1)
                                     : std::max(0, std::min<int>(this->NormalSampleSize, local) - 1);
     std::vector<uint8_t> outlier;
     if (distinct && others >= pcs::OutlierNeighbors)
     {
       std::vector<int32_t> table;
-      if (!pcs::FindNearestNeighbors(bins,
-            xyz.data(),
-            static_cast<int32_t>(local),
-            others,
-            table,
-            [this](double) { return !this->GetAbortExecute(); }))
+      if (!searchNeighbors(others, table))
       {
         return finish();
       }
@@ -3182,7 +3188,6 @@ int vtkCDTAdvancingFront::RequestData(
   // estimation when it has that size). It is also the table on which scan-line sampling is looked
   // for when the normals were not estimated on all the points (given, or estimated on the distinct
   // points).
-  constexpr int LocalSpacingNeighbors = 9;
   const bool localRay = this->MaximumRayDistance <= 0.0;
   const bool localRadius = this->NeighborhoodRadius <= 0.0;
   const bool noiseBand = this->NoiseBandFactor > 0.0;
@@ -3244,12 +3249,7 @@ int vtkCDTAdvancingFront::RequestData(
   if ((localRay || localRadius || noiseBand || !scanLinesChecked) && knnOthers != localOthers)
   {
     knnOthers = 0;
-    if (!pcs::FindNearestNeighbors(bins,
-          xyz.data(),
-          static_cast<int32_t>(local),
-          localOthers,
-          knn,
-          [this](double) { return !this->GetAbortExecute(); }))
+    if (!searchNeighbors(localOthers, knn))
     {
       return finish();
     }
@@ -3392,8 +3392,7 @@ int vtkCDTAdvancingFront::RequestData(
       // projection per position (copies and piles take their first copy's).
       std::vector<int32_t> table;
       const int others = std::min<int>(pcs::ProjectionNeighbors, local - 1);
-      if (!pcs::FindNearestNeighbors(bins, xyz.data(), static_cast<int32_t>(local), others, table,
-            [this](double) { return !this->GetAbortExecute(); }))
+      if (!searchNeighbors(others, table))
       {
         return finish();
       }

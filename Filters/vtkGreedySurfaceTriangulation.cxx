@@ -259,7 +259,8 @@ public:
   // Counts.
   vtkIdType LostPoints = 0, Islands = 0, Holes = 0, Bridges = 0, Chords = 0, HolesFilled = 0,
             HolesLeftOpen = 0, Swaps = 0, ObtuseSwaps = 0, Inserted = 0, Added = 0, LoopsClosed = 0,
-            LoopsFilledByDihedral = 0, EndsCapped = 0, Grown = 0, FillsRefused = 0;
+            LoopsFilledByDihedral = 0, EndsCapped = 0, Grown = 0, FillsRefused = 0,
+            PiecesExchanged = 0;
   bool Aborted = false;
   struct LongTriangle
   {
@@ -312,6 +313,7 @@ public:
   void GrowRegions(double begin, double end);
   void RemoveSmallOpenGrownParts();
   void RemoveGrownFlaps();
+  vtkIdType TakeBetterPieces(const Reconstruction& other);
   void TakeBack(int64_t t);
   void Step3Status();
   struct BridgeCandidate
@@ -1799,6 +1801,261 @@ void Reconstruction::RemoveGrownFlaps()
       }
     }
   }
+}
+
+//------------------------------------------------------------------------------------------------
+// The choice between the two repaired candidates (GrowRegions), piece by piece, when the grown
+// one (`other`) was not kept whole. The triangles of one candidate that the other does not have
+// (same three vertices, either orientation) are joined through their vertices into pieces; every
+// triangle at a vertex of a piece that is not one of the piece's is in both candidates. So once a
+// piece is exchanged, each of its vertices has exactly the other candidate's triangles around it,
+// and the edges at those vertices their valence there: which points the exchange uses and how
+// many boundary edges it leaves are read from `other` before anything is changed. A piece is
+// exchanged when the other candidate's version uses more of its points without more boundary
+// half-edges at them (the rule of the whole choice, applied to each piece), and kept when the mesh
+// then has no more edge-connected components and no larger sum of genera. Returns the number of
+// pieces exchanged.
+vtkIdType Reconstruction::TakeBetterPieces(const Reconstruction& other)
+{
+  const pcs::SurfaceMesh& there = other.Mesh;
+  // The triangle of `mesh` with the vertices of tri in either orientation: its id, and whether
+  // it runs the other way round (-1 when none).
+  auto find = [](const pcs::SurfaceMesh& mesh, const int32_t* tri, bool& reversed)
+  {
+    int64_t t = mesh.FindTriangle(tri[0], tri[1]);
+    if (t >= 0 && mesh.OppositeVertex(tri[0], tri[1]) == tri[2])
+    {
+      reversed = false;
+      return t;
+    }
+    t = mesh.FindTriangle(tri[1], tri[0]);
+    if (t >= 0 && mesh.OppositeVertex(tri[1], tri[0]) == tri[2])
+    {
+      reversed = true;
+      return t;
+    }
+    return int64_t(-1);
+  };
+  // Stage of a triangle (the hole fills' triangles may lie beyond the Stage array: 6).
+  auto stageOf = [](const Reconstruction& x, int64_t t)
+  { return t < static_cast<int64_t>(x.Stage.size()) ? x.Stage[t] : uint8_t(6); };
+  std::vector<int64_t> mine, theirs; // triangles of one candidate only
+  pcs::DisjointSets<int32_t> pieces(this->N);
+  auto collect =
+    [&](const pcs::SurfaceMesh& from, const pcs::SurfaceMesh& to, std::vector<int64_t>& only)
+  {
+    bool reversed;
+    for (int64_t t = 0; t < from.GetNumberOfTriangleIds(); ++t)
+    {
+      if (!from.IsTriangleRemoved(t) && find(to, from.GetTriangle(t), reversed) < 0)
+      {
+        only.push_back(t);
+        const int32_t* tri = from.GetTriangle(t);
+        pieces.Union(tri[0], tri[1]);
+        pieces.Union(tri[0], tri[2]);
+      }
+    }
+  };
+  collect(this->Mesh, there, mine);
+  collect(there, this->Mesh, theirs);
+  if (theirs.empty())
+  {
+    return 0;
+  }
+  // Pieces indexed by root: their triangles in each candidate and their vertices.
+  struct Piece
+  {
+    std::vector<int64_t> Mine, Theirs;
+    std::vector<int32_t> Vertices;
+  };
+  std::unordered_map<int32_t, Piece> byRoot;
+  std::vector<char> seen(static_cast<size_t>(this->N), 0);
+  auto add = [&](const pcs::SurfaceMesh& mesh, int64_t t, bool isMine)
+  {
+    const int32_t* tri = mesh.GetTriangle(t);
+    Piece& piece = byRoot[pieces.Find(tri[0])];
+    (isMine ? piece.Mine : piece.Theirs).push_back(t);
+    for (int j = 0; j < 3; ++j)
+    {
+      if (!seen[tri[j]])
+      {
+        seen[tri[j]] = 1;
+        piece.Vertices.push_back(tri[j]);
+      }
+    }
+  };
+  for (int64_t t : mine)
+  {
+    add(this->Mesh, t, true);
+  }
+  for (int64_t t : theirs)
+  {
+    add(there, t, false);
+  }
+  // In a fixed order (the smallest vertex of each piece), so that the result does not depend on
+  // the hash map's.
+  std::vector<Piece*> order;
+  for (auto& entry : byRoot)
+  {
+    order.push_back(&entry.second);
+  }
+  std::sort(order.begin(), order.end(),
+    [](const Piece* a, const Piece* b)
+    {
+      return *std::min_element(a->Vertices.begin(), a->Vertices.end()) <
+        *std::min_element(b->Vertices.begin(), b->Vertices.end());
+    });
+  // Edge-connected components and twice the sum of their genera (2 c - loops - chi): an exchange
+  // that would raise either is undone.
+  auto topology = [this](int64_t& components, int64_t& handles)
+  {
+    const pcs::SurfaceMesh& mesh = this->Mesh;
+    pcs::DisjointSets<int64_t> sets(mesh.GetNumberOfTriangleIds());
+    mesh.JoinAcrossEdges(sets);
+    components = 0;
+    for (int64_t t = 0; t < mesh.GetNumberOfTriangleIds(); ++t)
+    {
+      components += !mesh.IsTriangleRemoved(t) && sets.Find(t) == t ? 1 : 0;
+    }
+    int64_t vertices = 0;
+    for (int32_t v = 0; v < this->N; ++v)
+    {
+      vertices += mesh.IsFree(v) ? 0 : 1;
+    }
+    const int64_t faces = mesh.GetNumberOfTriangles();
+    const int64_t edges = (3 * faces + mesh.GetNumberOfBoundaryHalfEdges()) / 2;
+    std::vector<std::vector<int32_t>> loops;
+    mesh.GetBoundaryLoops(loops);
+    handles = 2 * components - static_cast<int64_t>(loops.size()) - (vertices - edges + faces);
+  };
+  int64_t componentsNow, handlesNow;
+  topology(componentsNow, handlesNow);
+  std::vector<char> inPiece(static_cast<size_t>(this->N), 0);
+  vtkIdType exchanged = 0;
+  for (Piece* piece : order)
+  {
+    for (int32_t v : piece->Vertices)
+    {
+      inPiece[v] = 1;
+    }
+    // Points used and boundary half-edges with an end in the piece, in each candidate.
+    auto measure = [&](const pcs::SurfaceMesh& mesh, vtkIdType& used, vtkIdType& boundary)
+    {
+      used = boundary = 0;
+      int32_t ends[64];
+      for (int32_t v : piece->Vertices)
+      {
+        used += mesh.IsFree(v) ? 0 : 1;
+        boundary += std::min(mesh.GetBoundaryOutVertices(v, ends, 64), 64);
+        const int in = std::min(mesh.GetBoundaryInVertices(v, ends, 64), 64);
+        for (int j = 0; j < in; ++j)
+        {
+          boundary += inPiece[ends[j]] ? 0 : 1;
+        }
+      }
+    };
+    vtkIdType usedHere, boundaryHere, usedThere, boundaryThere;
+    measure(this->Mesh, usedHere, boundaryHere);
+    measure(there, usedThere, boundaryThere);
+    if (usedThere <= usedHere || boundaryThere > boundaryHere)
+    {
+      for (int32_t v : piece->Vertices)
+      {
+        inPiece[v] = 0;
+      }
+      continue;
+    }
+    std::vector<int32_t> removed, added;
+    std::vector<uint8_t> removedStages;
+    for (int64_t t : piece->Mine)
+    {
+      const int32_t* tri = this->Mesh.GetTriangle(t);
+      removed.insert(removed.end(), tri, tri + 3);
+      removedStages.push_back(stageOf(*this, t));
+      this->Mesh.RemoveTriangle(t);
+    }
+    for (int64_t t : piece->Theirs)
+    {
+      const int32_t* tri = there.GetTriangle(t);
+      added.insert(added.end(), tri, tri + 3);
+    }
+    // The triangles both candidates have at the piece's points take the other's orientation
+    // (a bridge may have reversed a region in one candidate only): their edge-connected
+    // components here are reversed where they run the other way round there (the closed ones
+    // are oriented outwards at the end). A component running both ways is left as it is, and
+    // the piece with it (AddTriangles refuses it).
+    std::vector<int64_t> reversedSeeds;
+    for (int32_t v : piece->Vertices)
+    {
+      int64_t around[256];
+      const int count = std::min(this->Mesh.GetVertexTriangles(v, around, 256), 256);
+      for (int j = 0; j < count; ++j)
+      {
+        bool reversed = false;
+        if (find(there, this->Mesh.GetTriangle(around[j]), reversed) >= 0 && reversed)
+        {
+          this->Mesh.ReverseComponent(around[j]);
+          reversedSeeds.push_back(around[j]);
+        }
+      }
+    }
+    std::vector<int64_t> ids;
+    bool done = this->Mesh.AddTriangles(added.data(), added.size() / 3, ids);
+    if (done)
+    {
+      int64_t components, handles;
+      topology(components, handles);
+      done = components <= componentsNow && handles <= handlesNow;
+      if (done)
+      {
+        componentsNow = components;
+        handlesNow = handles;
+      }
+      else
+      {
+        for (int64_t t : ids)
+        {
+          this->Mesh.RemoveTriangle(t);
+        }
+      }
+    }
+    if (!done)
+    {
+      // Put back (the stars are the other candidate's, so AddTriangles refuses only a component
+      // running both ways).
+      for (auto seed = reversedSeeds.rbegin(); seed != reversedSeeds.rend(); ++seed)
+      {
+        this->Mesh.ReverseComponent(*seed);
+      }
+      this->Mesh.AddTriangles(removed.data(), removed.size() / 3, ids);
+    }
+    this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 6);
+    for (size_t k = 0; k < ids.size(); ++k)
+    {
+      this->Stage[ids[k]] = done ? stageOf(other, piece->Theirs[k]) : removedStages[k];
+    }
+    if (done)
+    {
+      ++exchanged;
+      for (int32_t v : piece->Vertices)
+      {
+        this->Status[v] = other.Status[v];
+        const char before = this->InsertedPoints.empty() ? 0 : this->InsertedPoints[v];
+        const char after = other.InsertedPoints.empty() ? 0 : other.InsertedPoints[v];
+        if (before != after)
+        {
+          this->InsertedPoints.resize(static_cast<size_t>(this->N), 0);
+          this->InsertedPoints[v] = after;
+          this->Inserted += after ? 1 : -1;
+        }
+      }
+    }
+    for (int32_t v : piece->Vertices)
+    {
+      inPiece[v] = 0;
+    }
+  }
+  return exchanged;
 }
 
 //------------------------------------------------------------------------------------------------
@@ -4821,6 +5078,7 @@ int vtkGreedySurfaceTriangulation::RequestData(
     pcs::AddFieldCount(fd, "NumberOfSmallLoopsFilledByDihedral", r.LoopsFilledByDihedral);
     pcs::AddFieldCount(fd, "NumberOfEndsCapped", r.EndsCapped);
     pcs::AddFieldCount(fd, "NumberOfFillsRefused", r.FillsRefused);
+    pcs::AddFieldCount(fd, "NumberOfPiecesExchanged", r.PiecesExchanged);
     pcs::AddFieldCount(fd, "NumberOfUnusedPoints", this->NumberOfUnusedPoints);
     pcs::AddFieldCount(fd, "NumberOfDuplicatePoints", duplicates);
     pcs::AddFieldCount(fd, "NumberOfSkippedPoints", skipped);
@@ -5160,12 +5418,21 @@ int vtkGreedySurfaceTriangulation::RequestData(
       }
       return count;
     };
-    if (grown->Mesh.GetNumberOfBoundaryHalfEdges() <= r.Mesh.GetNumberOfBoundaryHalfEdges() &&
-      unused(*grown) < unused(r))
+    const bool grownWhole =
+      grown->Mesh.GetNumberOfBoundaryHalfEdges() <= r.Mesh.GetNumberOfBoundaryHalfEdges() &&
+      unused(*grown) < unused(r);
+    // Otherwise piece by piece: the grown result's pieces that use more points without more
+    // boundary edges (and add no component or handle). The reverse, pieces of the result of step 2
+    // into a grown one kept whole, gave fills across the camel's tail: not done.
+    if (grownWhole)
     {
       // The locator's points wrap r.X: r keeps that buffer (the copy holds the same values).
       grown->X.swap(r.X);
       r = std::move(*grown);
+    }
+    else
+    {
+      r.PiecesExchanged = r.TakeBetterPieces(*grown);
     }
     grown.reset();
   }

@@ -15,8 +15,11 @@ point used; a ring whose flared hole's mouth is left open by a missing ring of t
 no cap bulging above that face; the vertices of CGAL's camel (a closed genus-0 mesh, when libcgal-demo is installed)
 give a closed genus-0 mesh, and those of its elephant (genus 3) a closed genus-3 mesh that uses
 every point; tori sampled on regular grids, closer along the axis than around the tube, have no
-triangle whose smallest angle is under half that of the grid's own cells; the copies of a pile of near-coincident points are Status 4 with the values of the
-pile's meshed point.
+triangle whose smallest angle is under half that of the grid's own cells; a sphere with six thin
+horns sampled in rings comes back closed, one component of genus 0, with fewer unused points than
+without GrowRegions and at most the points of each horn's last two rings and apex unused (the
+grown result's closed pieces taken where it stays open elsewhere); the copies of a pile of
+near-coincident points are Status 4 with the values of the pile's meshed point.
 """
 import math
 import sys
@@ -435,6 +438,66 @@ for nu, nv, r in ((200, 20, 0.35), (120, 12, 0.3)):
           "grid torus %d x %d: closed, genus 1, 2V triangles, every point used (%s)" % (nu, nv, q))
     check(least.min() >= bound, "grid torus %d x %d: smallest angle %.2f degrees, under half the "
           "grid cells' (%.2f)" % (nu, nv, least.min(), bound))
+
+# A sphere with six thin horns (ours, issue 7: the tips of the tail and horns of CGAL's
+# triceratops). Unit sphere of 2,000 Fibonacci points (spacing s about 0.079); along each of +-x,
+# +-y, +-z a cone of base radius 0.1 and length 1 sampled in 12 rings of 12 points (each turned
+# by half a step from the last) 1/12 apart, the radius shrinking linearly to 1/20 of the base at
+# the far end, and an apex point; the sphere's points under each base removed; every point moved
+# by Gaussian noise of 0.06 s (seeds 1, 2, 5). A closed genus-0 surface. Near the tips a ring is
+# narrower than the way to the next one, so step 1 makes discs across the cone that step 2
+# dissolves; the regions grown into them (GrowRegions) take them, but the grown result, open at
+# one tip, was left whole with every tip's points. The output must be closed, manifold, one
+# component of genus 0, use more points than without GrowRegions (pieces of the grown result
+# taken), and leave unused at most the points of the rings whose diameter is under 0.6 of the
+# ring spacing (the last two of each horn: clusters farther from the rest than about twice their
+# width) and the apex.
+def horned_sphere(seed):
+    n = 2000
+    i = numpy.arange(n) + 0.5
+    phi, theta = numpy.arccos(1 - 2 * i / n), math.pi * (1 + math.sqrt(5.0)) * i
+    body = numpy.c_[numpy.cos(theta) * numpy.sin(phi), numpy.sin(theta) * numpy.sin(phi),
+                    numpy.cos(phi)]
+    base, length, rings, count, tip = 0.1, 1.0, 12, 12, 0.05
+    parts, allowed = [], 0
+    for d in numpy.vstack([numpy.eye(3), -numpy.eye(3)]):
+        body = body[body @ d < math.sqrt(1 - base * base)]
+        u = numpy.cross(d, [0.3, 0.5, 0.8])
+        u /= numpy.linalg.norm(u)
+        w = numpy.cross(d, u)
+        for k in range(rings):
+            t = k / rings
+            radius = base * (1 - t * (1 - tip))
+            angles = 2 * math.pi * (numpy.arange(count) + 0.5 * (k % 2)) / count
+            ring = numpy.cos(angles)[:, None] * u + numpy.sin(angles)[:, None] * w
+            parts.append((math.sqrt(1 - base * base) + length * t) * d + radius * ring)
+            allowed += count if 2 * radius < 0.6 * length / rings else 0
+        parts.append([(math.sqrt(1 - base * base) + length) * d])
+        allowed += 1
+    xyz = numpy.vstack([body] + parts)
+    rng = numpy.random.default_rng(seed)
+    return xyz + rng.normal(scale=0.06 * math.sqrt(4 * math.pi / n), size=xyz.shape), allowed
+
+
+for seed in (1, 2, 5):
+    horned, allowed = horned_sphere(seed)
+    unused = {}
+    for grow in (False, True):
+        horns = vtkGreedySurfaceTriangulation()
+        horns.SetInputData(cloud_from_array(horned))
+        horns.SetGrowRegions(grow)
+        horns.Update()
+        fd = horns.GetOutput().GetFieldData()
+        unused[grow] = fd.GetArray("NumberOfUnusedPoints").GetValue(0)
+    q = quality(horns.GetOutput())
+    check(q["NumberOfBoundaryEdges"] == 0 and q["NumberOfNonManifoldEdges"] == 0
+          and q["NumberOfNonManifoldVertices"] == 0 and q["NumberOfConnectedComponents"] == 1
+          and q["Genus"] == 0 and q["OrientationConsistency"] == 1.0,
+          "horned sphere %d: closed, manifold, one component of genus 0 (%s)" % (seed, q))
+    check(unused[True] < unused[False] and unused[True] <= allowed
+          and fd.GetArray("NumberOfPiecesExchanged").GetValue(0) > 0,
+          "horned sphere %d: %d points unused, %d without GrowRegions, at most %d allowed (the "
+          "tips' last rings and apexes)" % (seed, unused[True], unused[False], allowed))
 
 # A pile's copies take the pile's meshed point as representative even when the compaction of the
 # ids moved that point: a far outlier first, then one pile point, the sphere, the pile's other 7

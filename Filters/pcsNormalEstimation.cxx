@@ -395,20 +395,23 @@ double Median(std::vector<double>& values)
 }
 }
 
-SamplingNoiseMeasure SamplingNoise(const double* xyz, Id n, const std::vector<int32_t>& neighbors,
-  int k, int planeOthers, int stride, const double* normals, double minimumNormalDot)
+namespace
+{
+// SamplingNoise on the points sample(0), ..., sample(samples - 1).
+template <typename Sample>
+SamplingNoiseMeasure MeasureNoise(const double* xyz, Id n, const std::vector<int32_t>& neighbors,
+  int k, int planeOthers, Id samples, const Sample& sample, const double* normals,
+  double minimumNormalDot)
 {
   SamplingNoiseMeasure measure;
   const int count = std::min(k, planeOthers);
-  stride = std::max(1, stride);
-  if (n <= 0 || count <= 0)
+  if (n <= 0 || count <= 0 || samples <= 0)
   {
     return measure;
   }
   // QuadricHeightNoise reads the neighbours' normals to leave out another sheet; without
   // `normals` every neighbour is taken (zero normals, minimum dot product -2).
   const std::vector<double> anyNormal(normals ? 0 : 3 * static_cast<size_t>(n), 0.0);
-  const Id samples = (n + stride - 1) / stride;
   std::vector<double> noise(static_cast<size_t>(samples), -1.0);
   std::vector<double> plane(static_cast<size_t>(samples), -1.0);
   std::vector<double> spacing(static_cast<size_t>(samples), -1.0);
@@ -417,7 +420,7 @@ SamplingNoiseMeasure SamplingNoise(const double* xyz, Id n, const std::vector<in
     {
       for (Id s = begin; s < end; ++s)
       {
-        const Id i = s * stride;
+        const Id i = sample(s);
         const double* p = &xyz[3 * static_cast<size_t>(i)];
         const int32_t* row = neighbors.data() + static_cast<size_t>(i) * k;
         double normal[3], offset[3], values[3];
@@ -462,6 +465,42 @@ SamplingNoiseMeasure SamplingNoise(const double* xyz, Id n, const std::vector<in
   measure.Share = medianPlane > 0.0 ? medianNoise / medianPlane : 0.0;
   measure.Noisy = measure.Level > NoisyLevel && measure.Share > NoisyShare;
   return measure;
+}
+} // namespace
+
+SamplingNoiseMeasure SamplingNoise(const double* xyz, Id n, const std::vector<int32_t>& neighbors,
+  int k, int planeOthers, int stride, const double* normals, double minimumNormalDot)
+{
+  stride = std::max(1, stride);
+  return MeasureNoise(xyz, n, neighbors, k, planeOthers, n > 0 ? (n + stride - 1) / stride : 0,
+    [stride](Id s) { return s * stride; }, normals, minimumNormalDot);
+}
+
+SamplingNoiseMeasure MeasureSamplingNoise(const double* xyz, Id n,
+  const std::vector<int32_t>& neighbors, int k, int planeOthers, const double* normals,
+  double minimumNormalDot)
+{
+  if (n > 2 * SamplingNoisePilotSamples)
+  {
+    // A fixed pseudo-random sample (not a stride: a stride can fall in step with the rows of a
+    // regular sampling), from a linear congruential generator (Knuth's MMIX constants).
+    std::vector<Id> pilot(SamplingNoisePilotSamples);
+    uint64_t state = 0x9E3779B97F4A7C15ull;
+    for (Id& i : pilot)
+    {
+      state = state * 6364136223846793005ull + 1442695040888963407ull;
+      i = static_cast<Id>((state >> 33) % static_cast<uint64_t>(n));
+    }
+    const SamplingNoiseMeasure measure = MeasureNoise(xyz, n, neighbors, k, planeOthers,
+      SamplingNoisePilotSamples, [&pilot](Id s) { return pilot[s]; }, normals, minimumNormalDot);
+    if (measure.Level < NoisyLevel / SamplingNoisePilotMargin ||
+      measure.Share < NoisyShare / SamplingNoisePilotMargin)
+    {
+      return measure;
+    }
+  }
+  return SamplingNoise(xyz, n, neighbors, k, planeOthers, std::max<Id>(1, n / SamplingNoiseSamples),
+    normals, minimumNormalDot);
 }
 
 void ProjectOntoLocalPlanes(const double* xyz, Id n, const std::vector<int32_t>& neighbors, int k,

@@ -98,14 +98,36 @@ constexpr int32_t SamplingNoiseSamples = 25000;
 /// and grid samples, those with a level above
 /// 1/20 share at most 0.97 (femur; b9_mesh 0.95, mpi 0.90, bones 0.85, all others below 0.75),
 /// and those sharing more than 1 (flat patches with a little noise, a gear) have levels below
-/// 0.005. Every point when `stride` is 1, else every `stride`-th (the filters measure about
-/// 25,000 points: stride max(1, n / 25,000)). With `normals` (3 n, unit, consistently oriented)
+/// 0.005. Every point when `stride` is 1, else every `stride`-th (the filters call it through
+/// MeasureSamplingNoise: a sample of 500 points first, then about 25,000 points when needed). With `normals` (3 n, unit, consistently oriented)
 /// only the neighbours whose normal has a dot product of at least `minimumNormalDot` with the
 /// point's are fitted (the same side: two grids 0.3 spacings apart with opposite normals, a thin
 /// plate, are not noise). Threads: vtkSMPTools.
 SamplingNoiseMeasure SamplingNoise(const double* xyz, int32_t n,
   const std::vector<int32_t>& neighbors, int k, int planeOthers, int stride = 1,
   const double* normals = nullptr, double minimumNormalDot = 0.0);
+
+/// The points MeasureSamplingNoise measures first.
+constexpr int32_t SamplingNoisePilotSamples = 500;
+/// MeasureSamplingNoise settles a cloud as not noisy on its first sample when its level or its
+/// share is below the threshold divided by this margin.
+constexpr double SamplingNoisePilotMargin = 1.25;
+
+/// SamplingNoise as the filters decide LocalPlaneProjection's automatic mode, in two stages.
+/// Clouds of more than 2 SamplingNoisePilotSamples points are first measured on
+/// SamplingNoisePilotSamples points drawn by a fixed pseudo-random generator (the same for every
+/// run; not a stride, which can fall in step with the rows of a regular sampling); when their
+/// level is under NoisyLevel / SamplingNoisePilotMargin or their share under
+/// NoisyShare / SamplingNoisePilotMargin the cloud is not noisy and that measure is returned.
+/// Otherwise (and for smaller clouds) the measure of SamplingNoise with the stride
+/// max(1, n / SamplingNoiseSamples). The median of 500 values is within a few percent of the
+/// cloud's (measured on the CGAL vertex sets and noisy spheres: Benchmarks/results/cdt.md, "The
+/// noise test on a sample"), far inside the margin, and the clean clouds are settled at a
+/// fiftieth of the cost on 25,000 points (the noisy ones are projected, which costs more).
+/// Same arguments as SamplingNoise.
+SamplingNoiseMeasure MeasureSamplingNoise(const double* xyz, int32_t n,
+  const std::vector<int32_t>& neighbors, int k, int planeOthers, const double* normals = nullptr,
+  double minimumNormalDot = 0.0);
 
 /// Denoised copy of the `n` points of `xyz` (packed x, y, z) for the geometric decisions of the
 /// surface filters (vtkLocalOptimumGrowth, vtkCDTAdvancingFront; vtkGreedySurfaceTriangulation

@@ -3378,10 +3378,8 @@ int vtkCDTAdvancingFront::RequestData(
     bool project = this->LocalPlaneProjection == pcs::ProjectionOn;
     if (this->LocalPlaneProjection == pcs::ProjectionAutomatic)
     {
-      const pcs::SamplingNoiseMeasure noise = pcs::SamplingNoise(xyz.data(),
-        static_cast<int32_t>(local), knn, knnOthers, pcs::NoiseNeighbors,
-        std::max<int32_t>(1, static_cast<int32_t>(local) / pcs::SamplingNoiseSamples), sides,
-        SameSideNormalDot);
+      const pcs::SamplingNoiseMeasure noise = pcs::MeasureSamplingNoise(xyz.data(),
+        static_cast<int32_t>(local), knn, knnOthers, pcs::NoiseNeighbors, sides, SameSideNormalDot);
       this->NoiseLevel = noise.Level;
       this->NoiseShare = noise.Share;
       project = noise.Noisy;

@@ -3197,8 +3197,7 @@ int vtkLocalOptimumGrowth::RequestData(
     bool project = this->LocalPlaneProjection == pcs::ProjectionOn;
     if (this->LocalPlaneProjection == pcs::ProjectionAutomatic)
     {
-      const pcs::SamplingNoiseMeasure noise = pcs::SamplingNoise(
-        x.data(), n, knn, k, pcs::NoiseNeighbors, std::max<Id>(1, n / pcs::SamplingNoiseSamples));
+      const pcs::SamplingNoiseMeasure noise = pcs::MeasureSamplingNoise(x.data(), n, knn, k, pcs::NoiseNeighbors);
       this->NoiseLevel = noise.Level;
       this->NoiseShare = noise.Share;
       project = noise.Noisy;

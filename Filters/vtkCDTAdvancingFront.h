@@ -107,7 +107,7 @@
  * Denoising (ours; LocalPlaneProjection, issue 6). The noise band relaxes the rules, but on a
  * thick noise layer the front still grew two overlapping sheets within it, and the cracks between
  * them were closed by handles or left open (Benchmarks/results/cdt.md, "Noisy clouds of known
- * genus"). By default, when the cloud is noisy (pcs::SamplingNoise on the 9-nearest table: the
+ * genus"). By default, when the cloud is noisy (pcs::MeasureSamplingNoise on the 9-nearest table: the
  * median height noise of quadric fits above 1/20 of the median local spacing and above the median
  * plane residual, i.e. noise, not curvature), every decision after the normals is made on a copy
  * of the points, each projected onto the least-squares plane of itself and its 19 nearest points
@@ -129,8 +129,10 @@
  * 0.1, 0.2, 0.3 and tori at 0.2, 31 of 32 closed with the true genus (one torus keeps a handle
  * and 4 boundary edges). No clean standard cloud is projected (the triangles of the 27 CGAL vertex
  * sets and the clean spheres and tori of the md5 check are unchanged). Cost (CPU, 10^5 random
- * sphere points, least of 3): the decision (planes and quadrics of about 25,000 points) 0.02 s
- * of 0.97 s on the clean cloud; the projection (a 19-nearest search, planes, normals again)
+ * sphere points, least of 3): the decision on a clean cloud reads 500 points drawn at random (a
+ * plane and a quadric each; about 25,000 more only when those are not clearly clean: see
+ * pcs::MeasureSamplingNoise), under 1 ms (0.02 s of 0.97 s when every cloud read 25,000:
+ * 6-8 % of the filter on the elephant and camel vertex sets); the projection (a 19-nearest search, planes, normals again)
  * 0.2 s; on the noisy one (sigma 0.2) the whole filter takes 1.18 s instead of 1.27 s.
  * Steps (section III):
  * - III.A seeds: in input order, every point not yet meshed starts a seed triangle: its nearest
@@ -616,7 +618,7 @@ public:
    * projected onto the least-squares plane of itself and its 19 nearest neighbours
    * (pcs::ProjectOntoLocalPlanes; the normals are those of the input points), the output keeps
    * the input points. Off (0): never; On (1): always;
-   * Automatic (2, the default): when the cloud is noisy (pcs::SamplingNoise: the
+   * Automatic (2, the default): when the cloud is noisy (pcs::MeasureSamplingNoise: the
    * median height noise of quadric fits is more than 1/20 of the median local spacing and more
    * than the median plane residual). Range [0, 2]. See "Noise" in the class docs.
    */
@@ -644,7 +646,8 @@ public:
   vtkGetMacro(MeanSpacing, double);
   vtkGetMacro(NeighborhoodRadiusUsed, double);
   /// Whether the triangles were chosen on the projected points (LocalPlaneProjection), and the
-  /// noise measures of pcs::SamplingNoise (0 when LocalPlaneProjection is not automatic).
+  /// noise measures of pcs::MeasureSamplingNoise (0 when LocalPlaneProjection is not
+  /// automatic; those of its first sample of 500 points when that settled the decision).
   vtkGetMacro(ProjectedOntoLocalPlanes, bool);
   vtkGetMacro(NoiseLevel, double);
   vtkGetMacro(NoiseShare, double);

@@ -122,6 +122,16 @@ constexpr double RowShare = 0.5;
 // only admitted farther candidates where nearer ones were refused (CGAL's elephant, 10^5 random
 // samples, seed 2: Hausdorff 1.71 -> 2.43 mean spacings).
 constexpr double SparseSpacingRatio = 1.5;
+// It follows it as well where that spacing is at most 1 / DenseSpacingRatio mean spacings: a part
+// of the cloud many times denser than the rest (a small object beside a large one, a close-up
+// scan within a distant one), where the radius of the mean spacing puts thousands of points in
+// every ring of candidates, all examined and sorted for each front edge until the examination
+// budget runs out (two spheres of 10,000 points each, one 10^3 or 10^4 times smaller: 219-243
+// boundary edges and 107-112 unused points on the small one, in 2.8-3.2 s). Not lower: the dense
+// details of decimated meshes connect to sparse points beyond a reduced radius (with 16, the camel
+// vertex set 56 -> 62 boundary edges, man 404 -> 420); with 64 only ALSTOM_TEST4 and mpi of the
+// 137 CGAL vertex sets have points that dense.
+constexpr double DenseSpacingRatio = 64.0;
 // The automatic MaximumRayDistance of a triangle whose three vertices have local spacings (as
 // above) of at least this many mean spacings also reaches the surface under it: the height over
 // its plane of the vertices' tangent planes across it (its reach times the sine of the largest
@@ -1693,9 +1703,10 @@ Id Front::BestThirdPoint(Id e0, Id e1, Id opposite, const Parameters& global, bo
   // Where the radius is enlarged (a sparser sampling, see AtEdge), the rings are those of the
   // radius at the mean spacing and one more out to the enlarged radius: the same order, and the
   // inner rings cost what they do at the mean spacing.
+  // Where the radius is reduced (a denser part), the three rings are those of the reduced radius.
+  const double base = std::min(global.Radius, parameters.Radius);
   const int rings = parameters.Radius > global.Radius ? 4 : 3;
-  const double radii[4] = { 0.25 * global.Radius, 0.5 * global.Radius, global.Radius,
-    parameters.Radius };
+  const double radii[4] = { 0.25 * base, 0.5 * base, base, parameters.Radius };
   this->Pending.clear();
   this->ProjectionTests = 0;
   // Besides the projection tests, a bound on the candidates examined (the cheap tests reject
@@ -3564,7 +3575,8 @@ int vtkCDTAdvancingFront::RequestData(
           {
             std::nth_element(values.begin(), values.begin() + count / 2, values.begin() + count);
             const double ratio = values[count / 2] / meanSpacing;
-            radiusScale[i] = ratio >= SparseSpacingRatio ? ratio : 1.0;
+            radiusScale[i] =
+              ratio >= SparseSpacingRatio || ratio * DenseSpacingRatio <= 1.0 ? ratio : 1.0;
             spacingRatio[i] = ratio;
           }
         }

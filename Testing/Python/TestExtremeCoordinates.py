@@ -9,6 +9,14 @@ digits of a double) must come out of every surface filter closed, manifold, of g
 every point. Constructions along short directions (a cross product of short edges added to a
 point) must not be rounded away there: vtkCDTAdvancingFront made 1,456 of the 5,996 triangles of
 the first sphere before they were scaled up (pcs::projected::EdgePlaneSide).
+
+Two objects of very different scales in one cloud (a unit sphere and, 5 units away, a sphere 10^3
+or 10^4 times smaller, 10,000 points each: the small one's spacing is 10^-3 to 10^-4 of the mean)
+must come out of every surface filter as two closed, manifold components of genus 0 using every
+point (2 x 20,000 - 8 triangles): vtkCDTAdvancingFront's automatic neighbourhood radius, taken from
+the mean spacing, held the whole small sphere in every ring of candidates and left holes and 121
+unused points there until the radius followed the local spacing of parts 64 times denser than the
+mean (DenseSpacingRatio).
 """
 import math
 import random
@@ -92,7 +100,7 @@ def quality(mesh):
     data = check.GetOutput().GetFieldData()
     return {name: data.GetArray(name).GetValue(0) for name in
             ("NumberOfBoundaryEdges", "NumberOfNonManifoldEdges", "NumberOfNonManifoldVertices",
-             "Genus", "NumberOfUnusedPoints")}
+             "Genus", "NumberOfUnusedPoints", "NumberOfConnectedComponents")}
 
 
 # Uniform on the unit sphere (normalised Gaussian triples), then scaled and moved.
@@ -120,5 +128,29 @@ for radius, centre in ((1e-7, (10.0, -20.0, 5.0)), (1e-7, (1000.0, 0.0, 0.0)),
                 q["NumberOfUnusedPoints"] == 0 and triangles == 2 * len(small) - 4)
         print("sphere of radius %g at %s, %s: %d triangles, %s -> %s"
               % (radius, centre, make.__name__, triangles, q, "ok" if good else "FAILED"))
+        failed = failed or not good
+many = []
+while len(many) < 10000:
+    g = [rng.gauss(0.0, 1.0) for _ in range(3)]
+    length = math.sqrt(sum(c * c for c in g))
+    if length > 1e-3:
+        many.append([c / length for c in g])
+for scale in (1e-3, 1e-4):
+    both = [tuple(p) for p in many] + [(5.0 + scale * p[0], scale * p[1], scale * p[2])
+                                       for p in many]
+    for make in (vtkPerimeterPeelSurface, vtkLocalOptimumGrowth, vtkCDTAdvancingFront,
+                 vtkGreedySurfaceTriangulation):
+        surface = make()
+        surface.SetInputData(cloud(both))
+        surface.Update()
+        mesh = surface.GetOutput()
+        q = quality(mesh)
+        triangles = mesh.GetNumberOfPolys()
+        good = (q["NumberOfBoundaryEdges"] == 0 and q["NumberOfNonManifoldEdges"] == 0 and
+                q["NumberOfNonManifoldVertices"] == 0 and q["Genus"] == 0 and
+                q["NumberOfConnectedComponents"] == 2 and q["NumberOfUnusedPoints"] == 0 and
+                triangles == 2 * len(both) - 8)
+        print("unit sphere and a sphere %g times its size, %s: %d triangles, %s -> %s"
+              % (scale, make.__name__, triangles, q, "ok" if good else "FAILED"))
         failed = failed or not good
 sys.exit(1 if failed else 0)

@@ -56,6 +56,9 @@ namespace P = pcs::predicates;
 // Vertex ids are 32-bit, and so are the triangle ids of pcs::SurfaceMesh (about 2 per point).
 constexpr vtkIdType MaximumNumberOfPoints = 500000000;
 
+// Seeds with SeparateSheets (Grower::TrySeed): P2 at most this many times as far from P1 as P1's
+// nearest neighbour (3, the paper's k2, left more points unused: CGAL's spool vertices 19 -> 29).
+constexpr double SeedReach = 4.0;
 // Step 5: a separate piece of 2 to this many triangles (a closed polyhedron of up to 10 points)
 // is taken apart when its points can be inserted into the surface around it.
 constexpr int64_t SmallPieceTriangles = 16;
@@ -173,6 +176,9 @@ struct Parameters
   // Constraint 2 follows the sampling's anisotropy (Grower::AnisotropyFactor):
   // vtkLocalOptimumGrowth only; vtkGreedySurfaceTriangulation's growth keeps the paper's ratios.
   bool FollowAnisotropy;
+  // The last level's needle rule does not reach a sheet the front has not reached
+  // (Grower::OnUnreachedSheet): vtkLocalOptimumGrowth only (greedy's growth unchanged).
+  bool SeparateSheets;
 };
 
 // The internal form of the constraints (cosines, tangent) for K neighbours per point.
@@ -192,6 +198,7 @@ Parameters MakeParameters(int k, const pcs::FrontGrowthParameters& constraints)
   parameters.MaxHoleEdges = constraints.MaximumHoleEdges;
   parameters.Relax = constraints.RelaxConstraints;
   parameters.FollowAnisotropy = false;
+  parameters.SeparateSheets = false;
   return parameters;
 }
 
@@ -301,6 +308,7 @@ private:
 
   bool Expand(Id a, Id b, int level, bool mayReverse = true);
   double LocalSpacing(Id v) const;
+  bool OnUnreachedSheet(Id c, Id a, Id b) const;
   bool WideEarFits(Id u, Id w, Id apex);
   bool OnFrontLoop(Id a, Id b, Id c) const;
   bool ShortLoop(Id a, Id b);
@@ -1112,6 +1120,37 @@ double Grower::EarScore(Id v, Id u, Id w, double cosNormal, double minimumRatio)
 }
 
 //------------------------------------------------------------------------------------------------
+// The free point c, a candidate for the expansion of the front edge a->b that only the last
+// level's needle rule admits, lies on another sheet, one the front has not reached: it stands more
+// than 1.5 local spacings (the mean of a's and b's) off the frame's plane, and none of its K
+// nearest at its own level (less than half its height from it along the frame's normal) has a
+// triangle. The needle rule takes such a point for one close to the edge -- it lies almost below
+// it -- and its triangle stood across the gap between two sheets a few spacings apart (concentric
+// spheres 2.8 mean spacings apart were joined into one surface); the other sheet gets its own
+// seed instead. The points of a thin tip or a sharply bent spot that the rule is for have meshed
+// neighbours at their level, or lie within 1.5 spacings of the frame (Benchmarks/results/
+// local_optimum.md, task logsharp).
+bool Grower::OnUnreachedSheet(Id c, Id a, Id b) const
+{
+  const double height = this->Height(c);
+  if (!this->Mesh.IsFree(c) ||
+    std::fabs(height) <= 0.75 * (this->LocalSpacing(a) + this->LocalSpacing(b)))
+  {
+    return false;
+  }
+  const Id* nb = this->Neighbors(c);
+  for (int j = 0; j < this->K && nb[j] >= 0; ++j)
+  {
+    if (std::fabs(this->Height(nb[j]) - height) < 0.5 * std::fabs(height) &&
+      !this->Mesh.IsFree(nb[j]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------------------------
 // The local spacing of v: the mean distance to its 6 nearest neighbours (fewer when K < 6).
 double Grower::LocalSpacing(Id v) const
 {
@@ -1308,9 +1347,13 @@ bool Grower::Expand(Id a, Id b, int stage, bool mayReverse)
     {
       // Constraint 1 measures how far (b, a, c) bends about the edge: |height| / distance to the
       // edge's line. At the last level the distance is taken at least d / 2, so that a point
-      // close to the edge (a needle, whose normal is dominated by the curvature) stays usable.
+      // close to the edge (a needle, whose normal is dominated by the curvature) stays usable,
+      // unless that point lies on another sheet, one the front has not reached (ours).
       const double offset = std::max(-this->P2(c)[1], 0.5 * dab);
-      if (level < 2 || std::fabs(this->Height(c)) > this->Par.TanNormal * offset)
+      const double height = std::fabs(this->Height(c));
+      if (level < 2 || height > this->Par.TanNormal * offset ||
+        (this->Par.SeparateSheets && height > -this->Par.TanNormal * this->P2(c)[1] &&
+          this->OnUnreachedSheet(c, a, b)))
       {
         continue;
       }
@@ -1534,6 +1577,11 @@ double Grower::CloudSpacing()
 //------------------------------------------------------------------------------------------------
 // Seed (paper, step 1): P1 the extreme point, P2 its nearest unused neighbour, P3 minimizing
 // |P1P3| + |P2P3| under constraints 2 and 3; the next neighbour as P2 when no P3 exists.
+// With SeparateSheets (ours), P2 is at most SeedReach times as far from P1 as P1's nearest
+// neighbour (used or not; lengths of constraint 2, RatioLength2): a point left unused among
+// meshed neighbours has its nearest free ones on another sheet, and its seed triangle stood
+// across the gap between two sheets a few spacings apart (concentric spheres 2.8 mean spacings
+// apart: one seed of six; task logsharp). Such a point is left to the orphan insertion (step 5).
 bool Grower::TrySeed(Id p1, bool relaxed)
 {
   const double strictMinimum = relaxed ? 0.5 * this->Par.MinRatio : this->Par.MinRatio;
@@ -1557,6 +1605,11 @@ bool Grower::TrySeed(Id p1, bool relaxed)
     Sub(x2, x1, e);
     const double d2 = Dot(e, e), d = std::sqrt(d2);
     const double rd2 = this->RatioLength2(p1, p2, d2);
+    if (this->Par.SeparateSheets && j > 0 &&
+      rd2 > SeedReach * SeedReach * this->RatioLength2(p1, nb[0], Distance2(x1, this->P3(nb[0]))))
+    {
+      continue;
+    }
     // With the nearest free neighbour as P2, constraint 2 widened by the sampling's anisotropy
     // at P1 and P2 (SamplingFactor): on scan lines 3 to 6 times denser along than across, that
     // neighbour, on P1's line, has no P3 within [k1 d, k2 d] (the next line is A d away), and the
@@ -3218,7 +3271,9 @@ int vtkLocalOptimumGrowth::RequestData(
   constraints.MaximumBaseAngle = this->MaximumBaseAngle;
   constraints.MaximumHoleEdges = this->MaximumHoleEdges;
   constraints.RelaxConstraints = this->RelaxConstraints != 0;
-  Grower grower(x.data(), n, knn, MakeParameters(k, constraints), this);
+  Parameters parameters = MakeParameters(k, constraints);
+  parameters.SeparateSheets = true;
+  Grower grower(x.data(), n, knn, parameters, this);
   grower.SetStretch(stretch);
   grower.InputX = this->ProjectedOntoLocalPlanes ? inputX.data() : nullptr;
   grower.DecideAnisotropy(true);

@@ -88,6 +88,12 @@
  *    one) from which no front could grow. The seed is oriented with its normal towards +x
  *    (outwards at the x-extreme point of a closed surface). When the front dies, a new seed is
  *    taken the same way among the points still unused, so every connected part is meshed.
+ *    Added, other sheets (ours): P2 is at most 4 times as far from P1 as P1's nearest neighbour,
+ *    used or not (lengths of constraint 2). A point the growth left unused among meshed
+ *    neighbours has its nearest free ones on another sheet: its seed triangle stood across the
+ *    gap between two sheets a few spacings apart (concentric spheres 2.8 mean spacings apart,
+ *    one cloud in six); such a point is left to the orphan insertion (step 5). With 3 (the
+ *    paper's k2) instead of 4, CGAL's spool vertices kept 29 points unused instead of 12.
  * 3. Expansion (step 2): each front edge a->b (a boundary edge of triangle (a, b, y), kept in
  *    a FIFO queue) is expanded by one candidate c taken from the K-neighbourhoods of a and b
  *    (plus the front neighbours of a and b), giving the triangle (b, a, c). A candidate must
@@ -199,7 +205,24 @@
  *    around the poles of a latitude-longitude sphere need it --, then without the lower bound,
  *    where constraint 1 measures the candidate's height against a distance to the edge of at
  *    least d / 2 (a point very close to the edge, whose needle triangle has a normal dominated
- *    by the curvature, is admitted by its height). At that last level an ear (the candidate is
+ *    by the curvature, is admitted by its height) -- but not a point of another sheet, one the
+ *    front has not reached (ours): a free point more than 1.5 local spacings (the mean of a's and
+ *    b's mean distance to their 6 nearest) off the plane of (a, b, y), none of whose K nearest at
+ *    its own level (less than half its height from it along that plane's normal) has a triangle.
+ *    The long front edges of the last holes of a closed sheet (3 to 4.5 mean spacings) took the
+ *    points of a sheet 2.8 spacings below that way, their triangles standing across the gap, and
+ *    grew the other sheet from there: two concentric random spheres of 10,000 points each
+ *    (radii 1 and 0.9) came out as one surface on 20 clouds of 20 (numpy samples,
+ *    Benchmarks/results/local_optimum.md, task logsharp), as two closed spheres on 20 of 20 now
+ *    (with the seed rule of step 2; on 5 of 6 clouds of TestSeparateSheets' generator: the sixth
+ *    keeps 6 triangles across the gap, not made by this rule; not diagnosed further). The
+ *    threshold keeps the needles the rule is for: without it (a free point with no meshed
+ *    neighbour at its level is enough), CGAL's bull, camel, man, turbine, rotor and elk vertex
+ *    sets got 18 to 49 more boundary edges and the femur's closed mesh split into three pieces
+ *    (triceratops 74 -> 54 boundary edges, the one gain); with it, of the 37
+ *    clean and noisy standard clouds 9 change (camel vertices 124 -> 128 boundary edges, elk 101 ->
+ *    102; with the seed rule also spool 315 -> 262 and 19 -> 12 unused points, rotor, lion and
+ *    triceratops 1 or 2 points more unused). At that last level an ear (the candidate is
  *    the front neighbour of a or b) may also exceed constraint 3 -- its angle at the shared end
  *    is the front's own angle there, close to 180 degrees at every vertex of a thin sliver of
  *    unmeshed surface left where two fronts meet almost along a line -- if its normal is within
@@ -378,7 +401,11 @@
  * @warning
  * The method assumes a surface sampled densely enough that K neighbours reach across every
  * triangle to be made (noise-free or lightly noisy scans; uniform or moderately non-uniform
- * density). Features sharper than MaximumNormalAngle cannot be crossed by one triangle. Points
+ * density). Features sharper than MaximumNormalAngle cannot be crossed by one triangle, and sharp
+ * creases are often not crossed at all: the rim of a closed cone (faces 135 degrees apart) and
+ * the edges of a box 2.5 spacings thick are left open (boundary loops along them; diagnosis in
+ * Benchmarks/results/local_optimum.md, task logsharp). Sheets closer than about 2.8 mean
+ * spacings may be joined into one surface (concentric spheres 2 spacings apart always are). Points
  * that no valid triangle reaches (outliers, isolated points, thin features) are left unused and
  * reported. Duplicate points are meshed once, the first of their group along the Hilbert curve
  * (the others have Used = 0, RepresentativeId that point, and are counted in

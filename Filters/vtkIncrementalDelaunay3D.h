@@ -109,7 +109,7 @@ public:
   ///@{
   /**
    * Plane onto which the points are projected in 2.5D mode: XY_PLANE (0, default) or
-   * BEST_FIT_PLANE (1, the least-squares plane of the points). Ignored in 3D.
+   * BEST_FIT_PLANE (1, the least-squares plane of the points). Range [0, 1]. Ignored in 3D.
    */
   vtkSetClampMacro(ProjectionPlane, int, XY_PLANE, BEST_FIT_PLANE);
   vtkGetMacro(ProjectionPlane, int);

@@ -380,7 +380,8 @@ public:
   ///@}
 
   ///@{
-  /// The measure of a facet: PERIMETER (default, the paper's choice), AREA or CIRCUMRADIUS.
+  /// The measure of a facet: PERIMETER (0, the default, the paper's choice), AREA (1) or
+  /// CIRCUMRADIUS (2). Range [0, 2].
   vtkSetClampMacro(FacetMeasure, int, PERIMETER, CIRCUMRADIUS);
   vtkGetMacro(FacetMeasure, int);
   void SetFacetMeasureToPerimeter() { this->SetFacetMeasure(PERIMETER); }

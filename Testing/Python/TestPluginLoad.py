@@ -17,8 +17,10 @@ one-number property's default is the class's default, exactly (a double written 
 digits to read back as the same double, e.g. 0.3333333333333333 for 1/3), in the XML and in the
 proxy ParaView makes from it, so ParaView sends the class's own defaults; its range domain is
 the class's clamp range (no max = VTK_DOUBLE_MAX), a clamped parameter has a range, boolean or
-enumeration domain, an enumeration lists exactly the clamp range; the "Default ...; range [...]"
-its documentation states are the class's (read by TestReadmeParameters.check_statements); and
+enumeration domain, an enumeration lists exactly the clamp range, and its entries' texts are the
+class's names of those values (the SetXToY methods); its documentation states a default and (when
+clamped) a range, "Default ...; range [...]", and they are the class's (read by
+TestReadmeParameters.check_statements); and
 every parameter of the class (its own Set/Get pairs, as the command line finds them) has a
 property.
 
@@ -252,7 +254,13 @@ for element in ElementTree.parse(xml_path).iter("SourceProxy"):
               % (label, default, actual))
         if parameter in class_parameters:
             stated += readme_test.check_statements(
-                label + " XML documentation", text.text, class_parameters[parameter], actual)
+                label + " XML documentation", text.text, class_parameters[parameter], actual,
+                required=True)
+            entries = [(entry.get("text"), int(entry.get("value")))
+                       for entry in prop.iter("Entry")]
+            if class_parameters[parameter].choices:
+                stated += readme_test.check_choices(label + " XML entries", entries,
+                                                    class_parameters[parameter])
         live = live_proxy.GetProperty(prop.get("name")).GetElement(0)
         check(float(live) == float(actual), "%s: the proxy's default %r = class default %r"
               % (label, live, actual))

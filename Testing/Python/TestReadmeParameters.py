@@ -6,9 +6,14 @@ row, a parameter name, a default and a range. Each row must name a parameter of 
 default must equal ``Get<Name>()`` of a new instance and its range the clamp range
 (``Get<Name>MinValue()`` / ``Get<Name>MaxValue()``), on/off rows a boolean, enumerations the
 class's named values; every numeric, boolean or string parameter of the class must have a row.
-The class documentation (each setter's docstring) must state the same "Default X; range [a, b]"
-where it states them for that parameter alone (check_statements, also used by TestPluginLoad on
-the XML's property documentation).
+The class documentation (each setter's ``///@{`` group comment, read from the header
+Filters/<class>.h beside the README: the wrapped docstrings are truncated) must state every
+parameter's default and, for a clamped non-boolean, its range, equal to the class's:
+"Default X; range [a, b]", "Default Automatic (2)", "Automatic (2, the default)", "3 (default)",
+"Range [a, b]"; a group comment of two parameters "Defaults a and b; ranges [..] and [..]" in
+the order the comment names them (check_statements, also used by TestPluginLoad on the XML's
+property documentation). An enumeration's documentation names each of the class's values with
+its number ("Off (0)", "CROSSING_TEST_ON (1)"), check_choices (also used for the XML entries).
 The ParaView XML is compared with the same classes by PointCloudSurface-PluginLoad, so README,
 class and proxy cannot drift apart. No rendering.
 
@@ -22,6 +27,7 @@ ranges ``[0, 1]``, ``[0, VTK_DOUBLE_MAX] s``, ``[1, 179] degrees``, ``[0, max]``
 parameters and are skipped; rows of object parameters (``Locator``) are checked for existence
 only.
 """
+import os
 import re
 import sys
 
@@ -231,40 +237,162 @@ def check_row(cls, instance, parameters, row):
 
 STATED_DEFAULT = re.compile(r"\bDefault\s+(on|off|VTK_DOUBLE_MAX|VTK_INT_MAX|"
                             r"-?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?(?:/\d+)?)(?![\w/])")
-STATED_RANGE = re.compile(r"\brange\s+\[([^,\]]+),\s*([^\]]+)\]")
+# Other ways the documentation names a default: "Default Automatic (2)", "XY_PLANE (0, default)",
+# "Automatic (2, the default)", "3 (default)".
+STATED_NAMED_DEFAULT = re.compile(r"\bDefault\s+([A-Za-z_]\w*)\s+\((-?\d+)\)")
+STATED_DEFAULT_AFTER = re.compile(r"(?<![\w.])([A-Za-z_]\w*|-?\d+(?:\.\d+)?)\s+"
+                                  r"\((?:(-?\d+),\s*)?(?:the\s+)?default\b")
+STATED_RANGE = re.compile(r"\b[Rr]ange\s+\[([^,\]]+),\s*([^\]]+)\]")
+# Several parameters in one text: "Defaults 1/3 and 3 ...; ranges [0, 1] and [1, 1000]".
+STATED_DEFAULTS = re.compile(r"\bDefaults\s+(\S+)\s+and\s+(\S+)")
+STATED_RANGES = re.compile(r"\branges\s+\[([^,\]]+),\s*([^\]]+)\]\s+and\s+"
+                           r"\[([^,\]]+),\s*([^\]]+)\]")
 
 
-def check_statements(where, text, parameter, actual_default):
-    """The default and range a documentation text states in the project's usual words
-    ("Default 0.5; range [0, 1]"), when it states them for this parameter alone, against the
-    class. Texts of several parameters ("Defaults 1/3 and 3", "ranges ...") and named defaults
-    are skipped. Returns the number of statements checked (used by TestPluginLoad for the XML)."""
-    checked_here = 0
+def choice_named(text, parameter):
+    """The class's value for the enumeration name ``text`` ("Automatic", "XY_PLANE",
+    "CROSSING_TEST_AUTOMATIC", "Best-fit plane"), or None: equal names, or a prefixed constant
+    ending with the class's name."""
+    plain = re.sub(r"[-_\s]", "", text).lower()
+    for key, value in parameter.choices.items():
+        key = re.sub(r"[-_\s]", "", key).lower()
+        if plain == key or (plain.endswith(key) and "_" in text):
+            return value
+    return None
+
+
+def statements(text, parameter, index=0):
+    """(default text or None, (minimum text, maximum text) or None) that ``text`` states for
+    ``parameter``; ``index`` picks the parameter in texts stating several ("Defaults a and b")."""
     text = " ".join(text.split())
-    defaults = STATED_DEFAULT.findall(text)
-    if len(defaults) == 1 and not re.search(r"\bDefaults\b", text):
+    default = None
+    if re.search(r"\bDefaults\b", text):
+        found = STATED_DEFAULTS.search(text)
+        if found:
+            default = found.group(1 + index).rstrip(";,.")
+    else:
+        defaults = STATED_DEFAULT.findall(text)
+        named = STATED_NAMED_DEFAULT.findall(text)
+        after = STATED_DEFAULT_AFTER.findall(text)
+        if len(defaults) + len(named) + len(after) == 1:
+            if defaults:
+                default = defaults[0]
+            elif named:
+                default = "%s (%s)" % named[0]
+            else:
+                default = after[0][0] + (" (%s)" % after[0][1] if after[0][1] else "")
+    bounds = None
+    if re.search(r"\branges\b", text):
+        found = STATED_RANGES.search(text)
+        if found:
+            bounds = (found.group(1 + 2 * index).strip(), found.group(2 + 2 * index).strip())
+    else:
+        ranges = STATED_RANGE.findall(text)
+        if len(ranges) == 1:
+            bounds = (ranges[0][0].strip(), ranges[0][1].strip())
+    return default, bounds
+
+
+def check_statements(where, text, parameter, actual_default, index=0, required=False):
+    """The default and range a documentation text states ("Default 0.5; range [0, 1]",
+    "Automatic (2, the default) ... Range [0, 2]", "Defaults 1/3 and 3; ranges [0, 1] and
+    [1, 1000]" for the index-th of two parameters, in the order the text names them) against the class. Texts stating several
+    defaults or ranges otherwise are skipped, unless ``required`` (the class documentation):
+    then a parameter whose text states no default, or a clamped non-boolean one that states no
+    range, fails. Returns the number of statements checked (used by TestPluginLoad for the
+    XML)."""
+    checked_here = 0
+    default, bounds = statements(text, parameter, index)
+    if default is not None:
         try:
-            value = number_of(defaults[0], parameter, where + " stated default")
+            named = re.match(r"^([A-Za-z_]\w*)(?:\s+\((-?\d+)\))?$", default)
+            if named and named.group(1).lower() not in ("on", "off", "vtk_double_max",
+                                                         "vtk_int_max"):
+                value = choice_named(named.group(1), parameter)
+                if value is None:
+                    raise Unparsed("%s: the stated default '%s' is not a named value of %s "
+                                   "(class: %s)" % (where, default, parameter.name,
+                                                    ", ".join(parameter.choices) or "none"))
+                if named.group(2) is not None and int(named.group(2)) != value:
+                    fail("%s: the documentation says %s is %s, the class %s"
+                         % (where, named.group(1), named.group(2), value))
+            else:
+                value = number_of(default, parameter, where + " stated default")
             if not same(value, actual_default):
-                fail("%s: the documentation says 'Default %s', the class default is %r"
-                     % (where, defaults[0], actual_default))
+                fail("%s: the documentation states the default %s, the class default is %r"
+                     % (where, default, actual_default))
             checked_here += 1
         except Unparsed as error:
             fail(str(error))
-    ranges = STATED_RANGE.findall(text)
-    if len(ranges) == 1 and not re.search(r"\branges\b", text) \
-            and parameter.minimum is not None:
+    elif required:
+        fail("%s: the documentation states no default (write 'Default X')" % where)
+    if bounds is not None and parameter.minimum is not None:
         try:
-            low = number_of(ranges[0][0].strip(), parameter, where + " stated minimum")
-            high = number_of(ranges[0][1].strip(), parameter, where + " stated maximum")
+            low = number_of(bounds[0], parameter, where + " stated minimum")
+            high = number_of(bounds[1], parameter, where + " stated maximum")
             if not same(low, parameter.minimum) or not same(high, parameter.maximum):
                 fail("%s: the documentation says 'range [%s, %s]', the clamp is [%r, %r]"
-                     % (where, ranges[0][0], ranges[0][1], parameter.minimum,
-                        parameter.maximum))
+                     % (where, bounds[0], bounds[1], parameter.minimum, parameter.maximum))
             checked_here += 1
         except Unparsed as error:
             fail(str(error))
+    elif required and parameter.minimum is not None and parameter.kind != "bool":
+        fail("%s: the documentation states no range (write 'range [a, b]'; clamp [%r, %r])"
+             % (where, parameter.minimum, parameter.maximum))
+    elif bounds is not None and parameter.kind not in ("bool", "str"):
+        fail("%s: the documentation states a range [%s, %s], the class has no clamp"
+             % (where, bounds[0], bounds[1]))
     return checked_here
+
+
+def check_choices(where, pairs, parameter):
+    """An enumeration written as (name, value) pairs (the class documentation's "Off (0)",
+    the XML's Entry text and value) names exactly the class's values, each with its value."""
+    if not parameter.choices:
+        return 0
+    values = sorted(value for _, value in pairs)
+    if values != sorted(parameter.choices.values()):
+        fail("%s: lists the values %s, the class's are %s (%s)"
+             % (where, values, sorted(parameter.choices.values()), parameter.choices))
+    for name, value in pairs:
+        if choice_named(name, parameter) is None:
+            fail("%s: '%s' is not a name of the class's values (%s)"
+                 % (where, name, ", ".join(parameter.choices)))
+        elif choice_named(name, parameter) != value:
+            fail("%s: '%s' is %s there, %s in the class"
+                 % (where, name, value, choice_named(name, parameter)))
+    return len(pairs)
+
+
+def documented_choices(text, parameter):
+    """The (name, value) pairs of an enumeration the documentation writes as "NAME (n" ("Off
+    (0)", "XY_PLANE (0, default)"), keeping the names that are the class's or the number's."""
+    text = " ".join(text.split())
+    pairs = []
+    for name, value in re.findall(r"\b([A-Za-z_]\w*)\s+\((-?\d+)\b", text):
+        if choice_named(name, parameter) is not None:
+            pairs.append((name, int(value)))
+    return sorted(set(pairs), key=lambda pair: pair[1])
+
+
+def header_docs(header):
+    """{parameter name: its documentation in the class header}: the comment of each ``///@{``
+    group holding a setter (vtkSet*Macro or ``void SetX(``). The wrapped classes' docstrings
+    are truncated (VTK's wrapper cuts long comments), so the header itself is read."""
+    docs = {}
+    try:
+        source = open(header, encoding="utf-8").read()
+    except OSError:
+        return docs
+    for group in re.findall(r"///@\{(.*?)///@\}", source, re.S):
+        comments = re.findall(r"/\*\*(.*?)\*/", group, re.S)
+        comments += [line.strip()[3:] for line in group.splitlines()
+                     if line.strip().startswith("///")]
+        text = " ".join(" ".join(re.sub(r"^\s*\*", "", line) for line in comment.splitlines())
+                        for comment in comments)
+        for name in re.findall(r"\bvtkSet\w*Macro\(\s*(\w+)|\bvoid\s+Set(\w+)\s*\(", group):
+            docs.setdefault(name[0] or name[1], " ".join(text.split()))
+    return docs
 
 
 def main():
@@ -285,6 +413,11 @@ def main():
                      % (class_name, ", ".join(p.name for p in parameters)))
             continue
         instance = cls()
+        header = os.path.join(os.path.dirname(os.path.abspath(readme)), "Filters",
+                              class_name + ".h")
+        docs = header_docs(header)
+        if not docs:
+            fail("%s: no parameter documentation read from %s" % (class_name, header))
         names = [row[1] for row in rows]
         for duplicate in sorted({n for n in names if names.count(n) > 1}):
             fail("README.md %s: %s has more than one row" % (class_name, duplicate))
@@ -294,10 +427,23 @@ def main():
             if parameter.name not in names:
                 fail("README.md %s: no row for the parameter %s (default %r)"
                      % (class_name, parameter.name, parameter.default))
-        # The class documentation (the setters' docstrings) states the same default and range.
+        # The class documentation (the setters' docstrings) states the same default and range,
+        # for every parameter; a text shared by a group of parameters ("Defaults a and b")
+        # states them in the order the text names them. Enumerations name each value with its number.
         for parameter in parameters:
-            stated[0] += check_statements("%s.%s documentation" % (class_name, parameter.name),
-                                          parameter.doc, parameter, parameter.default)
+            if parameter.kind in ("str", "vector"):
+                continue
+            where = "%s.%s documentation" % (class_name, parameter.name)
+            doc = docs.get(parameter.name)
+            if doc is None:
+                fail("%s: no documentation in %s" % (where, header))
+                continue
+            group = sorted((p.name for p in parameters if docs.get(p.name) == doc),
+                           key=lambda name: (doc.find(name), name))
+            stated[0] += check_statements(where, doc, parameter, parameter.default,
+                                          index=group.index(parameter.name), required=True)
+            if parameter.choices:
+                stated[0] += check_choices(where, documented_choices(doc, parameter), parameter)
         print("%s: %d rows, %d parameters of the class" % (class_name, len(rows), len(parameters)))
     for class_name in sorted(set(tables) - set(classes)):
         print("note: section %s has a parameter table but the class is not in this build"

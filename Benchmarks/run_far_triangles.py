@@ -2,11 +2,13 @@
 """Where a filter's mesh of a random sample is farther than a bound from the sampled surface.
 
 run_sample_seeds.py gives one Hausdorff distance per sample; this script says where it comes
-from. A random sample is drawn as there (numpy default_rng(seed), area weighted), meshed by one
-filter of the project (defaults), and measured against the mesh it was sampled from, densely:
+from. A random sample is drawn as there (numpy default_rng(seed), area weighted; with --vertices,
+the mesh's own vertices are taken instead), meshed by one filter of the project (defaults), and
+measured against the mesh it was sampled from, densely:
 every triangle at the 28 points of a barycentric grid of step 1/6 (its vertices among them) and
 its centroid, every reference triangle likewise. Distances are screened with a k-d tree on a
-denser sample of the other side and the candidates over 1.5 mean spacings measured exactly
+denser sample of the other side and the candidates over 1.5 mean spacings (or --bound, if
+smaller) measured exactly
 (vtkStaticCellLocator). The unit is the mean nearest-neighbour distance of the used points
 (vtkReconstructionQuality's MeanSpacing).
 
@@ -23,7 +25,7 @@ Printed per sample:
 Usage:
   PYTHONPATH=<build>/lib/python3/dist-packages /usr/bin/python3 Benchmarks/run_far_triangles.py \
       --data /usr/share/cgal-demo/data [--filter log] [--meshes camel armadillo] \
-      [--seeds 1 2 3 4 5] [--points 100000] [--bound 2] [--cell-array NAME]
+      [--seeds 1 2 3 4 5] [--points 100000] [--bound 2] [--cell-array NAME] [--vertices]
 """
 import argparse
 import os
@@ -81,13 +83,13 @@ def far_side(from_samples, to_dense, to_locator, spacing, bound):
     returns the indices (into the flattened samples) over bound and their distances."""
     flat = from_samples.reshape(-1, 3)
     screened = cKDTree(to_dense).query(flat, distance_upper_bound=10 * spacing)[0]
-    candidates = np.where(screened > 1.5 * spacing)[0]
+    candidates = np.where(screened > min(1.5, bound) * spacing)[0]
     exact = exact_distances(to_locator, flat[candidates]) / spacing
     return candidates[exact > bound], exact[exact > bound]
 
 
 def report(name, seed, args, points, triangles):
-    cloud = sample_mesh(points, triangles, args.points, seed)
+    cloud = points if seed is None else sample_mesh(points, triangles, args.points, seed)
     algorithm = FILTERS[args.filter]()
     algorithm.SetInputData(polydata(cloud))
     algorithm.Update()
@@ -107,9 +109,10 @@ def report(name, seed, args, points, triangles):
                                  cell_locator(cloud, mesh), spacing, args.bound)
     inputs = cKDTree(cloud)
     array = output.GetCellData().GetArray(args.cell_array) if args.cell_array else None
-    print("%s seed %d (%s): mean spacing %.5g, %d triangles; accuracy max %.2f, %d triangles over "
+    print("%s %s (%s): mean spacing %.5g, %d triangles; accuracy max %.2f, %d triangles over "
           "%g; completeness max %.2f" % (
-              name, seed, args.filter, spacing, len(mesh), max(per_triangle.values(), default=0.0),
+              name, "vertices" if seed is None else "seed %d" % seed, args.filter, spacing,
+              len(mesh), max(per_triangle.values(), default=0.0),
               len(per_triangle), args.bound, dist_ref.max() if len(dist_ref) else 0.0))
     for t, d in sorted(per_triangle.items(), key=lambda item: -item[1]):
         corners = cloud[mesh[t]]
@@ -149,11 +152,13 @@ def main():
     parser.add_argument("--bound", type=float, default=2.0, help="in mean spacings")
     parser.add_argument("--cell-array", help="a cell data array of the output to print per far "
                         "triangle")
+    parser.add_argument("--vertices", action="store_true", help="mesh the mesh's own vertices "
+                        "instead of random samples (--seeds and --points ignored)")
     args = parser.parse_args()
     for name in args.meshes:
         points, triangles = read_off(os.path.join(args.data, "meshes", name + ".off"))
         triangles = np.asarray(triangles, dtype=np.int64)
-        for seed in args.seeds:
+        for seed in [None] if args.vertices else args.seeds:
             report(name, seed, args, points, triangles)
 
 

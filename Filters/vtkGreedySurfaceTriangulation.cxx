@@ -310,10 +310,11 @@ public:
   void ComputeNormals(bool local);
   void Step1GreedyEdges(double begin, double end);
   void Step2Umbrella(double begin, double end);
-  void GrowRegions(double begin, double end);
+  void GrowRegions(double begin, double end, bool expandFront);
   void RemoveSmallOpenGrownParts();
   void RemoveGrownFlaps();
-  vtkIdType TakeBetterPieces(const Reconstruction& other);
+  vtkIdType TakeBetterPieces(const Reconstruction& other, bool tiesOnly, bool checkEach);
+  void Topology(int64_t& components, int64_t& handles) const;
   void TakeBack(int64_t t);
   void Step3Status();
   struct BridgeCandidate
@@ -1804,6 +1805,30 @@ void Reconstruction::RemoveGrownFlaps()
 }
 
 //------------------------------------------------------------------------------------------------
+// The mesh's edge-connected components and twice the sum of their genera (2 c - loops - chi).
+void Reconstruction::Topology(int64_t& components, int64_t& handles) const
+{
+  const pcs::SurfaceMesh& mesh = this->Mesh;
+  pcs::DisjointSets<int64_t> sets(mesh.GetNumberOfTriangleIds());
+  mesh.JoinAcrossEdges(sets);
+  components = 0;
+  for (int64_t t = 0; t < mesh.GetNumberOfTriangleIds(); ++t)
+  {
+    components += !mesh.IsTriangleRemoved(t) && sets.Find(t) == t ? 1 : 0;
+  }
+  int64_t vertices = 0;
+  for (int32_t v = 0; v < this->N; ++v)
+  {
+    vertices += mesh.IsFree(v) ? 0 : 1;
+  }
+  const int64_t faces = mesh.GetNumberOfTriangles();
+  const int64_t edges = (3 * faces + mesh.GetNumberOfBoundaryHalfEdges()) / 2;
+  std::vector<std::vector<int32_t>> loops;
+  mesh.GetBoundaryLoops(loops);
+  handles = 2 * components - static_cast<int64_t>(loops.size()) - (vertices - edges + faces);
+}
+
+//------------------------------------------------------------------------------------------------
 // The choice between the two repaired candidates (GrowRegions), piece by piece, when the grown
 // one (`other`) was not kept whole. The triangles of one candidate that the other does not have
 // (same three vertices, either orientation) are joined through their vertices into pieces; every
@@ -1813,9 +1838,12 @@ void Reconstruction::RemoveGrownFlaps()
 // many boundary edges it leaves are read from `other` before anything is changed. A piece is
 // exchanged when the other candidate's version uses more of its points without more boundary
 // half-edges at them (the rule of the whole choice, applied to each piece), and kept when the mesh
-// then has no more edge-connected components and no larger sum of genera. Returns the number of
-// pieces exchanged.
-vtkIdType Reconstruction::TakeBetterPieces(const Reconstruction& other)
+// then has no more edge-connected components and no larger sum of genera. With tiesOnly (the
+// result whose front was grown into the holes, issue 7), only pieces that use as many points
+// are compared (see below). Without checkEach the topology is not checked here (the caller
+// checks it once for all pieces). Returns the number of pieces exchanged.
+vtkIdType Reconstruction::TakeBetterPieces(
+  const Reconstruction& other, bool tiesOnly, bool checkEach)
 {
   const pcs::SurfaceMesh& there = other.Mesh;
   // The triangle of `mesh` with the vertices of tri in either orientation: its id, and whether
@@ -1905,31 +1933,12 @@ vtkIdType Reconstruction::TakeBetterPieces(const Reconstruction& other)
       return *std::min_element(a->Vertices.begin(), a->Vertices.end()) <
         *std::min_element(b->Vertices.begin(), b->Vertices.end());
     });
-  // Edge-connected components and twice the sum of their genera (2 c - loops - chi): an exchange
-  // that would raise either is undone.
-  auto topology = [this](int64_t& components, int64_t& handles)
+  // An exchange that would raise the number of components or the sum of genera is undone.
+  int64_t componentsNow = 0, handlesNow = 0;
+  if (checkEach)
   {
-    const pcs::SurfaceMesh& mesh = this->Mesh;
-    pcs::DisjointSets<int64_t> sets(mesh.GetNumberOfTriangleIds());
-    mesh.JoinAcrossEdges(sets);
-    components = 0;
-    for (int64_t t = 0; t < mesh.GetNumberOfTriangleIds(); ++t)
-    {
-      components += !mesh.IsTriangleRemoved(t) && sets.Find(t) == t ? 1 : 0;
-    }
-    int64_t vertices = 0;
-    for (int32_t v = 0; v < this->N; ++v)
-    {
-      vertices += mesh.IsFree(v) ? 0 : 1;
-    }
-    const int64_t faces = mesh.GetNumberOfTriangles();
-    const int64_t edges = (3 * faces + mesh.GetNumberOfBoundaryHalfEdges()) / 2;
-    std::vector<std::vector<int32_t>> loops;
-    mesh.GetBoundaryLoops(loops);
-    handles = 2 * components - static_cast<int64_t>(loops.size()) - (vertices - edges + faces);
-  };
-  int64_t componentsNow, handlesNow;
-  topology(componentsNow, handlesNow);
+    this->Topology(componentsNow, handlesNow);
+  }
   std::vector<char> inPiece(static_cast<size_t>(this->N), 0);
   vtkIdType exchanged = 0;
   for (Piece* piece : order)
@@ -1957,7 +1966,24 @@ vtkIdType Reconstruction::TakeBetterPieces(const Reconstruction& other)
     vtkIdType usedHere, boundaryHere, usedThere, boundaryThere;
     measure(this->Mesh, usedHere, boundaryHere);
     measure(there, usedThere, boundaryThere);
-    if (usedThere <= usedHere || boundaryThere > boundaryHere)
+    // With tiesOnly (ours, issue 7: the result grown into the holes): as many points used, no
+    // more boundary half-edges, and at most half as many triangles made by the repairs (stages
+    // above 2: fills, swaps, insertions), at least one here.
+    bool take = !tiesOnly && usedThere > usedHere && boundaryThere <= boundaryHere;
+    if (tiesOnly && usedThere == usedHere && boundaryThere <= boundaryHere)
+    {
+      size_t repairsHere = 0, repairsThere = 0;
+      for (int64_t t : piece->Mine)
+      {
+        repairsHere += stageOf(*this, t) > 2 ? 1 : 0;
+      }
+      for (int64_t t : piece->Theirs)
+      {
+        repairsThere += stageOf(other, t) > 2 ? 1 : 0;
+      }
+      take = 2 * repairsThere <= repairsHere && repairsHere > 0;
+    }
+    if (!take)
     {
       for (int32_t v : piece->Vertices)
       {
@@ -2001,10 +2027,10 @@ vtkIdType Reconstruction::TakeBetterPieces(const Reconstruction& other)
     }
     std::vector<int64_t> ids;
     bool done = this->Mesh.AddTriangles(added.data(), added.size() / 3, ids);
-    if (done)
+    if (done && checkEach)
     {
       int64_t components, handles;
-      topology(components, handles);
+      this->Topology(components, handles);
       done = components <= componentsNow && handles <= handlesNow;
       if (done)
       {
@@ -2062,7 +2088,7 @@ vtkIdType Reconstruction::TakeBetterPieces(const Reconstruction& other)
 // After step 2: the regions grown into the lost points by vtkLocalOptimumGrowth's expansion
 // (pcs::GrowFront, its default constraints, on this filter's K). The new triangles are stage 2, the points they use
 // "lost and used" (Status 3).
-void Reconstruction::GrowRegions(double begin, double end)
+void Reconstruction::GrowRegions(double begin, double end, bool expandFront)
 {
   if (!this->Self->GetGrowRegions() || this->Mesh.GetNumberOfTriangles() == 0)
   {
@@ -2071,19 +2097,8 @@ void Reconstruction::GrowRegions(double begin, double end)
   const int64_t before = this->Mesh.GetNumberOfTriangleIds();
   pcs::FrontGrowthParameters parameters;
   bool aborted = false;
-  if (pcs::GrowFront(this->Mesh,
-        this->X.data(),
-        this->N,
-        this->Neighbors,
-        this->K,
-        this->Stretch,
-        false,
-        this->Dissolved,
-        parameters,
-        this->Self,
-        begin,
-        end,
-        aborted) > 0)
+  if (pcs::GrowFront(this->Mesh, this->X.data(), this->N, this->Neighbors, this->K, this->Stretch,
+        expandFront, this->Dissolved, parameters, this->Self, begin, end, aborted) > 0)
   {
     this->Stage.resize(static_cast<size_t>(this->Mesh.GetNumberOfTriangleIds()), 2);
     std::fill(this->Stage.begin() + before, this->Stage.end(), 2);
@@ -5347,8 +5362,9 @@ int vtkGreedySurfaceTriangulation::RequestData(
   }
   // Steps 3 to 8 on the regions of step 2, and on the same regions grown into the lost points of
   // the islands step 2 dissolved (GrowRegions): the grown ones are kept when the repaired mesh
-  // uses more points without more boundary edges.
-  // Progress from `begin` to `end` (two calls when the grown regions are repaired too).
+  // uses more points without more boundary edges. And (issue 7) on the regions of step 2 whose
+  // front is grown into all the lost points: its pieces taken where the growth replaced repairs.
+  // Progress from `begin` to `end` (one call per result).
   auto repair = [](Reconstruction& x, double begin, double end)
   {
     auto at = [begin, end](double fraction) { return begin + fraction * (end - begin); };
@@ -5384,28 +5400,38 @@ int vtkGreedySurfaceTriangulation::RequestData(
   };
   // Step 1's triangles are read by steps 1 and 2 only: freed before the grown copy is made.
   std::vector<int32_t>().swap(r.Step1Triangles);
-  std::unique_ptr<Reconstruction> grown;
+  // A copy of the regions of step 2 grown into the lost points (null when nothing was grown).
+  auto grow = [&r](bool expandFront, double begin, double end)
+  {
+    std::unique_ptr<Reconstruction> copy(new Reconstruction(r));
+    copy->GrowRegions(begin, end, expandFront);
+    if (copy->Grown == 0 && !copy->Aborted)
+    {
+      copy.reset();
+    }
+    return copy;
+  };
+  std::unique_ptr<Reconstruction> grown, expanded;
   if (this->GrowRegions && !r.Dissolved.empty())
   {
-    grown.reset(new Reconstruction(r));
-    grown->GrowRegions(0.6, 0.63);
-    if (grown->Aborted)
-    {
-      return finish();
-    }
-    if (grown->Grown == 0)
-    {
-      grown.reset();
-    }
+    grown = grow(false, 0.6, 0.62);
   }
-  const double repairedGrown = grown ? 0.8 : 0.98;
+  if (this->GrowRegions && r.LostPoints > 0 && !(grown && grown->Aborted))
+  {
+    expanded = grow(true, 0.62, 0.63);
+  }
+  if ((grown && grown->Aborted) || (expanded && expanded->Aborted))
+  {
+    return finish();
+  }
+  const double repairedGrown = grown || expanded ? 0.75 : 0.98;
   if (!repair(r, 0.63, repairedGrown))
   {
     return finish();
   }
   if (grown)
   {
-    if (!repair(*grown, repairedGrown, 0.98))
+    if (!repair(*grown, repairedGrown, 0.86))
     {
       return finish();
     }
@@ -5432,9 +5458,42 @@ int vtkGreedySurfaceTriangulation::RequestData(
     }
     else
     {
-      r.PiecesExchanged = r.TakeBetterPieces(*grown);
+      r.PiecesExchanged = r.TakeBetterPieces(*grown, false, true);
     }
     grown.reset();
+  }
+  if (expanded)
+  {
+    if (!repair(*expanded, 0.86, 0.98))
+    {
+      return finish();
+    }
+    // The pieces are exchanged without a topology check each (it reads the whole mesh: once per
+    // piece tripled the filter's time on the noisy bunny); when the mesh's components or sum of
+    // genera changed, all are put back.
+    int64_t components, handles;
+    r.Topology(components, handles);
+    const pcs::SurfaceMesh mesh = r.Mesh;
+    const std::vector<uint8_t> stage = r.Stage, status = r.Status;
+    const std::vector<char> inserted = r.InsertedPoints;
+    const vtkIdType insertedCount = r.Inserted;
+    vtkIdType exchanged = r.TakeBetterPieces(*expanded, true, false);
+    if (exchanged > 0)
+    {
+      int64_t componentsAfter, handlesAfter;
+      r.Topology(componentsAfter, handlesAfter);
+      if (componentsAfter != components || handlesAfter != handles)
+      {
+        r.Mesh = mesh;
+        r.Stage = stage;
+        r.Status = status;
+        r.InsertedPoints = inserted;
+        r.Inserted = insertedCount;
+        exchanged = 0;
+      }
+    }
+    r.PiecesExchanged += exchanged;
+    expanded.reset();
   }
   r.SwapObtuseEdges();
   if (r.Bridges > 0)

@@ -103,54 +103,51 @@ def quality(mesh):
              "Genus", "NumberOfUnusedPoints", "NumberOfConnectedComponents")}
 
 
-# Uniform on the unit sphere (normalised Gaussian triples), then scaled and moved.
-unit = []
-for _ in range(3000):
-    while True:
+def unit_sphere(count):
+    """count points uniform on the unit sphere (normalised Gaussian triples)."""
+    points = []
+    while len(points) < count:
         g = [rng.gauss(0.0, 1.0) for _ in range(3)]
         length = math.sqrt(sum(c * c for c in g))
         if length > 1e-3:
-            unit.append([c / length for c in g])
-            break
+            points.append([c / length for c in g])
+    return points
+
+
+def closed_spheres(coordinates, components, label):
+    """Whether every surface filter makes `components` closed, manifold spheres of
+    `coordinates`, using every point (2 V - 4 components triangles)."""
+    good_all = True
+    for make in (vtkPerimeterPeelSurface, vtkLocalOptimumGrowth, vtkCDTAdvancingFront,
+                 vtkGreedySurfaceTriangulation):
+        surface = make()
+        surface.SetInputData(cloud(coordinates))
+        surface.Update()
+        mesh = surface.GetOutput()
+        q = quality(mesh)
+        triangles = mesh.GetNumberOfPolys()
+        good = (q["NumberOfBoundaryEdges"] == 0 and q["NumberOfNonManifoldEdges"] == 0 and
+                q["NumberOfNonManifoldVertices"] == 0 and q["Genus"] == 0 and
+                q["NumberOfConnectedComponents"] == components and
+                q["NumberOfUnusedPoints"] == 0 and
+                triangles == 2 * len(coordinates) - 4 * components)
+        print("%s, %s: %d triangles, %s -> %s"
+              % (label, make.__name__, triangles, q, "ok" if good else "FAILED"))
+        good_all = good_all and good
+    return good_all
+
+
+# Small spheres far from the origin.
+unit = unit_sphere(3000)
 for radius, centre in ((1e-7, (10.0, -20.0, 5.0)), (1e-7, (1000.0, 0.0, 0.0)),
                        (1e-3, (1e5, 1e5, -1e5))):
     small = [tuple(centre[k] + radius * p[k] for k in range(3)) for p in unit]
-    for make in (vtkPerimeterPeelSurface, vtkLocalOptimumGrowth, vtkCDTAdvancingFront,
-                 vtkGreedySurfaceTriangulation):
-        surface = make()
-        surface.SetInputData(cloud(small))
-        surface.Update()
-        mesh = surface.GetOutput()
-        q = quality(mesh)
-        triangles = mesh.GetNumberOfPolys()
-        good = (q["NumberOfBoundaryEdges"] == 0 and q["NumberOfNonManifoldEdges"] == 0 and
-                q["NumberOfNonManifoldVertices"] == 0 and q["Genus"] == 0 and
-                q["NumberOfUnusedPoints"] == 0 and triangles == 2 * len(small) - 4)
-        print("sphere of radius %g at %s, %s: %d triangles, %s -> %s"
-              % (radius, centre, make.__name__, triangles, q, "ok" if good else "FAILED"))
-        failed = failed or not good
-many = []
-while len(many) < 10000:
-    g = [rng.gauss(0.0, 1.0) for _ in range(3)]
-    length = math.sqrt(sum(c * c for c in g))
-    if length > 1e-3:
-        many.append([c / length for c in g])
+    failed = not closed_spheres(small, 1, "sphere of radius %g at %s" % (radius, centre)) or failed
+# Two scales in one cloud.
+many = unit_sphere(10000)
 for scale in (1e-3, 1e-4):
     both = [tuple(p) for p in many] + [(5.0 + scale * p[0], scale * p[1], scale * p[2])
                                        for p in many]
-    for make in (vtkPerimeterPeelSurface, vtkLocalOptimumGrowth, vtkCDTAdvancingFront,
-                 vtkGreedySurfaceTriangulation):
-        surface = make()
-        surface.SetInputData(cloud(both))
-        surface.Update()
-        mesh = surface.GetOutput()
-        q = quality(mesh)
-        triangles = mesh.GetNumberOfPolys()
-        good = (q["NumberOfBoundaryEdges"] == 0 and q["NumberOfNonManifoldEdges"] == 0 and
-                q["NumberOfNonManifoldVertices"] == 0 and q["Genus"] == 0 and
-                q["NumberOfConnectedComponents"] == 2 and q["NumberOfUnusedPoints"] == 0 and
-                triangles == 2 * len(both) - 8)
-        print("unit sphere and a sphere %g times its size, %s: %d triangles, %s -> %s"
-              % (scale, make.__name__, triangles, q, "ok" if good else "FAILED"))
-        failed = failed or not good
+    failed = not closed_spheres(
+        both, 2, "unit sphere and a sphere %g times its size" % scale) or failed
 sys.exit(1 if failed else 0)

@@ -15,6 +15,7 @@
 #include <limits>
 #include <numeric>
 #include <queue>
+#include <utility>
 
 namespace pcs
 {
@@ -158,7 +159,7 @@ void LargestEigenvector(const double a[3][3], double values[3], double vector[3]
 }
 
 double OffsetCovariance(const double* xyz, const double* p, const int32_t* row, int count,
-  bool withPoint, double covariance[3][3])
+  bool withPoint, double covariance[3][3], double mean[3])
 {
   double s0 = withPoint ? 1.0 : 0.0;
   double s1[3] = { 0.0, 0.0, 0.0 };
@@ -195,8 +196,23 @@ double OffsetCovariance(const double* xyz, const double* p, const int32_t* row, 
     covariance[0][1] = covariance[1][0] = s2[3] / s0 - m[0] * m[1];
     covariance[0][2] = covariance[2][0] = s2[4] / s0 - m[0] * m[2];
     covariance[1][2] = covariance[2][1] = s2[5] / s0 - m[1] * m[2];
+    if (mean)
+    {
+      std::copy_n(m, 3, mean);
+    }
   }
   return s0;
+}
+
+double Median(std::vector<double> values)
+{
+  if (values.empty())
+  {
+    return 0.0;
+  }
+  const auto middle = values.begin() + values.size() / 2;
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
 }
 
 double QuadricHeightNoise(const double* xyz,
@@ -215,7 +231,8 @@ double QuadricHeightNoise(const double* xyz,
   auto offset = [&](int j, double uvh[3])
   {
     if (row[j] < 0 ||
-      !(vtkMath::Dot(normals + 3 * static_cast<size_t>(row[j]), normal) >= minimumNormalDot))
+      (normals &&
+        !(vtkMath::Dot(normals + 3 * static_cast<size_t>(row[j]), normal) >= minimumNormalDot)))
     {
       return false;
     }
@@ -323,7 +340,6 @@ double QuadricHeightNoise(const double* xyz,
   return std::isfinite(noise) ? noise : -1.0;
 }
 
-// The covariance of a neighbourhood and the point (OffsetCovariance).
 namespace
 {
 // The least-squares plane of the point `i` and its first `count` neighbours in `row`: the unit
@@ -353,50 +369,15 @@ bool LocalPlane(const double* xyz, Id i, const int32_t* table, int count, const 
     count = m;
   }
   double covariance[3][3];
-  const double s0 = OffsetCovariance(xyz, p, row, count, true, covariance);
-  if (!(s0 >= 3.0))
+  if (!(OffsetCovariance(xyz, p, row, count, true, covariance, centroidOffset) >= 3.0))
   {
     return false;
-  }
-  double sum[3] = { 0.0, 0.0, 0.0 }; // the offsets OffsetCovariance summed (p's own is 0)
-  for (int j = 0; j < count; ++j)
-  {
-    if (row[j] < 0)
-    {
-      continue;
-    }
-    const double* q = &xyz[3 * static_cast<size_t>(row[j])];
-    const double d[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
-    if (std::isfinite(d[0]) && std::isfinite(d[1]) && std::isfinite(d[2]))
-    {
-      sum[0] += d[0];
-      sum[1] += d[1];
-      sum[2] += d[2];
-    }
-  }
-  for (int c = 0; c < 3; ++c)
-  {
-    centroidOffset[c] = sum[c] / s0;
   }
   SmallestEigenvector(covariance, values, normal);
   return values[1] > 0.0 && std::isfinite(normal[0]) && std::isfinite(normal[1]) &&
     std::isfinite(normal[2]);
 }
 
-double Median(std::vector<double>& values)
-{
-  if (values.empty())
-  {
-    return 0.0;
-  }
-  auto middle = values.begin() + values.size() / 2;
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
-}
-
-namespace
-{
 // SamplingNoise on the points sample(0), ..., sample(samples - 1).
 template <typename Sample>
 SamplingNoiseMeasure MeasureNoise(const double* xyz, Id n, const std::vector<int32_t>& neighbors,
@@ -409,9 +390,6 @@ SamplingNoiseMeasure MeasureNoise(const double* xyz, Id n, const std::vector<int
   {
     return measure;
   }
-  // QuadricHeightNoise reads the neighbours' normals to leave out another sheet; without
-  // `normals` every neighbour is taken (zero normals, minimum dot product -2).
-  const std::vector<double> anyNormal(normals ? 0 : 3 * static_cast<size_t>(n), 0.0);
   std::vector<double> noise(static_cast<size_t>(samples), -1.0);
   std::vector<double> plane(static_cast<size_t>(samples), -1.0);
   std::vector<double> spacing(static_cast<size_t>(samples), -1.0);
@@ -429,9 +407,9 @@ SamplingNoiseMeasure MeasureNoise(const double* xyz, Id n, const std::vector<int
           continue;
         }
         plane[s] = std::sqrt(std::max(0.0, values[2]));
-        noise[s] = normals ? QuadricHeightNoise(xyz, normals, p,
-                               &normals[3 * static_cast<size_t>(i)], row, count, minimumNormalDot)
-                           : QuadricHeightNoise(xyz, anyNormal.data(), p, normal, row, count, -2.0);
+        // Without `normals` every neighbour is fitted, over the point's own plane.
+        noise[s] = QuadricHeightNoise(xyz, normals, p,
+          normals ? &normals[3 * static_cast<size_t>(i)] : normal, row, count, minimumNormalDot);
         double sum = 0.0;
         int m = 0;
         for (int j = 0; j < count; ++j)
@@ -458,9 +436,9 @@ SamplingNoiseMeasure MeasureNoise(const double* xyz, Id n, const std::vector<int
     }
   }
   measure.Measured = static_cast<int64_t>(noiseValues.size());
-  const double medianNoise = Median(noiseValues);
-  const double medianPlane = Median(planeValues);
-  const double medianSpacing = Median(spacingValues);
+  const double medianNoise = Median(std::move(noiseValues));
+  const double medianPlane = Median(std::move(planeValues));
+  const double medianSpacing = Median(std::move(spacingValues));
   measure.Level = medianSpacing > 0.0 ? medianNoise / medianSpacing : 0.0;
   measure.Share = medianPlane > 0.0 ? medianNoise / medianPlane : 0.0;
   measure.Noisy = measure.Level > NoisyLevel && measure.Share > NoisyShare;

@@ -29,19 +29,24 @@ void LargestEigenvector(const double a[3][3], double values[3], double vector[3]
 /// `xyz`, packed x, y, z; -1 for none; an offset with a non-finite coordinate is skipped), with
 /// p itself as one more offset 0 when `withPoint` is true: C = S2 / s0 - m m^T with m = S1 / s0,
 /// S1 and S2 the sums of the offsets and of their products, summed in one pass. Returns s0, the
-/// number of offsets used (C is left unset when it is 0).
+/// number of offsets used (C is left unset when it is 0). `mean`, when given, receives m (the
+/// offset from p to the centroid; left unset when s0 is 0).
 double OffsetCovariance(const double* xyz, const double* p, const int32_t* row, int count,
-  bool withPoint, double covariance[3][3]);
+  bool withPoint, double covariance[3][3], double mean[3] = nullptr);
+
+/// The upper median of `values` (the element of rank size / 2), 0 when empty.
+double Median(std::vector<double> values);
 
 /// Height noise at the point `p` with unit normal `normal`: the root mean square residual of the
 /// least-squares quadric height field h(u, v) = a + b u + c v + d u^2 + e u v + f v^2 over the
 /// tangent frame of the normal, fitted to p and those of its neighbours `row` (`count` ids into
 /// `xyz`, -1 for none) whose unit normal (in `normals`) has a dot product of at least
-/// `minimumNormalDot` with `normal` (the same smooth sheet: not the other side of a crease or of
-/// a thin part), with m - 6 degrees of freedom for m points (an unbiased variance for Gaussian
-/// height noise). A smooth surface is a quadric up to third-order terms, so its curvature does
-/// not count as noise (a plane fit's residual would). Returns -1 when fewer than 7 points are
-/// usable or the fit is singular (the neighbours near a conic in the tangent plane).
+/// `minimumNormalDot` with `normal` (the same smooth sheet: not the other side of a crease or of a
+/// thin part; every neighbour when `normals` is null), with m - 6 degrees of freedom for m points
+/// (an unbiased variance for Gaussian height noise). A smooth surface is a quadric up to
+/// third-order terms, so its curvature does not count as noise (a plane fit's residual would).
+/// Returns -1 when fewer than 7 points are usable or the fit is singular (the neighbours near a
+/// conic in the tangent plane).
 double QuadricHeightNoise(const double* xyz,
   const double* normals,
   const double* p,
@@ -83,26 +88,26 @@ constexpr double NoisyShare = 1.0;
 constexpr int32_t SamplingNoiseSamples = 25000;
 
 /// Whether the `n` points of `xyz` are a noisy sample, from the first min(`k`, `planeOthers`)
-/// columns of each row of `neighbors` (n * `k` ids, nearest first, -1 for none): at each point
-/// the plane of the point and those neighbours (centroid and smallest covariance eigenvector),
-/// the root mean square distance of the points to it (the plane residual, curvature and noise),
-/// the height noise of QuadricHeightNoise over that plane (noise only: a smooth surface is a
-/// quadric up to third-order terms) and the local spacing (the mean distance to those
-/// neighbours). The cloud is noisy when the median height noise is more than NoisyLevel (1/20)
-/// of the median local spacing and more than NoisyShare (1.0) times the median plane residual: the
-/// residual is noise, not curvature (Gaussian noise alone gives 1.1-1.2: the plane's residual has
-/// 3 degrees of freedom fitted away, the quadric's 6 accounted for; curvature only adds to the
-/// plane's). Measured (Benchmarks/results/local_optimum.md, "Denoising"): noisy spheres and tori
-/// with sigma from 0.1 to 0.3 sqrt(area / N), level 0.078-0.21 and share 1.11-1.17; of the 92
-/// CGAL mesh vertex sets (meshes/*.off of 50 to 200,000 points) and 11 clean random, Fibonacci
-/// and grid samples, those with a level above
-/// 1/20 share at most 0.97 (femur; b9_mesh 0.95, mpi 0.90, bones 0.85, all others below 0.75),
-/// and those sharing more than 1 (flat patches with a little noise, a gear) have levels below
-/// 0.005. Every point when `stride` is 1, else every `stride`-th (the filters call it through
-/// MeasureSamplingNoise: a sample of 500 points first, then about 25,000 points when needed). With `normals` (3 n, unit, consistently oriented)
-/// only the neighbours whose normal has a dot product of at least `minimumNormalDot` with the
-/// point's are fitted (the same side: two grids 0.3 spacings apart with opposite normals, a thin
-/// plate, are not noise). Threads: vtkSMPTools.
+/// columns of each row of `neighbors` (n * `k` ids, nearest first, -1 for none): at each point the
+/// plane of the point and those neighbours (centroid and smallest covariance eigenvector), the root
+/// mean square distance of the points to it (the plane residual, curvature and noise), the height
+/// noise of QuadricHeightNoise over that plane (noise only: a smooth surface is a quadric up to
+/// third-order terms) and the local spacing (the mean distance to those neighbours). The cloud is
+/// noisy when the median height noise is more than NoisyLevel (1/20) of the median local spacing
+/// and more than NoisyShare (1.0) times the median plane residual: the residual is noise, not
+/// curvature (Gaussian noise alone gives 1.1-1.2: the plane's residual has 3 degrees of freedom
+/// fitted away, the quadric's 6 accounted for; curvature only adds to the plane's). Measured
+/// (Benchmarks/results/local_optimum.md, "Denoising"): noisy spheres and tori with sigma from 0.1
+/// to 0.3 sqrt(area / N), level 0.078-0.21 and share 1.11-1.17; of the 92 CGAL mesh vertex sets
+/// (meshes/*.off of 50 to 200,000 points) and 11 clean random, Fibonacci and grid samples, those
+/// with a level above 1/20 share at most 0.97 (femur; b9_mesh 0.95, mpi 0.90, bones 0.85, all
+/// others below 0.75), and those sharing more than 1 (flat patches with a little noise, a gear)
+/// have levels below 0.005. Every point when `stride` is 1, else every `stride`-th (the filters
+/// call it through MeasureSamplingNoise: a sample of 500 points first, then about 25,000 points
+/// when needed). With `normals` (3 n, unit, consistently oriented) only the neighbours whose normal
+/// has a dot product of at least `minimumNormalDot` with the point's are fitted (the same side: two
+/// grids 0.3 spacings apart with opposite normals, a thin plate, are not noise). Threads:
+/// vtkSMPTools.
 SamplingNoiseMeasure SamplingNoise(const double* xyz, int32_t n,
   const std::vector<int32_t>& neighbors, int k, int planeOthers, int stride = 1,
   const double* normals = nullptr, double minimumNormalDot = 0.0);

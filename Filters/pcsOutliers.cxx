@@ -97,13 +97,6 @@ bool OnSampledPlane(const double* x, const int32_t* row, int k, int32_t i,
   return height < OutlierPlaneHeight * reach[i];
 }
 
-double Median(std::vector<double> values)
-{
-  const auto middle = values.begin() + values.size() / 2;
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
-
 // A locator over the n points of xyz (packed x, y, z, not copied: xyz must outlive the locator)
 // with the bin grid of a surface sample (SetSurfaceSampleDivisions).
 vtkSmartPointer<vtkStaticPointLocator> SurfaceSampleLocator(const double* xyz, int32_t n)

@@ -105,36 +105,36 @@
  * The cylinder of the paper keeps 792 triangles and its 72 hole triangles: its rims' ears stand
  * perpendicular to the surface, far outside its bands.
  *
- * Denoising (ours; LocalPlaneProjection, issue 6). The noise band relaxes the rules, but on a
- * thick noise layer the front still grew two overlapping sheets within it, and the cracks between
- * them were closed by handles or left open (Benchmarks/results/cdt.md, "Noisy clouds of known
- * genus"). By default, when the cloud is noisy (pcs::MeasureSamplingNoise on the 9-nearest table: the
- * median height noise of quadric fits above 1/20 of the median local spacing and above the median
- * plane residual, i.e. noise, not curvature), every decision after the normals is made on a copy
- * of the points, each projected onto the least-squares plane of itself and its 19 nearest points
- * (pcs::ProjectOntoLocalPlanes, vtkLocalOptimumGrowth's routine; the table gets the scan-line
- * rows' off-line neighbours first; with input normals only neighbours whose normal is within
- * 90 degrees of the point's, in the decision too, so that the two sides of a plate thinner than
- * a neighbourhood are not merged: two grids 0.3 spacings apart with opposite normals came out as
+ * Denoising (ours; LocalPlaneProjection, issue 6). The noise band relaxes the rules, but on a thick
+ * noise layer the front still grew two overlapping sheets within it, and the cracks between them
+ * were closed by handles or left open (Benchmarks/results/cdt.md, "Noisy clouds of known genus").
+ * By default, when the cloud is noisy (pcs::MeasureSamplingNoise on the 9-nearest table: the median
+ * height noise of quadric fits above 1/20 of the median local spacing and above the median plane
+ * residual, i.e. noise, not curvature), every decision after the normals is made on a copy of the
+ * points, each projected onto the least-squares plane of itself and its 19 nearest points
+ * (pcs::ProjectOntoLocalPlanes, vtkLocalOptimumGrowth's routine; the table gets the scan-line rows'
+ * off-line neighbours first; with input normals only neighbours whose normal is within 90 degrees
+ * of the point's, in the decision too, so that the two sides of a plate thinner than a
+ * neighbourhood are not merged: two grids 0.3 spacings apart with opposite normals came out as
  * near-coincident points and no triangle; not with estimated normals, whose orientation has wrong
- * patches on noisy clouds: 5 of 32 noisy spheres and tori kept handles or holes that way),
- * copies and piles taking their first copy's projection; the
- * estimated normals are estimated and oriented again on the projected points (kept from the
- * noisy points, their orientation had wrong patches: 371 boundary edges in 5 components on a
- * sphere with noise 0.3 sqrt(area / N), 0 with them). Input normals are kept. The output keeps
- * the input points. Measured (random samples of 20,000 points, noise in units of sqrt(area / N),
- * Benchmarks/results/cdt.md, "Denoising"): unit sphere at sigma 0.2, 23 boundary edges, 3
- * components, chi -20 -> closed, genus 0, every point; at 0.3, 67 boundary edges, 9 components,
- * chi -103 -> closed, genus 0; 10^5 points at 0.2, 109 boundary edges, chi -135 -> closed, genus
- * 0; torus at 0.2, closed with genus 11 (chi -20) -> genus 1; on 8 seeds each of spheres at
- * 0.1, 0.2, 0.3 and tori at 0.2, 31 of 32 closed with the true genus (one torus keeps a handle
- * and 4 boundary edges). No clean standard cloud is projected (the triangles of the 27 CGAL vertex
- * sets and the clean spheres and tori of the md5 check are unchanged). Cost (CPU, 10^5 random
- * sphere points, least of 3): the decision on a clean cloud reads 500 points drawn at random (a
- * plane and a quadric each; about 25,000 more only when those are not clearly clean: see
- * pcs::MeasureSamplingNoise), under 1 ms (0.02 s of 0.97 s when every cloud read 25,000:
- * 6-8 % of the filter on the elephant and camel vertex sets); the projection (a 19-nearest search, planes, normals again)
- * 0.2 s; on the noisy one (sigma 0.2) the whole filter takes 1.18 s instead of 1.27 s.
+ * patches on noisy clouds: 5 of 32 noisy spheres and tori kept handles or holes that way), copies
+ * and piles taking their first copy's projection; the estimated normals are estimated and oriented
+ * again on the projected points (kept from the noisy points, their orientation had wrong patches:
+ * 371 boundary edges in 5 components on a sphere with noise 0.3 sqrt(area / N), 0 with them). Input
+ * normals are kept. The output keeps the input points. Measured (random samples of 20,000 points,
+ * noise in units of sqrt(area / N), Benchmarks/results/cdt.md, "Denoising"): unit sphere at sigma
+ * 0.2, 23 boundary edges, 3 components, chi -20 -> closed, genus 0, every point; at 0.3, 67
+ * boundary edges, 9 components, chi -103 -> closed, genus 0; 10^5 points at 0.2, 109 boundary
+ * edges, chi -135 -> closed, genus 0; torus at 0.2, closed with genus 11 (chi -20) -> genus 1; on 8
+ * seeds each of spheres at 0.1, 0.2, 0.3 and tori at 0.2, 31 of 32 closed with the true genus (one
+ * torus keeps a handle and 4 boundary edges). No clean standard cloud is projected (the triangles
+ * of the 27 CGAL vertex sets and the clean spheres and tori of the md5 check are unchanged). Cost
+ * (CPU, 10^5 random sphere points, least of 3): the decision on a clean cloud reads 500 points
+ * drawn at random (a plane and a quadric each; about 25,000 more only when those are not clearly
+ * clean: see pcs::MeasureSamplingNoise), under 1 ms (0.02 s of 0.97 s when every cloud read 25,000:
+ * 6-8 % of the filter on the elephant and camel vertex sets); the projection (a 19-nearest search,
+ * planes, normals again) 0.2 s; on the noisy one (sigma 0.2) the whole filter takes 1.18 s instead
+ * of 1.27 s.
  * Steps (section III):
  * - III.A seeds: in input order, every point not yet meshed starts a seed triangle: its nearest
  *   point (then the next nearest ones, if no triangle is valid, within the budget of

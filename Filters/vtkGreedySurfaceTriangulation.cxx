@@ -1951,12 +1951,19 @@ vtkIdType Reconstruction::TakeBetterPieces(
     auto measure = [&](const pcs::SurfaceMesh& mesh, vtkIdType& used, vtkIdType& boundary)
     {
       used = boundary = 0;
-      int32_t ends[64];
+      std::vector<int32_t> ends(64);
       for (int32_t v : piece->Vertices)
       {
         used += mesh.IsFree(v) ? 0 : 1;
-        boundary += std::min(mesh.GetBoundaryOutVertices(v, ends, 64), 64);
-        const int in = std::min(mesh.GetBoundaryInVertices(v, ends, 64), 64);
+        // (The counts are whole; the ids are read again into a larger buffer when they did not
+        // fit.)
+        boundary += mesh.GetBoundaryOutVertices(v, ends.data(), static_cast<int>(ends.size()));
+        const int in = mesh.GetBoundaryInVertices(v, ends.data(), static_cast<int>(ends.size()));
+        if (in > static_cast<int>(ends.size()))
+        {
+          ends.resize(static_cast<size_t>(in));
+          mesh.GetBoundaryInVertices(v, ends.data(), in);
+        }
         for (int j = 0; j < in; ++j)
         {
           boundary += inPiece[ends[j]] ? 0 : 1;
@@ -2011,10 +2018,16 @@ vtkIdType Reconstruction::TakeBetterPieces(
     // are oriented outwards at the end). A component running both ways is left as it is, and
     // the piece with it (AddTriangles refuses it).
     std::vector<int64_t> reversedSeeds;
+    std::vector<int64_t> around(256);
     for (int32_t v : piece->Vertices)
     {
-      int64_t around[256];
-      const int count = std::min(this->Mesh.GetVertexTriangles(v, around, 256), 256);
+      const int count =
+        this->Mesh.GetVertexTriangles(v, around.data(), static_cast<int>(around.size()));
+      if (count > static_cast<int>(around.size()))
+      {
+        around.resize(static_cast<size_t>(count));
+        this->Mesh.GetVertexTriangles(v, around.data(), count);
+      }
       for (int j = 0; j < count; ++j)
       {
         bool reversed = false;
@@ -4211,13 +4224,10 @@ bool Reconstruction::SwapEdge(int32_t a, int32_t b, uint8_t stage, bool byAngle,
   return true;
 }
 
-// The normal of the triangle (a, b, c), not normalised.
+// The normal of the triangle (a, b, c), not normalised (pcs::projected::TriangleNormal).
 void Reconstruction::TriangleNormal(int32_t a, int32_t b, int32_t c, double n[3]) const
 {
-  double u[3], v[3];
-  vtkMath::Subtract(this->P(b), this->P(a), u);
-  vtkMath::Subtract(this->P(c), this->P(a), v);
-  vtkMath::Cross(u, v, n);
+  pcs::projected::TriangleNormal(this->P(a), this->P(b), this->P(c), n);
 }
 
 // The cosines of the angles of the triangle (a, b, c) at a, b and c (1 at a repeated point).

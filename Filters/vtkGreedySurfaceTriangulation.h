@@ -276,7 +276,7 @@
  *   points throughout) and, when SwapBridgeEdges is on, every bridge or chord edge AB whose two
  *   triangles ABC, BAD have |CD| < |AB| is replaced by CD, unless CD is an edge already or the
  *   swap would fold the surface (a new triangle facing against the old ones). Then (ours, issue
- *   7, with SwapBridgeEdges, after every repair; counted in NumberOfObtuseSwaps) the edge AB
+ *   7, with SwapBridgeEdges, once after all repairs; counted in NumberOfObtuseSwaps) the edge AB
  *   opposite an obtuse angle at C of a triangle is replaced by CD when the smallest angle of the
  *   two triangles grows (Lawson's local max-min angle swap) and the two new triangles fold by at
  *   most 30 degrees (they stay in the surface), with the same conditions otherwise, for two
@@ -389,15 +389,13 @@
  * when the cloud has fewer than 3 distinct finite points; 5: added by the fill refinement),
  * `LocalUniformity` (m);
  * cell data `Stage` (1: step 1 triangle kept by step 2, 2: grown (GrowRegions), 6: hole filling,
- * 7: made by a step 7 swap,
- * 8: lost point insertion and its ears); field data `NumberOfTriangles`, `NumberOfLostPoints`
- * (after step 2), `NumberOfIslands`, `NumberOfHoles` (after step 4), `NumberOfBridges`,
- * `NumberOfChords`, `NumberOfHolesFilled`, `NumberOfHolesLeftOpen`, `NumberOfSwaps`,
- * `NumberOfObtuseSwaps`,
- * `NumberOfInsertedPoints`, `NumberOfSmallLoopsClosed`, `NumberOfSmallLoopsFilledByDihedral`,
- * `NumberOfEndsCapped`, `NumberOfFillsRefused`, `NumberOfPiecesExchanged` (GrowRegions),
- * `NumberOfAddedPoints`,
- * `NumberOfUnusedPoints`,
+ * 7: made by a bridge or chord swap of step 7 (the obtuse-angle swaps keep the stages of the
+ * triangles they replace), 8: lost point insertion and its ears); field data `NumberOfTriangles`,
+ * `NumberOfLostPoints` (after step 2), `NumberOfIslands`, `NumberOfHoles` (after step 4),
+ * `NumberOfBridges`, `NumberOfChords`, `NumberOfHolesFilled`, `NumberOfHolesLeftOpen`,
+ * `NumberOfSwaps`, `NumberOfObtuseSwaps`, `NumberOfInsertedPoints`, `NumberOfSmallLoopsClosed`,
+ * `NumberOfSmallLoopsFilledByDihedral`, `NumberOfEndsCapped`, `NumberOfFillsRefused`,
+ * `NumberOfPiecesExchanged` (GrowRegions), `NumberOfAddedPoints`, `NumberOfUnusedPoints`,
  * `NumberOfDuplicatePoints` (exact and near copies, see below), `NumberOfSkippedPoints`,
  * `NumberOfOutliers`, `MeanSpacing`, and the
  * columns of the paper's Table 1: `NumberOfPoints` (input points), `AverageUniformityInSSR` (mean m

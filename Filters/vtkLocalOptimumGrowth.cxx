@@ -3250,7 +3250,8 @@ int vtkLocalOptimumGrowth::RequestData(
     bool project = this->LocalPlaneProjection == pcs::ProjectionOn;
     if (this->LocalPlaneProjection == pcs::ProjectionAutomatic)
     {
-      const pcs::SamplingNoiseMeasure noise = pcs::MeasureSamplingNoise(x.data(), n, knn, k, pcs::NoiseNeighbors);
+      const pcs::SamplingNoiseMeasure noise =
+        pcs::MeasureSamplingNoise(x.data(), n, knn, k, pcs::NoiseNeighbors);
       this->NoiseLevel = noise.Level;
       this->NoiseShare = noise.Share;
       project = noise.Noisy;

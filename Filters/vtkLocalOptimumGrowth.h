@@ -54,8 +54,8 @@
  *    fold flips and long-edge flips of step 7 (on the projected points they saw no fold, and the
  *    output's folded edges on TestLocalOptimumGrowth's noisy spheres went from 1.1 % to 2.3 %).
  *    By default only when the cloud is
- *    noisy (pcs::MeasureSamplingNoise on the first 9 columns: the median height noise of quadric fits
- *    over the tangent planes above 1/20 of the median local spacing and above the median plane
+ *    noisy (pcs::MeasureSamplingNoise on the first 9 columns: the median height noise of quadric
+ *    fits over the tangent planes above 1/20 of the median local spacing and above the median plane
  *    residual, i.e. noise, not curvature). On a noisy cloud the front grew two overlapping sheets
  *    within the noise layer and the cracks between them stayed open or closed into handles; on
  *    the projected points it sees one sheet (Gaussian noise of rms 0.3 spacings falls to 0.08).

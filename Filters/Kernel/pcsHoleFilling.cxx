@@ -1457,8 +1457,12 @@ double LoopAlignment(
     tail = head;
     head = next;
   } while (!(tail == a && head == b));
+  if (!(total > 0.0))
+  {
+    return -1.0;
+  }
   const double alignment = along / total;
-  return total > 0.0 && std::isfinite(alignment) ? alignment : -1.0;
+  return std::isfinite(alignment) ? alignment : -1.0;
 }
 } // namespace
 

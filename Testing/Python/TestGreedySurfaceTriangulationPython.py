@@ -402,7 +402,8 @@ def hausdorff_over_spacing(mesh, surface):
 
 # The CGAL demo data comes with libcgal-dev, which scripts/setup.sh installs: the checks on its
 # vertex sets below must not be skipped silently.
-check(cgal_mesh("camel") is not None and cgal_surface("elephant") is not None,
+check(all(cgal_mesh(name) is not None and cgal_surface(name) is not None
+          for name in ("camel", "elephant", "armadillo")),
       "CGAL's demo data %s is readable (libcgal-dev)" % CGAL_DATA)
 camel_data = cgal_mesh("camel")
 if camel_data:
